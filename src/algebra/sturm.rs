@@ -1,0 +1,458 @@
+//! Exact real-root isolation of univariate polynomials over ℚ (Sturm sequences).
+//!
+//! Roots are isolated per factor of the square-free (Yun) decomposition, so each root carries
+//! its multiplicity; isolating intervals refine by exact bisection to any width.
+
+use std::cmp::Ordering;
+
+use num_bigint::BigInt;
+use num_integer::Integer;
+use num_rational::BigRational;
+use num_traits::{One, Signed, ToPrimitive, Zero};
+
+/// A univariate polynomial over ℚ, coefficients from the constant term up.
+///
+/// # Example
+/// ```
+/// use orthocheck::algebra::UPoly;
+/// // (x - 1)^2 (x + 2): roots 1 (double) and -2
+/// let p = UPoly::from_i64(&[2, -3, 0, 1]);
+/// let roots = p.real_roots();
+/// assert_eq!(roots.len(), 2);
+/// assert_eq!(roots[0].multiplicity, 1);
+/// assert_eq!(roots[1].multiplicity, 2);
+/// ```
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct UPoly {
+    coeffs: Vec<BigRational>,
+}
+
+/// A real root: `lo ≤ root ≤ hi`, with `lo == hi` when the root is rational and was hit exactly.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct RealRoot {
+    /// Lower end of the isolating interval.
+    pub lo: BigRational,
+    /// Upper end of the isolating interval.
+    pub hi: BigRational,
+    /// Multiplicity of the root in the original polynomial.
+    pub multiplicity: u32,
+    /// The square-free factor the root belongs to (used for refinement).
+    factor: Vec<BigInt>,
+}
+
+impl RealRoot {
+    /// Midpoint of the isolating interval as `f64`.
+    pub fn to_f64(&self) -> f64 {
+        ((&self.lo + &self.hi) / BigRational::from_integer(2.into()))
+            .to_f64()
+            .unwrap_or(f64::NAN)
+    }
+
+    /// Width of the interval.
+    pub fn width(&self) -> BigRational {
+        &self.hi - &self.lo
+    }
+
+    /// Bisect until the interval is no wider than `width`.
+    pub fn refine(&mut self, width: &BigRational) {
+        let two = BigRational::from_integer(2.into());
+        while self.width() > *width {
+            let mid = (&self.lo + &self.hi) / &two;
+            let s_mid = sign_at(&self.factor, &mid);
+            if s_mid == Ordering::Equal {
+                self.lo = mid.clone();
+                self.hi = mid;
+                return;
+            }
+            // The upper end is never a root (exact hits are recorded as points) while the
+            // lower end may be a neighbouring exact root, so compare with the upper end.
+            if s_mid == sign_at(&self.factor, &self.hi) {
+                self.hi = mid;
+            } else {
+                self.lo = mid;
+            }
+        }
+    }
+}
+
+impl UPoly {
+    /// From rational coefficients, constant term first; trailing zeros are dropped.
+    pub fn new(mut coeffs: Vec<BigRational>) -> Self {
+        while coeffs.last().is_some_and(Zero::is_zero) {
+            coeffs.pop();
+        }
+        UPoly { coeffs }
+    }
+
+    /// From integer coefficients, constant term first.
+    pub fn from_i64(coeffs: &[i64]) -> Self {
+        UPoly::new(
+            coeffs
+                .iter()
+                .map(|&c| BigRational::from_integer(c.into()))
+                .collect(),
+        )
+    }
+
+    /// The product of `(x - r)` over the given roots.
+    pub fn from_roots(roots: &[BigRational]) -> Self {
+        let mut p = UPoly::new(vec![BigRational::one()]);
+        for r in roots {
+            p = p.mul(&UPoly::new(vec![-r.clone(), BigRational::one()]));
+        }
+        p
+    }
+
+    /// Coefficients, constant term first.
+    pub fn coeffs(&self) -> &[BigRational] {
+        &self.coeffs
+    }
+
+    /// Degree (`None` for the zero polynomial).
+    pub fn degree(&self) -> Option<usize> {
+        self.coeffs.len().checked_sub(1)
+    }
+
+    /// Whether this is zero.
+    pub fn is_zero(&self) -> bool {
+        self.coeffs.is_empty()
+    }
+
+    /// Exact value at `x`.
+    pub fn eval(&self, x: &BigRational) -> BigRational {
+        self.coeffs
+            .iter()
+            .rev()
+            .fold(BigRational::zero(), |acc, c| acc * x + c)
+    }
+
+    /// Product.
+    pub fn mul(&self, other: &UPoly) -> UPoly {
+        if self.is_zero() || other.is_zero() {
+            return UPoly::new(vec![]);
+        }
+        let mut out = vec![BigRational::zero(); self.coeffs.len() + other.coeffs.len() - 1];
+        for (i, a) in self.coeffs.iter().enumerate() {
+            for (j, b) in other.coeffs.iter().enumerate() {
+                out[i + j] += a * b;
+            }
+        }
+        UPoly::new(out)
+    }
+
+    /// Derivative.
+    pub fn derivative(&self) -> UPoly {
+        UPoly::new(
+            self.coeffs
+                .iter()
+                .enumerate()
+                .skip(1)
+                .map(|(i, c)| c * BigRational::from_integer(i.into()))
+                .collect(),
+        )
+    }
+
+    /// Quotient and remainder; `None` when dividing by zero.
+    pub fn div_rem(&self, d: &UPoly) -> Option<(UPoly, UPoly)> {
+        let dd = d.degree()?;
+        let lead = &d.coeffs[dd];
+        let mut rem = self.coeffs.clone();
+        let mut quot = vec![BigRational::zero(); rem.len().saturating_sub(dd)];
+        while rem.len() > dd && !rem.is_empty() {
+            let k = rem.len() - 1 - dd;
+            let f = &rem[rem.len() - 1] / lead;
+            for (i, c) in d.coeffs.iter().enumerate() {
+                rem[k + i] -= &f * c;
+            }
+            quot[k] = f;
+            rem.pop();
+            while rem.last().is_some_and(Zero::is_zero) {
+                rem.pop();
+            }
+        }
+        Some((UPoly::new(quot), UPoly::new(rem)))
+    }
+
+    /// Monic greatest common divisor.
+    pub fn gcd(&self, other: &UPoly) -> UPoly {
+        let (mut a, mut b) = (self.clone(), other.clone());
+        while !b.is_zero() {
+            let r = match a.div_rem(&b) {
+                Some((_, r)) => r,
+                None => break,
+            };
+            a = b;
+            b = r;
+        }
+        a.monic()
+    }
+
+    fn monic(&self) -> UPoly {
+        match self.coeffs.last() {
+            Some(l) => UPoly::new(self.coeffs.iter().map(|c| c / l).collect()),
+            None => self.clone(),
+        }
+    }
+
+    /// Difference.
+    pub fn sub(&self, other: &UPoly) -> UPoly {
+        let n = self.coeffs.len().max(other.coeffs.len());
+        UPoly::new(
+            (0..n)
+                .map(|k| {
+                    self.coeffs.get(k).cloned().unwrap_or_default()
+                        - other.coeffs.get(k).cloned().unwrap_or_default()
+                })
+                .collect(),
+        )
+    }
+
+    /// Yun's square-free decomposition: `self = c · Π fᵢ^i`; returns `(i, fᵢ)` for non-constant fᵢ.
+    pub fn square_free_factors(&self) -> Vec<(u32, UPoly)> {
+        let mut out = Vec::new();
+        if self.degree().unwrap_or(0) == 0 {
+            return out;
+        }
+        let f1 = self.derivative();
+        let a0 = self.gcd(&f1);
+        let (Some((mut b, _)), Some((c, _))) = (self.div_rem(&a0), f1.div_rem(&a0)) else {
+            return out;
+        };
+        let mut d = c.sub(&b.derivative());
+        let mut i = 1;
+        while b.degree().unwrap_or(0) > 0 {
+            let a = b.gcd(&d);
+            if a.degree().unwrap_or(0) > 0 {
+                out.push((i, a.clone()));
+            }
+            let (Some((nb, _)), Some((nc, _))) = (b.div_rem(&a), d.div_rem(&a)) else {
+                break;
+            };
+            b = nb;
+            d = nc.sub(&b.derivative());
+            i += 1;
+        }
+        out
+    }
+
+    /// All distinct real roots, ascending, each in an isolating interval with its multiplicity.
+    pub fn real_roots(&self) -> Vec<RealRoot> {
+        let mut out = Vec::new();
+        for (mult, f) in self.square_free_factors() {
+            let int = integer_coeffs(&f);
+            let seq = sturm_sequence(&int);
+            let bound = root_bound(&int);
+            isolate(&seq, &-bound.clone(), &bound, mult, &int, &mut out);
+        }
+        // Roots of different factors are distinct (the factors are coprime), but their
+        // first intervals may overlap: halve overlapping neighbours until all are disjoint,
+        // so that the order by interval is the order of the roots.
+        loop {
+            out.sort_by(|a, b| a.lo.cmp(&b.lo).then_with(|| a.hi.cmp(&b.hi)));
+            let overlapping: Vec<usize> = (1..out.len())
+                .filter(|&i| out[i - 1].hi >= out[i].lo)
+                .collect();
+            if overlapping.is_empty() {
+                return out;
+            }
+            for i in overlapping {
+                for j in [i - 1, i] {
+                    let half = out[j].width() / BigRational::from_integer(2.into());
+                    out[j].refine(&half);
+                }
+            }
+        }
+    }
+
+    /// Real roots refined to intervals no wider than `width`.
+    pub fn real_roots_within(&self, width: &BigRational) -> Vec<RealRoot> {
+        let mut roots = self.real_roots();
+        for r in &mut roots {
+            r.refine(width);
+        }
+        roots
+    }
+}
+
+/// Integer coefficients with the same roots and the same sign pattern (positive scaling).
+fn integer_coeffs(p: &UPoly) -> Vec<BigInt> {
+    let lcm = p
+        .coeffs
+        .iter()
+        .fold(BigInt::one(), |acc, c| acc.lcm(c.denom()));
+    let ints: Vec<BigInt> = p
+        .coeffs
+        .iter()
+        .map(|c| (c * BigRational::from_integer(lcm.clone())).to_integer())
+        .collect();
+    let g = ints.iter().fold(BigInt::zero(), |acc, c| acc.gcd(c));
+    if g.is_zero() {
+        ints
+    } else {
+        ints.into_iter().map(|c| c / &g).collect()
+    }
+}
+
+/// Sign of `p(n/d)` from integer coefficients: Horner on `Σ aᵢ nⁱ d^(deg−i)` (`d > 0`), all in ℤ.
+fn sign_at(p: &[BigInt], x: &BigRational) -> Ordering {
+    let (n, d) = (x.numer(), x.denom());
+    let mut coeffs = p.iter().rev();
+    let mut acc = coeffs.next().cloned().unwrap_or_default();
+    let mut dpow = d.clone();
+    for c in coeffs {
+        acc = acc * n + c * &dpow;
+        dpow *= d;
+    }
+    acc.sign_ordering()
+}
+
+trait SignOrdering {
+    fn sign_ordering(&self) -> Ordering;
+}
+
+impl SignOrdering for BigInt {
+    fn sign_ordering(&self) -> Ordering {
+        if self.is_positive() {
+            Ordering::Greater
+        } else if self.is_negative() {
+            Ordering::Less
+        } else {
+            Ordering::Equal
+        }
+    }
+}
+
+/// Sturm sequence of a square-free integer polynomial, each member scaled positively to ℤ.
+fn sturm_sequence(p: &[BigInt]) -> Vec<Vec<BigInt>> {
+    let to_u = |v: &[BigInt]| {
+        UPoly::new(
+            v.iter()
+                .map(|c| BigRational::from_integer(c.clone()))
+                .collect(),
+        )
+    };
+    let mut seq = vec![p.to_vec()];
+    let mut a = to_u(p);
+    let mut b = a.derivative();
+    while !b.is_zero() {
+        seq.push(integer_coeffs(&b));
+        let r = match a.div_rem(&b) {
+            Some((_, r)) => r,
+            None => break,
+        };
+        a = b;
+        b = UPoly::new(r.coeffs.iter().map(|c| -c).collect());
+    }
+    seq
+}
+
+fn variations(seq: &[Vec<BigInt>], x: &BigRational) -> usize {
+    let signs: Vec<Ordering> = seq
+        .iter()
+        .map(|p| sign_at(p, x))
+        .filter(|s| *s != Ordering::Equal)
+        .collect();
+    signs.windows(2).filter(|w| w[0] != w[1]).count()
+}
+
+/// A power of two strictly greater than every root's modulus (Cauchy's bound).
+fn root_bound(p: &[BigInt]) -> BigRational {
+    let lead = p.last().map(|c| c.abs()).unwrap_or_else(BigInt::one);
+    let max = p[..p.len().saturating_sub(1)]
+        .iter()
+        .map(|c| c.abs())
+        .max()
+        .unwrap_or_default();
+    let ratio = BigRational::new(max, lead) + BigRational::one();
+    let mut b = BigRational::one();
+    while b <= ratio {
+        b *= BigRational::from_integer(2.into());
+    }
+    b
+}
+
+/// Isolate the roots of the square-free `int` in `(lo, hi]` (neither end a root of the
+/// sequence's head except as recorded).
+fn isolate(
+    seq: &[Vec<BigInt>],
+    lo: &BigRational,
+    hi: &BigRational,
+    mult: u32,
+    int: &[BigInt],
+    out: &mut Vec<RealRoot>,
+) {
+    let count = variations(seq, lo).saturating_sub(variations(seq, hi));
+    if count == 0 {
+        return;
+    }
+    if sign_at(int, hi) == Ordering::Equal {
+        out.push(RealRoot {
+            lo: hi.clone(),
+            hi: hi.clone(),
+            multiplicity: mult,
+            factor: int.to_vec(),
+        });
+        if count > 1 {
+            // The other roots lie strictly below hi; shrink hi to a non-root just below.
+            let mut step = (hi - lo) / BigRational::from_integer(2.into());
+            let h = loop {
+                let cand = hi - &step;
+                if sign_at(int, &cand) != Ordering::Equal
+                    && variations(seq, lo) - variations(seq, &cand) == count - 1
+                {
+                    break cand;
+                }
+                step /= BigRational::from_integer(2.into());
+            };
+            isolate(seq, lo, &h, mult, int, out);
+        }
+        return;
+    }
+    if count == 1 {
+        out.push(RealRoot {
+            lo: lo.clone(),
+            hi: hi.clone(),
+            multiplicity: mult,
+            factor: int.to_vec(),
+        });
+        return;
+    }
+    let mid = (lo + hi) / BigRational::from_integer(2.into());
+    isolate(seq, lo, &mid, mult, int, out);
+    isolate(seq, &mid, hi, mult, int, out);
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn r(n: i64, d: i64) -> BigRational {
+        BigRational::new(n.into(), d.into())
+    }
+
+    #[test]
+    fn square_free_factors_of_repeated_roots() {
+        // (x-1)^3 (x+2)^2 x
+        let p = UPoly::from_roots(&[r(1, 1), r(1, 1), r(1, 1), r(-2, 1), r(-2, 1), r(0, 1)]);
+        let f = p.square_free_factors();
+        let mults: Vec<u32> = f.iter().map(|(m, _)| *m).collect();
+        assert_eq!(mults, vec![1, 2, 3]);
+    }
+
+    #[test]
+    fn isolates_close_and_exact_roots() {
+        let p = UPoly::from_roots(&[r(1, 3), r(1, 3) + r(1, 1_000_000), r(-5, 2), r(0, 1)]);
+        let roots = p.real_roots_within(&r(1, 1_000_000_000));
+        assert_eq!(roots.len(), 4);
+        let want = [-2.5, 0.0, 1.0 / 3.0, 1.0 / 3.0 + 1e-6];
+        for (root, w) in roots.iter().zip(want) {
+            assert!((root.to_f64() - w).abs() < 1e-9, "{} vs {w}", root.to_f64());
+            assert!(root.lo <= root.hi);
+        }
+    }
+
+    #[test]
+    fn no_real_roots() {
+        assert!(UPoly::from_i64(&[1, 0, 1]).real_roots().is_empty());
+    }
+}

@@ -1,0 +1,464 @@
+//! The paper's data: the YAML files of `paper_cases/` (format in `docs/case-format.md`).
+//!
+//! The paper's numbers live only here. A printed number keeps its printed digits, which give
+//! both its exact value and its precision.
+
+use std::fmt;
+use std::path::{Path, PathBuf};
+
+use num_bigint::BigInt;
+use num_rational::BigRational;
+use num_traits::ToPrimitive;
+use serde::de::{self, Deserializer, Visitor};
+use serde::Deserialize;
+
+use crate::algebra::{parse_decimal, Poly};
+use crate::error::{Error, InputLocation, Result};
+
+/// A number as the paper printed it: exact value plus precision.
+///
+/// # Example
+/// ```
+/// use orthocheck::cases::Printed;
+/// let x = Printed::parse("2.6849").unwrap();
+/// assert_eq!(x.decimals, 4);
+/// assert_eq!(x.half_unit(), 0.00005);
+/// ```
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Printed {
+    /// The digits as printed.
+    pub text: String,
+    /// The exact value of those digits.
+    pub value: BigRational,
+    /// Digits after the decimal point.
+    pub decimals: u32,
+}
+
+impl Printed {
+    /// Parse printed digits (`"16.2189"`, `"-0.833333"`, `"18"`, `".68697"`).
+    pub fn parse(text: &str) -> Option<Printed> {
+        let t = text.trim();
+        let value = parse_decimal(t)?;
+        let decimals = t.split_once('.').map_or(0, |(_, f)| f.len() as u32);
+        Some(Printed {
+            text: t.to_string(),
+            value,
+            decimals,
+        })
+    }
+
+    /// Half a unit in the last printed digit: the rounding bound of the printed value.
+    pub fn half_unit(&self) -> f64 {
+        0.5 * 10f64.powi(-(self.decimals as i32))
+    }
+
+    /// The value as `f64`.
+    pub fn to_f64(&self) -> f64 {
+        self.value.to_f64().unwrap_or(f64::NAN)
+    }
+
+    /// The value as an integer, when it is one.
+    pub fn to_integer(&self) -> Option<BigInt> {
+        self.value.is_integer().then(|| self.value.to_integer())
+    }
+}
+
+impl fmt::Display for Printed {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.text)
+    }
+}
+
+impl<'de> Deserialize<'de> for Printed {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> std::result::Result<Self, D::Error> {
+        struct V;
+        impl Visitor<'_> for V {
+            type Value = Printed;
+            fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+                f.write_str("a printed number as a quoted string, e.g. \"2.6849\"")
+            }
+            fn visit_str<E: de::Error>(self, s: &str) -> std::result::Result<Printed, E> {
+                Printed::parse(s)
+                    .ok_or_else(|| E::custom(format!("'{s}' is not a printed decimal number")))
+            }
+            fn visit_i64<E: de::Error>(self, v: i64) -> std::result::Result<Printed, E> {
+                self.visit_str(&v.to_string())
+            }
+            fn visit_u64<E: de::Error>(self, v: u64) -> std::result::Result<Printed, E> {
+                self.visit_str(&v.to_string())
+            }
+            fn visit_f64<E: de::Error>(self, v: f64) -> std::result::Result<Printed, E> {
+                Err(E::custom(format!(
+                    "{v} is an unquoted float: quote it so its printed digits are kept"
+                )))
+            }
+        }
+        d.deserialize_str(V)
+    }
+}
+
+/// Where in the paper a case or claim comes from.
+#[derive(Clone, Debug, Deserialize, serde::Serialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct Source {
+    /// Section number as in the paper ("2.1", "A" for the appendix).
+    pub section: String,
+    /// Equation, table or figure label, if any.
+    #[serde(default)]
+    pub label: Option<String>,
+    /// Line range in the LaTeX source.
+    pub lines: String,
+    /// A short quote.
+    pub quote: String,
+}
+
+/// One claim of CLAIMS.md as a case refers to it.
+#[derive(Clone, Debug, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct ClaimRef {
+    /// The CLAIMS.md id.
+    pub claim: String,
+    /// Line range.
+    pub lines: String,
+    /// A short quote.
+    pub quote: String,
+}
+
+/// A case file.
+#[derive(Clone, Debug, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct Case {
+    /// Unique case id (also the snapshot name).
+    pub id: String,
+    /// Human title.
+    pub title: String,
+    /// Where the case sits in the paper.
+    pub source: Source,
+    /// What to check, by kind.
+    pub check: CaseCheck,
+}
+
+/// The kinds of case; each kind has its runner in `check`.
+#[derive(Clone, Debug, Deserialize, PartialEq)]
+#[serde(rename_all = "snake_case", deny_unknown_fields)]
+pub enum CaseCheck {
+    /// §2.1's worked counts.
+    DofCount(DofCountCase),
+    /// §2.1 and the abstract: identifiability decided by Jacobian rank.
+    DofIdentifiability(DofIdentifiabilityCase),
+    /// Eq. p3f3sqr and the signed relations.
+    TwofoldSquared(TwofoldCase),
+}
+
+/// §2.1 worked examples.
+#[derive(Clone, Debug, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct DofCountCase {
+    /// Seed of the generic scene for the rank evidence.
+    pub seed: u64,
+    /// The printed examples.
+    pub examples: Vec<DofExample>,
+}
+
+/// One printed count.
+#[derive(Clone, Debug, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct DofExample {
+    /// The claim.
+    pub claim: ClaimRef,
+    /// p.
+    pub points: usize,
+    /// k.
+    pub frames: usize,
+    /// The printed −1+3p+5(k−1).
+    pub unknowns: Printed,
+    /// The printed 2kp.
+    pub measurements: Printed,
+}
+
+/// Identifiability claims over a grid.
+#[derive(Clone, Debug, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct DofIdentifiabilityCase {
+    /// Seed of the generic scenes.
+    pub seed: u64,
+    /// Largest p of the grid.
+    pub max_points: usize,
+    /// Largest k of the grid.
+    pub max_frames: usize,
+    /// The printed count formula.
+    pub formula: FormulaClaim,
+    /// The printed minimum.
+    pub minimum: MinimumClaim,
+    /// "two frames never suffice".
+    pub two_frames: ClaimRef,
+}
+
+/// The count formula as printed.
+#[derive(Clone, Debug, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct FormulaClaim {
+    /// The claim.
+    pub claim: ClaimRef,
+    /// Unknowns, in p and k, as printed.
+    pub unknowns: String,
+    /// Measurements, in p and k, as printed.
+    pub measurements: String,
+}
+
+/// A claimed minimal configuration.
+#[derive(Clone, Debug, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct MinimumClaim {
+    /// The claim.
+    pub claim: ClaimRef,
+    /// Claimed minimal number of points.
+    pub points: usize,
+    /// Claimed minimal number of frames.
+    pub frames: usize,
+}
+
+/// Eq. p3f3sqr.
+#[derive(Clone, Debug, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct TwofoldCase {
+    /// The three signed relations.
+    pub relations: RelationsClaim,
+    /// The printed polynomial.
+    pub polynomial: PolynomialClaim,
+    /// Random rational points for the independent evaluation check.
+    pub evaluation_points: usize,
+    /// Seed of those points.
+    pub seed: u64,
+}
+
+/// The printed sign patterns.
+#[derive(Clone, Debug, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct RelationsClaim {
+    /// The claim.
+    pub claim: ClaimRef,
+    /// Patterns such as `"+ + -"` for √A + √B − √C = 0.
+    pub patterns: Vec<String>,
+    /// Random triangles to test.
+    pub trials: usize,
+    /// Seed.
+    pub seed: u64,
+}
+
+/// A printed polynomial.
+#[derive(Clone, Debug, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct PolynomialClaim {
+    /// The claim.
+    pub claim: ClaimRef,
+    /// The transcription.
+    pub printed: String,
+}
+
+/// Read and validate one case file.
+pub fn load_case(path: &Path) -> Result<Case> {
+    let text = std::fs::read_to_string(path).map_err(|source| Error::Io {
+        path: path.to_path_buf(),
+        source,
+    })?;
+    parse_case(&text, path)
+}
+
+/// Parse and validate case text; `path` names the file in errors.
+pub fn parse_case(text: &str, path: &Path) -> Result<Case> {
+    let case: Case = parse_yaml(text, path)?;
+    validate(&case, text, path)?;
+    Ok(case)
+}
+
+/// Deserialize YAML with errors that name the file, line, column and field path.
+pub fn parse_yaml<T: serde::de::DeserializeOwned>(text: &str, path: &Path) -> Result<T> {
+    let options = serde_saphyr::options! { with_snippet: false };
+    let mut field: Option<String> = None;
+    let parsed = serde_saphyr::with_deserializer_from_str_with_options(text, options, |de| {
+        serde_path_to_error::deserialize(de).map_err(|e| {
+            let p = e.path().to_string();
+            if p != "." && p != "?" {
+                field = Some(p);
+            }
+            e.into_inner()
+        })
+    });
+    parsed.map_err(|e| {
+        let loc = e.location();
+        let message = e.to_string();
+        Error::Input {
+            location: InputLocation {
+                file: path.to_path_buf(),
+                line: loc.map(|l| l.line()),
+                column: loc.map(|l| l.column()),
+                field: field.or_else(|| field_of(&message)),
+            },
+            message: strip_location(&message),
+        }
+    })
+}
+
+/// The field a message names (`missing field `x``, `duplicate mapping key: x`).
+fn field_of(message: &str) -> Option<String> {
+    if let Some(i) = message.find("field `") {
+        let start = i + "field `".len();
+        let end = message[start..].find('`')?;
+        return Some(message[start..start + end].to_string());
+    }
+    let start = message.find("duplicate mapping key: ")? + "duplicate mapping key: ".len();
+    let key = message[start..].split([',', ' ']).next()?;
+    Some(key.to_string())
+}
+
+/// The 1-based line of a dotted field path (`check.dof_count.examples[1].points`) in
+/// block-style YAML, for errors found after parsing.
+fn line_of(text: &str, field: &str) -> Option<u64> {
+    let lines: Vec<&str> = text.lines().collect();
+    let indent = |l: &str| l.len() - l.trim_start().len();
+    let (mut pos, mut min_indent) = (0usize, 0usize);
+    for segment in field.split('.') {
+        let (key, index) = match segment.split_once('[') {
+            Some((k, i)) => (k, i.trim_end_matches(']').parse::<usize>().ok()),
+            None => (segment, None),
+        };
+        let found = (pos..lines.len()).find(|&i| {
+            let t = lines[i].trim_start().trim_start_matches("- ");
+            indent(lines[i]) >= min_indent && t.starts_with(&format!("{key}:"))
+        })?;
+        pos = found;
+        min_indent = indent(lines[found]);
+        if let Some(n) = index {
+            let items: Vec<usize> = (found + 1..lines.len())
+                .take_while(|&i| {
+                    lines[i].trim().is_empty()
+                        || indent(lines[i]) > min_indent
+                        || lines[i].trim_start().starts_with('-')
+                })
+                .filter(|&i| lines[i].trim_start().starts_with('-'))
+                .collect();
+            // A flow sequence (`[..]`) has no item lines: the key's line is the best answer.
+            let Some(item_indent) = items.first().map(|&i| indent(lines[i])) else {
+                break;
+            };
+            let Some(at) = items
+                .into_iter()
+                .filter(|&i| indent(lines[i]) == item_indent)
+                .nth(n)
+            else {
+                break;
+            };
+            pos = at;
+            min_indent = item_indent;
+        }
+    }
+    Some(pos as u64 + 1)
+}
+
+/// Drop a trailing " at line L, column C" that the location already says.
+fn strip_location(message: &str) -> String {
+    match message.find(" at line ") {
+        Some(i) => message[..i].to_string(),
+        None => message.to_string(),
+    }
+}
+
+fn invalid(text: &str, path: &Path, field: &str, message: String) -> Error {
+    Error::Input {
+        location: InputLocation {
+            file: path.to_path_buf(),
+            line: line_of(text, field),
+            column: None,
+            field: Some(field.to_string()),
+        },
+        message,
+    }
+}
+
+/// Checks serde cannot express: counts, sign patterns, and that every formula parses.
+fn validate(case: &Case, text: &str, path: &Path) -> Result<()> {
+    let err = |field: &str, message: String| Err(invalid(text, path, field, message));
+    let formula = |field: &str, f: &str| match Poly::parse(f) {
+        Ok(_) => Ok(()),
+        Err(e) => err(field, format!("formula does not parse: {e}")),
+    };
+    if case.id.trim().is_empty() {
+        return err("id", "must not be empty".into());
+    }
+    match &case.check {
+        CaseCheck::DofCount(c) => {
+            for (i, e) in c.examples.iter().enumerate() {
+                if e.points == 0 || e.frames == 0 {
+                    return err(
+                        &format!("check.dof_count.examples[{i}].points"),
+                        "points and frames must be at least 1".into(),
+                    );
+                }
+            }
+        }
+        CaseCheck::DofIdentifiability(c) => {
+            if c.max_points < 3 || c.max_frames < 3 {
+                return err(
+                    "check.dof_identifiability.max_points",
+                    "the grid must reach at least 3 points and 3 frames".into(),
+                );
+            }
+            formula(
+                "check.dof_identifiability.formula.unknowns",
+                &c.formula.unknowns,
+            )?;
+            formula(
+                "check.dof_identifiability.formula.measurements",
+                &c.formula.measurements,
+            )?;
+        }
+        CaseCheck::TwofoldSquared(c) => {
+            for (i, p) in c.relations.patterns.iter().enumerate() {
+                if parse_signs(p).is_none() {
+                    return err(
+                        &format!("check.twofold_squared.relations.patterns[{i}]"),
+                        format!("'{p}' is not three signs such as \"+ + -\""),
+                    );
+                }
+            }
+            formula(
+                "check.twofold_squared.polynomial.printed",
+                &c.polynomial.printed,
+            )?;
+        }
+    }
+    Ok(())
+}
+
+/// Parse a sign pattern `"+ + -"`.
+pub fn parse_signs(text: &str) -> Option<[i64; 3]> {
+    let signs: Vec<i64> = text
+        .split_whitespace()
+        .map(|t| match t {
+            "+" => Some(1),
+            "-" => Some(-1),
+            _ => None,
+        })
+        .collect::<Option<_>>()?;
+    signs.try_into().ok()
+}
+
+/// All `*.yaml` files of a folder, sorted by name.
+pub fn case_files(dir: &Path) -> Result<Vec<PathBuf>> {
+    let entries = std::fs::read_dir(dir).map_err(|source| Error::Io {
+        path: dir.to_path_buf(),
+        source,
+    })?;
+    let mut files: Vec<PathBuf> = entries
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter(|p| p.extension().is_some_and(|x| x == "yaml"))
+        .collect();
+    files.sort();
+    Ok(files)
+}
+
+/// Load every case of a folder.
+pub fn load_all(dir: &Path) -> Result<Vec<Case>> {
+    case_files(dir)?.iter().map(|p| load_case(p)).collect()
+}

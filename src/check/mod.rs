@@ -1,0 +1,192 @@
+//! Judgement: a case runs into claim results, each a comparison of what the paper printed
+//! with what the derivations compute, ending in a [`Verdict`].
+
+mod dof;
+mod twofold;
+
+pub use twofold::{audit as audit_twofold, TwofoldAudit};
+
+use serde::Serialize;
+
+use crate::cases::{Case, CaseCheck, ClaimRef};
+use crate::error::Result;
+
+/// The verdicts (see DESIGN.md).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Verdict {
+    /// Agrees within the printed precision.
+    Reproduced,
+    /// Agrees once the rounding of the printed input data is propagated.
+    ReproducedWithinRounding,
+    /// A symbolic identity holds exactly over ℚ.
+    IdentityVerified,
+    /// The printed formula or number is wrong; the corrected form is stated and verified.
+    Erratum,
+    /// A noise claim, checked against a seeded distribution.
+    Statistical,
+    /// The paper lacks the data.
+    NotReproducible,
+    /// The recomputation contradicts the claim.
+    Contradicted,
+}
+
+impl Verdict {
+    /// All verdicts, in report order.
+    pub const ALL: [Verdict; 7] = [
+        Verdict::Reproduced,
+        Verdict::ReproducedWithinRounding,
+        Verdict::IdentityVerified,
+        Verdict::Erratum,
+        Verdict::Statistical,
+        Verdict::NotReproducible,
+        Verdict::Contradicted,
+    ];
+
+    /// The kebab-case name.
+    pub fn name(&self) -> &'static str {
+        match self {
+            Verdict::Reproduced => "reproduced",
+            Verdict::ReproducedWithinRounding => "reproduced-within-rounding",
+            Verdict::IdentityVerified => "identity-verified",
+            Verdict::Erratum => "erratum",
+            Verdict::Statistical => "statistical",
+            Verdict::NotReproducible => "not-reproducible",
+            Verdict::Contradicted => "contradicted",
+        }
+    }
+}
+
+/// How close is close enough, and why.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Tolerance {
+    /// The bound (formatted), or "exact".
+    pub value: String,
+    /// Where it comes from.
+    pub source: String,
+}
+
+impl Tolerance {
+    /// Exact comparison (integers, rationals, polynomials).
+    pub fn exact(why: &str) -> Self {
+        Tolerance {
+            value: "exact".into(),
+            source: why.into(),
+        }
+    }
+}
+
+/// One named piece of evidence.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct EvidenceItem {
+    /// What it is.
+    pub name: String,
+    /// Its value, formatted.
+    pub value: String,
+}
+
+/// How a verdict was reached.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Evidence {
+    /// The method.
+    pub method: String,
+    /// Supporting values, in order.
+    pub details: Vec<EvidenceItem>,
+}
+
+impl Evidence {
+    /// Evidence with a method and no details yet.
+    pub fn new(method: &str) -> Self {
+        Evidence {
+            method: method.into(),
+            details: Vec::new(),
+        }
+    }
+
+    /// Add a detail.
+    pub fn with(mut self, name: &str, value: impl ToString) -> Self {
+        self.details.push(EvidenceItem {
+            name: name.into(),
+            value: value.to_string(),
+        });
+        self
+    }
+}
+
+/// The outcome for one claim.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct ClaimResult {
+    /// Unique result id: the CLAIMS.md id, with a `/suffix` when one claim has several results.
+    pub id: String,
+    /// The CLAIMS.md id.
+    pub claim: String,
+    /// The case it came from.
+    pub case: String,
+    /// Paper section.
+    pub section: String,
+    /// Line range in the paper's source.
+    pub lines: String,
+    /// The paper's words.
+    pub quote: String,
+    /// The verdict.
+    pub verdict: Verdict,
+    /// What the paper printed or claimed.
+    pub paper_value: String,
+    /// What the computation gives.
+    pub computed_value: String,
+    /// The tolerance, when a comparison of numbers was made.
+    pub tolerance: Option<Tolerance>,
+    /// How.
+    pub evidence: Evidence,
+}
+
+/// Builds results for one case.
+pub(crate) struct ResultBuilder<'a> {
+    case: &'a Case,
+}
+
+impl<'a> ResultBuilder<'a> {
+    pub(crate) fn new(case: &'a Case) -> Self {
+        ResultBuilder { case }
+    }
+
+    /// A result for `claim`, with `suffix` making the id unique when needed.
+    #[allow(clippy::too_many_arguments)]
+    pub(crate) fn result(
+        &self,
+        claim: &ClaimRef,
+        suffix: Option<&str>,
+        verdict: Verdict,
+        paper_value: String,
+        computed_value: String,
+        tolerance: Option<Tolerance>,
+        evidence: Evidence,
+    ) -> ClaimResult {
+        ClaimResult {
+            id: match suffix {
+                Some(s) => format!("{}/{s}", claim.claim),
+                None => claim.claim.clone(),
+            },
+            claim: claim.claim.clone(),
+            case: self.case.id.clone(),
+            section: self.case.source.section.clone(),
+            lines: claim.lines.clone(),
+            quote: claim.quote.clone(),
+            verdict,
+            paper_value,
+            computed_value,
+            tolerance,
+            evidence,
+        }
+    }
+}
+
+/// Run one case into its claim results.
+pub fn run_case(case: &Case) -> Result<Vec<ClaimResult>> {
+    let b = ResultBuilder::new(case);
+    match &case.check {
+        CaseCheck::DofCount(c) => dof::check_count(&b, c),
+        CaseCheck::DofIdentifiability(c) => dof::check_identifiability(&b, c),
+        CaseCheck::TwofoldSquared(c) => twofold::check(&b, c),
+    }
+}

@@ -1,0 +1,5 @@
+//! The paper, as code: one module per section or equation. Derivations compute; they never
+//! read files, print, or know what the paper printed.
+
+pub mod dof;
+pub mod twofold;

@@ -1,0 +1,82 @@
+//! Typed library errors; the binary maps them to exit codes.
+
+use std::fmt;
+use std::path::PathBuf;
+
+/// A malformed formula transcription.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+#[error("at character {position}: {message}")]
+pub struct ParseError {
+    /// Character offset into the text (`usize::MAX` at the end).
+    pub position: usize,
+    /// What is wrong.
+    pub message: String,
+}
+
+/// Where in an input file something is wrong.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct InputLocation {
+    /// The file.
+    pub file: PathBuf,
+    /// 1-based line, when known.
+    pub line: Option<u64>,
+    /// 1-based column, when known.
+    pub column: Option<u64>,
+    /// The field (a dotted path such as `check.dof_count.examples[0].frames`).
+    pub field: Option<String>,
+}
+
+impl fmt::Display for InputLocation {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}", self.file.display())?;
+        if let Some(line) = self.line {
+            write!(f, ":{line}")?;
+            if let Some(col) = self.column {
+                write!(f, ":{col}")?;
+            }
+        }
+        if let Some(field) = &self.field {
+            write!(f, ": field `{field}`")?;
+        }
+        Ok(())
+    }
+}
+
+/// Every error the library reports.
+#[derive(Debug, thiserror::Error)]
+#[non_exhaustive]
+pub enum Error {
+    /// A file could not be read.
+    #[error("{}: cannot read: {source}", path.display())]
+    Io {
+        /// The file.
+        path: PathBuf,
+        /// The cause.
+        source: std::io::Error,
+    },
+    /// A case or tracks file is malformed.
+    #[error("{location}: {message}")]
+    Input {
+        /// Where.
+        location: InputLocation,
+        /// What is wrong.
+        message: String,
+    },
+    /// Input that is well-formed but unusable (wrong counts, NaN, too few points).
+    #[error("invalid input: {0}")]
+    InvalidInput(String),
+    /// A formula transcription does not parse.
+    #[error("formula `{formula}`: {source}")]
+    Formula {
+        /// The text.
+        formula: String,
+        /// The cause.
+        source: ParseError,
+    },
+    /// A numerical method failed where it should not (reported, never a panic).
+    #[error("numerical failure: {0}")]
+    Numerical(String),
+}
+
+/// Library result type.
+pub type Result<T, E = Error> = std::result::Result<T, E>;

@@ -1,0 +1,14 @@
+#![doc = include_str!("../README.md")]
+#![forbid(unsafe_code)]
+#![warn(missing_docs)]
+
+pub mod algebra;
+pub mod cases;
+pub mod check;
+pub mod derivations;
+pub mod error;
+pub mod model;
+pub mod numfmt;
+pub mod report;
+
+pub use error::{Error, Result};

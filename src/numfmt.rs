@@ -1,0 +1,79 @@
+//! Number formatting, in one place, so reports and snapshots never drift across machines.
+
+/// Significant digits used for every floating value shown to a reader or snapshotted.
+pub const SIGNIFICANT: usize = 6;
+
+/// Format with [`SIGNIFICANT`] significant digits: plain notation for magnitudes in
+/// [1e-4, 1e6), scientific otherwise; trailing zeros trimmed; `-0` printed as `0`.
+///
+/// # Example
+/// ```
+/// use orthocheck::numfmt::sig;
+/// assert_eq!(sig(16.21890004), "16.2189");
+/// assert_eq!(sig(2.5e-9), "2.5e-9");
+/// assert_eq!(sig(-0.0), "0");
+/// assert_eq!(sig(f64::INFINITY), "inf");
+/// ```
+pub fn sig(x: f64) -> String {
+    if x.is_nan() {
+        return "NaN".into();
+    }
+    if x.is_infinite() {
+        return if x > 0.0 { "inf".into() } else { "-inf".into() };
+    }
+    if x == 0.0 {
+        return "0".into();
+    }
+    let a = x.abs();
+    if (1e-4..1e6).contains(&a) {
+        let magnitude = a.log10().floor() as i32;
+        let decimals = (SIGNIFICANT as i32 - 1 - magnitude).max(0) as usize;
+        let s = format!("{x:.decimals$}");
+        trim_zeros(&s)
+    } else {
+        let s = format!("{:.*e}", SIGNIFICANT - 1, x);
+        match s.split_once('e') {
+            Some((m, e)) => format!("{}e{}", trim_zeros(m), e),
+            None => s,
+        }
+    }
+}
+
+fn trim_zeros(s: &str) -> String {
+    if s.contains('.') {
+        let t = s.trim_end_matches('0').trim_end_matches('.');
+        if t == "-0" {
+            "0".into()
+        } else {
+            t.into()
+        }
+    } else {
+        s.into()
+    }
+}
+
+/// A list of floats, each with [`sig`], comma-separated in parentheses.
+pub fn sig_list(xs: &[f64]) -> String {
+    format!(
+        "({})",
+        xs.iter().map(|x| sig(*x)).collect::<Vec<_>>().join(", ")
+    )
+}
+
+/// A rounding-level quantity as the power of ten above it (`"< 1e-11"`), so that values at
+/// machine precision never make output differ between machines; exact zero prints `"0"`.
+///
+/// # Example
+/// ```
+/// assert_eq!(orthocheck::numfmt::below(2.06e-12), "< 1e-11");
+/// ```
+pub fn below(x: f64) -> String {
+    if x == 0.0 {
+        return "0".into();
+    }
+    if !x.is_finite() {
+        return sig(x);
+    }
+    let e = x.abs().log10().floor() as i32 + 1;
+    format!("< 1e{e}")
+}

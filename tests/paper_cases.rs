@@ -1,0 +1,53 @@
+//! The paper-reproduction check: every `paper_cases/*.yaml` is a test whose claim results are
+//! snapshotted under `snapshots/`; every `tests/bad_cases/*.yaml` must fail with the error its
+//! first line (`# expect: …`) names.
+
+use std::path::Path;
+
+use orthocheck::{cases, check, Error};
+
+fn snapshot_settings() -> insta::Settings {
+    let mut s = insta::Settings::clone_current();
+    s.set_snapshot_path(concat!(env!("CARGO_MANIFEST_DIR"), "/snapshots"));
+    s.set_prepend_module_to_snapshot(false);
+    s.set_omit_expression(true);
+    s
+}
+
+fn paper_case(path: &Path) -> datatest_stable::Result<()> {
+    let case = cases::load_case(path)?;
+    let results = check::run_case(&case)?;
+    assert!(!results.is_empty(), "{} produced no claim results", case.id);
+    let stem = path
+        .file_stem()
+        .and_then(|s| s.to_str())
+        .ok_or("case file name is not UTF-8")?;
+    let json = serde_json::to_string_pretty(&results)?;
+    snapshot_settings().bind(|| insta::assert_snapshot!(format!("case__{stem}"), json));
+    Ok(())
+}
+
+fn bad_case(path: &Path, text: String) -> datatest_stable::Result<()> {
+    let expected = text
+        .lines()
+        .next()
+        .and_then(|l| l.strip_prefix("# expect: "))
+        .ok_or("a bad case must start with '# expect: …'")?;
+    match cases::load_case(path) {
+        Ok(_) => Err(format!("{} loaded, but it must fail", path.display()).into()),
+        Err(e @ Error::Input { .. }) => {
+            let shown = e.to_string();
+            let after_file = shown
+                .strip_prefix(&path.display().to_string())
+                .ok_or("the error does not start with the file name")?;
+            assert_eq!(after_file, expected, "error for {}", path.display());
+            Ok(())
+        }
+        Err(e) => Err(format!("{}: wrong kind of error: {e}", path.display()).into()),
+    }
+}
+
+datatest_stable::harness! {
+    { test = paper_case, root = "paper_cases", pattern = r"\.yaml$" },
+    { test = bad_case, root = "tests/bad_cases", pattern = r"\.yaml$" },
+}

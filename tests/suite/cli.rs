@@ -1,0 +1,152 @@
+use std::path::Path;
+use std::process::{Command, Output};
+
+fn orthocheck(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_orthocheck"))
+        .args(args)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .expect("the binary runs")
+}
+
+fn json(out: &Output) -> serde_json::Value {
+    serde_json::from_slice(&out.stdout).expect("stdout is JSON")
+}
+
+#[test]
+fn dof_reports_the_two_frame_deficiency() {
+    let out = orthocheck(&["dof", "--points", "4", "--frames", "2", "--json"]);
+    assert_eq!(out.status.code(), Some(0));
+    let v = json(&out);
+    for key in [
+        "points",
+        "frames",
+        "unknowns",
+        "measurements",
+        "balance",
+        "jacobian_rank",
+        "exact_rank",
+        "deficiency",
+    ] {
+        assert!(v.get(key).is_some(), "missing {key}");
+    }
+    assert_eq!(v["balance"], 0);
+    assert_eq!(v["deficiency"], 1);
+    assert_eq!(v["jacobian_rank"], v["exact_rank"]);
+}
+
+#[test]
+fn dof_table_lists_the_grid() {
+    let out = orthocheck(&[
+        "dof",
+        "--table",
+        "--max-points",
+        "4",
+        "--max-frames",
+        "3",
+        "--json",
+    ]);
+    assert_eq!(out.status.code(), Some(0));
+    assert_eq!(json(&out).as_array().map(Vec::len), Some(12));
+}
+
+#[test]
+fn usage_errors_exit_2() {
+    assert_eq!(
+        orthocheck(&["dof", "--points", "0", "--frames", "3"])
+            .status
+            .code(),
+        Some(2)
+    );
+    assert_eq!(
+        orthocheck(&["dof", "--points", "x", "--frames", "3"])
+            .status
+            .code(),
+        Some(2)
+    );
+    assert_eq!(orthocheck(&["nonsense"]).status.code(), Some(2));
+    assert_eq!(orthocheck(&["dof"]).status.code(), Some(2));
+}
+
+#[test]
+fn audit_twofold_squared_verifies_the_identity() {
+    let out = orthocheck(&["audit", "twofold-squared"]);
+    assert_eq!(out.status.code(), Some(0));
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(text.contains("verdict:  identity-verified"), "{text}");
+}
+
+#[test]
+fn report_writes_both_files_deterministically() {
+    let dir = tempfile::tempdir().unwrap();
+    let a = dir.path().join("a");
+    let b = dir.path().join("b");
+    for d in [&a, &b] {
+        let out = orthocheck(&["report", "--out", d.to_str().unwrap()]);
+        assert_eq!(
+            out.status.code(),
+            Some(0),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+    }
+    let ja = std::fs::read(a.join("report.json")).unwrap();
+    assert_eq!(ja, std::fs::read(b.join("report.json")).unwrap());
+    assert_eq!(
+        std::fs::read(a.join("report.md")).unwrap(),
+        std::fs::read(b.join("report.md")).unwrap()
+    );
+    let v: serde_json::Value = serde_json::from_slice(&ja).unwrap();
+    let claims = v["claims"].as_array().unwrap();
+    assert!(!claims.is_empty());
+    for c in claims {
+        for key in [
+            "id",
+            "section",
+            "verdict",
+            "paper_value",
+            "computed_value",
+            "tolerance",
+            "evidence",
+        ] {
+            assert!(c.get(key).is_some(), "claim lacks {key}");
+        }
+    }
+    let total: u64 = v["summary"]
+        .as_object()
+        .unwrap()
+        .values()
+        .filter_map(|n| n.as_u64())
+        .sum();
+    assert_eq!(total as usize, claims.len());
+}
+
+#[test]
+fn a_bad_case_file_exits_2_and_names_file_line_and_field() {
+    let dir = tempfile::tempdir().unwrap();
+    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/bad_cases/wrong_type.yaml");
+    std::fs::copy(&src, dir.path().join("wrong_type.yaml")).unwrap();
+    let out = orthocheck(&[
+        "report",
+        "--cases",
+        dir.path().to_str().unwrap(),
+        "--out",
+        dir.path().join("out").to_str().unwrap(),
+    ]);
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("wrong_type.yaml:16:17: field `check.dof_count.examples[0].points`"),
+        "{err}"
+    );
+    // nothing was written, nothing of the user's was touched
+    assert!(!dir.path().join("out").exists());
+    assert!(dir.path().join("wrong_type.yaml").exists());
+}
+
+#[test]
+fn a_missing_cases_folder_exits_2() {
+    let out = orthocheck(&["report", "--cases", "no-such-folder"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("no-such-folder"));
+}

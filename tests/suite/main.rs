@@ -1,0 +1,8 @@
+//! Integration tests in one binary.
+
+/// Property tests of the exact and floating algebra.
+mod algebra_props;
+/// The command line: exit codes, JSON shapes, determinism.
+mod cli;
+/// The paper cases cover the claims this tool must decide.
+mod inventory;
