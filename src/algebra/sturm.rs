@@ -27,49 +27,119 @@ pub struct UPoly {
     coeffs: Vec<BigRational>,
 }
 
-/// A real root: `lo ≤ root ≤ hi`, with `lo == hi` when the root is rational and was hit exactly.
+/// A dyadic rational n / 2^k: interval ends stay dyadic under bisection, so evaluation and
+/// refinement run in integer arithmetic with shifts instead of rational normalisation.
+#[derive(Clone, Debug, PartialEq, Eq)]
+struct Dyadic {
+    n: BigInt,
+    k: u32,
+}
+
+impl Dyadic {
+    fn int(n: BigInt) -> Self {
+        Dyadic { n, k: 0 }
+    }
+
+    fn at(&self, k: u32) -> BigInt {
+        &self.n << (k - self.k)
+    }
+
+    fn mid(a: &Dyadic, b: &Dyadic) -> Dyadic {
+        let k = a.k.max(b.k);
+        Dyadic {
+            n: a.at(k) + b.at(k),
+            k: k + 1,
+        }
+    }
+
+    fn sub(a: &Dyadic, b: &Dyadic) -> Dyadic {
+        let k = a.k.max(b.k);
+        Dyadic {
+            n: a.at(k) - b.at(k),
+            k,
+        }
+    }
+
+    fn half(&self) -> Dyadic {
+        Dyadic {
+            n: self.n.clone(),
+            k: self.k + 1,
+        }
+    }
+
+    fn to_rational(&self) -> BigRational {
+        BigRational::new(self.n.clone(), BigInt::one() << self.k)
+    }
+}
+
+impl PartialOrd for Dyadic {
+    fn partial_cmp(&self, other: &Self) -> Option<Ordering> {
+        Some(self.cmp(other))
+    }
+}
+
+impl Ord for Dyadic {
+    fn cmp(&self, other: &Self) -> Ordering {
+        let k = self.k.max(other.k);
+        self.at(k).cmp(&other.at(k))
+    }
+}
+
+/// A real root in `[lo, hi]` (open at `lo` unless `lo == hi`, an exactly hit rational root).
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct RealRoot {
-    /// Lower end of the isolating interval.
-    pub lo: BigRational,
-    /// Upper end of the isolating interval.
-    pub hi: BigRational,
+    lo: Dyadic,
+    hi: Dyadic,
     /// Multiplicity of the root in the original polynomial.
     pub multiplicity: u32,
-    /// The square-free factor the root belongs to (used for refinement).
+    /// The square-free factor the root belongs to, with integer coefficients.
     factor: Vec<BigInt>,
 }
 
 impl RealRoot {
+    /// Lower end of the isolating interval.
+    pub fn lo(&self) -> BigRational {
+        self.lo.to_rational()
+    }
+
+    /// Upper end of the isolating interval.
+    pub fn hi(&self) -> BigRational {
+        self.hi.to_rational()
+    }
+
     /// Midpoint of the isolating interval as `f64`.
     pub fn to_f64(&self) -> f64 {
-        ((&self.lo + &self.hi) / BigRational::from_integer(2.into()))
+        Dyadic::mid(&self.lo, &self.hi)
+            .to_rational()
             .to_f64()
             .unwrap_or(f64::NAN)
     }
 
     /// Width of the interval.
     pub fn width(&self) -> BigRational {
-        &self.hi - &self.lo
+        Dyadic::sub(&self.hi, &self.lo).to_rational()
     }
 
     /// Bisect until the interval is no wider than `width`.
     pub fn refine(&mut self, width: &BigRational) {
-        let two = BigRational::from_integer(2.into());
+        let s_hi = sign_at(&self.factor, &self.hi);
         while self.width() > *width {
-            let mid = (&self.lo + &self.hi) / &two;
-            let s_mid = sign_at(&self.factor, &mid);
-            if s_mid == Ordering::Equal {
-                self.lo = mid.clone();
-                self.hi = mid;
-                return;
-            }
-            // The upper end is never a root (exact hits are recorded as points) while the
-            // lower end may be a neighbouring exact root, so compare with the upper end.
-            if s_mid == sign_at(&self.factor, &self.hi) {
-                self.hi = mid;
-            } else {
-                self.lo = mid;
+            // Bisect a batch of steps between width checks (each check builds a rational).
+            for _ in 0..16 {
+                let mid = Dyadic::mid(&self.lo, &self.hi);
+                let s_mid = sign_at(&self.factor, &mid);
+                if s_mid == Ordering::Equal {
+                    self.lo = mid.clone();
+                    self.hi = mid;
+                    return;
+                }
+                // The upper end is never a root (exact hits are recorded as points) while the
+                // lower end may be a neighbouring exact root, so compare with the upper end.
+                if s_mid == s_hi {
+                    self.hi = mid;
+                } else {
+                    self.lo = mid;
+                }
             }
         }
     }
@@ -238,11 +308,27 @@ impl UPoly {
     /// All distinct real roots, ascending, each in an isolating interval with its multiplicity.
     pub fn real_roots(&self) -> Vec<RealRoot> {
         let mut out = Vec::new();
-        for (mult, f) in self.square_free_factors() {
+        if self.degree().unwrap_or(0) == 0 {
+            return out;
+        }
+        let whole = integer_coeffs(self);
+        let factors = if square_free_mod_prime(&whole) {
+            vec![(1, self.clone())]
+        } else {
+            self.square_free_factors()
+        };
+        for (mult, f) in factors {
             let int = integer_coeffs(&f);
             let seq = sturm_sequence(&int);
             let bound = root_bound(&int);
-            isolate(&seq, &-bound.clone(), &bound, mult, &int, &mut out);
+            isolate(
+                &seq,
+                &Dyadic::int(-bound.n.clone()),
+                &bound,
+                mult,
+                &int,
+                &mut out,
+            );
         }
         // Roots of different factors are distinct (the factors are coprime), but their
         // first intervals may overlap: halve overlapping neighbours until all are disjoint,
@@ -293,15 +379,14 @@ fn integer_coeffs(p: &UPoly) -> Vec<BigInt> {
     }
 }
 
-/// Sign of `p(n/d)` from integer coefficients: Horner on `Σ aᵢ nⁱ d^(deg−i)` (`d > 0`), all in ℤ.
-fn sign_at(p: &[BigInt], x: &BigRational) -> Ordering {
-    let (n, d) = (x.numer(), x.denom());
+/// Sign of `p(n/2^k)` from integer coefficients: Horner on `Σ aᵢ nⁱ 2^(k(deg−i))`, all in ℤ.
+fn sign_at(p: &[BigInt], x: &Dyadic) -> Ordering {
     let mut coeffs = p.iter().rev();
     let mut acc = coeffs.next().cloned().unwrap_or_default();
-    let mut dpow = d.clone();
+    let mut shift = x.k as usize;
     for c in coeffs {
-        acc = acc * n + c * &dpow;
-        dpow *= d;
+        acc = acc * &x.n + (c << shift);
+        shift += x.k as usize;
     }
     acc.sign_ordering()
 }
@@ -324,29 +409,121 @@ impl SignOrdering for BigInt {
 
 /// Sturm sequence of a square-free integer polynomial, each member scaled positively to ℤ.
 fn sturm_sequence(p: &[BigInt]) -> Vec<Vec<BigInt>> {
-    let to_u = |v: &[BigInt]| {
-        UPoly::new(
-            v.iter()
-                .map(|c| BigRational::from_integer(c.clone()))
-                .collect(),
-        )
-    };
     let mut seq = vec![p.to_vec()];
-    let mut a = to_u(p);
-    let mut b = a.derivative();
-    while !b.is_zero() {
-        seq.push(integer_coeffs(&b));
-        let r = match a.div_rem(&b) {
-            Some((_, r)) => r,
-            None => break,
-        };
+    let mut b = primitive(&int_derivative(p));
+    let mut a = p.to_vec();
+    while !b.is_empty() {
+        seq.push(b.clone());
+        // −(a mod b), up to a positive factor: the pseudo-remainder, sign-corrected.
+        let r = pseudo_remainder(&a, &b);
         a = b;
-        b = UPoly::new(r.coeffs.iter().map(|c| -c).collect());
+        b = primitive(&r.iter().map(|c| -c).collect::<Vec<_>>());
     }
     seq
 }
 
-fn variations(seq: &[Vec<BigInt>], x: &BigRational) -> usize {
+fn int_derivative(p: &[BigInt]) -> Vec<BigInt> {
+    p.iter()
+        .enumerate()
+        .skip(1)
+        .map(|(i, c)| c * BigInt::from(i))
+        .collect()
+}
+
+/// Divide by the (positive) gcd of the coefficients; trailing zeros dropped.
+fn primitive(p: &[BigInt]) -> Vec<BigInt> {
+    let mut v = p.to_vec();
+    while v.last().is_some_and(Zero::is_zero) {
+        v.pop();
+    }
+    let g = v.iter().fold(BigInt::zero(), |acc, c| acc.gcd(c));
+    if g.is_zero() || g.is_one() {
+        v
+    } else {
+        v.into_iter().map(|c| c / &g).collect()
+    }
+}
+
+/// `m·a mod b` for a positive `m` (a power of |lc(b)|): same sign pattern as `a mod b`.
+fn pseudo_remainder(a: &[BigInt], b: &[BigInt]) -> Vec<BigInt> {
+    let db = b.len() - 1;
+    let lb = &b[db];
+    let mut r = a.to_vec();
+    let mut flips = false;
+    while r.len() > db && !r.is_empty() {
+        let dr = r.len() - 1;
+        let lr = r[dr].clone();
+        for c in r.iter_mut() {
+            *c *= lb;
+        }
+        if lb.is_negative() {
+            flips = !flips;
+        }
+        for (i, c) in b.iter().enumerate() {
+            r[dr - db + i] -= &lr * c;
+        }
+        r.pop();
+        while r.last().is_some_and(Zero::is_zero) {
+            r.pop();
+        }
+    }
+    if flips {
+        r.iter().map(|c| -c).collect()
+    } else {
+        r
+    }
+}
+
+/// Whether gcd(p, p′) = 1, decided modulo the prime 2⁶¹ − 1 (a constant gcd there, with the
+/// degree kept, proves a constant gcd over ℚ).
+fn square_free_mod_prime(p: &[BigInt]) -> bool {
+    const PRIME: u64 = (1 << 61) - 1;
+    let prime = BigInt::from(PRIME);
+    let red = |v: &[BigInt]| -> Vec<u64> {
+        let mut out: Vec<u64> = v
+            .iter()
+            .map(|c| c.mod_floor(&prime).to_u64().unwrap_or(0))
+            .collect();
+        while out.last() == Some(&0) {
+            out.pop();
+        }
+        out
+    };
+    let a = red(p);
+    if a.len() != p.len() {
+        return false; // the prime divides the leading coefficient: no conclusion
+    }
+    let mulm = |x: u64, y: u64| ((x as u128 * y as u128) % PRIME as u128) as u64;
+    let inv = |x: u64| {
+        let (mut base, mut e, mut acc) = (x, PRIME - 2, 1u64);
+        while e > 0 {
+            if e & 1 == 1 {
+                acc = mulm(acc, base);
+            }
+            base = mulm(base, base);
+            e >>= 1;
+        }
+        acc
+    };
+    let (mut x, mut y) = (a, red(&int_derivative(p)));
+    while !y.is_empty() {
+        let ly = inv(*y.last().unwrap_or(&1));
+        while x.len() >= y.len() && !x.is_empty() {
+            let f = mulm(*x.last().unwrap_or(&0), ly);
+            let off = x.len() - y.len();
+            for (i, c) in y.iter().enumerate() {
+                x[off + i] = (x[off + i] + PRIME - mulm(f, *c)) % PRIME;
+            }
+            while x.last() == Some(&0) {
+                x.pop();
+            }
+        }
+        std::mem::swap(&mut x, &mut y);
+    }
+    x.len() == 1
+}
+
+fn variations(seq: &[Vec<BigInt>], x: &Dyadic) -> usize {
     let signs: Vec<Ordering> = seq
         .iter()
         .map(|p| sign_at(p, x))
@@ -356,27 +533,26 @@ fn variations(seq: &[Vec<BigInt>], x: &BigRational) -> usize {
 }
 
 /// A power of two strictly greater than every root's modulus (Cauchy's bound).
-fn root_bound(p: &[BigInt]) -> BigRational {
+fn root_bound(p: &[BigInt]) -> Dyadic {
     let lead = p.last().map(|c| c.abs()).unwrap_or_else(BigInt::one);
     let max = p[..p.len().saturating_sub(1)]
         .iter()
         .map(|c| c.abs())
         .max()
         .unwrap_or_default();
-    let ratio = BigRational::new(max, lead) + BigRational::one();
-    let mut b = BigRational::one();
-    while b <= ratio {
-        b *= BigRational::from_integer(2.into());
+    // 1 + max/lead < 2^e  ⇐  lead + max < lead·2^e
+    let mut b = BigInt::one();
+    while &lead * &b <= &lead + &max {
+        b <<= 1;
     }
-    b
+    Dyadic::int(b)
 }
 
-/// Isolate the roots of the square-free `int` in `(lo, hi]` (neither end a root of the
-/// sequence's head except as recorded).
+/// Isolate the roots of the square-free `int` in `(lo, hi]`.
 fn isolate(
     seq: &[Vec<BigInt>],
-    lo: &BigRational,
-    hi: &BigRational,
+    lo: &Dyadic,
+    hi: &Dyadic,
     mult: u32,
     int: &[BigInt],
     out: &mut Vec<RealRoot>,
@@ -385,39 +561,35 @@ fn isolate(
     if count == 0 {
         return;
     }
+    let root = |lo: &Dyadic, hi: &Dyadic| RealRoot {
+        lo: lo.clone(),
+        hi: hi.clone(),
+        multiplicity: mult,
+        factor: int.to_vec(),
+    };
     if sign_at(int, hi) == Ordering::Equal {
-        out.push(RealRoot {
-            lo: hi.clone(),
-            hi: hi.clone(),
-            multiplicity: mult,
-            factor: int.to_vec(),
-        });
+        out.push(root(hi, hi));
         if count > 1 {
-            // The other roots lie strictly below hi; shrink hi to a non-root just below.
-            let mut step = (hi - lo) / BigRational::from_integer(2.into());
+            // The other roots lie strictly below hi; move hi down to a non-root below them.
+            let mut step = Dyadic::sub(hi, lo).half();
             let h = loop {
-                let cand = hi - &step;
+                let cand = Dyadic::sub(hi, &step);
                 if sign_at(int, &cand) != Ordering::Equal
                     && variations(seq, lo) - variations(seq, &cand) == count - 1
                 {
                     break cand;
                 }
-                step /= BigRational::from_integer(2.into());
+                step = step.half();
             };
             isolate(seq, lo, &h, mult, int, out);
         }
         return;
     }
     if count == 1 {
-        out.push(RealRoot {
-            lo: lo.clone(),
-            hi: hi.clone(),
-            multiplicity: mult,
-            factor: int.to_vec(),
-        });
+        out.push(root(lo, hi));
         return;
     }
-    let mid = (lo + hi) / BigRational::from_integer(2.into());
+    let mid = Dyadic::mid(lo, hi);
     isolate(seq, lo, &mid, mult, int, out);
     isolate(seq, &mid, hi, mult, int, out);
 }
@@ -447,7 +619,7 @@ mod tests {
         let want = [-2.5, 0.0, 1.0 / 3.0, 1.0 / 3.0 + 1e-6];
         for (root, w) in roots.iter().zip(want) {
             assert!((root.to_f64() - w).abs() < 1e-9, "{} vs {w}", root.to_f64());
-            assert!(root.lo <= root.hi);
+            assert!(root.lo() <= root.hi());
         }
     }
 

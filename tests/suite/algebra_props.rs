@@ -85,7 +85,7 @@ proptest! {
         let got = p.real_roots_within(&width);
         prop_assert_eq!(got.len(), want.len());
         for (r, (x, m)) in got.iter().zip(&want) {
-            prop_assert!(r.lo <= *x && *x <= r.hi, "{} not in [{}, {}]", x, r.lo, r.hi);
+            prop_assert!(r.lo() <= *x && *x <= r.hi(), "{} not in [{}, {}]", x, r.lo(), r.hi());
             prop_assert!(r.width() <= width);
             prop_assert_eq!(r.multiplicity, *m);
         }
