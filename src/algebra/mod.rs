@@ -9,7 +9,7 @@ pub use float_roots::{
     closed_form_real, companion_roots, compare_methods, quadratic, EigenMethod, RootAgreement,
 };
 pub use poly::{parse_decimal, Monomial, Poly};
-pub use rank::{exact_rank, svd_rank, ExactRankMethod, SvdRank};
+pub use rank::{exact_rank, svd_rank, svd_rank_above, ExactRankMethod, SvdRank};
 pub use sturm::{RealRoot, UPoly};
 
 use num_rational::BigRational;
@@ -17,4 +17,22 @@ use num_rational::BigRational;
 /// A rational `n / d` (panics only on `d == 0`, which callers never pass).
 pub fn rat(n: i64, d: i64) -> BigRational {
     BigRational::new(n.into(), d.into())
+}
+
+/// Units of rounding allowed before a computed quantity counts as zero: the quantities
+/// tested this way come from a few dozen additions and products of the inputs.
+pub const NEGLIGIBLE_ULPS: f64 = 64.0;
+
+/// Whether `value`, computed from terms whose absolute values sum to `magnitude`, is zero
+/// up to rounding (|value| ≤ 64·ε·magnitude). Used to detect exactly degenerate input, never
+/// to accept a noisy result.
+///
+/// # Example
+/// ```
+/// use orthocheck::algebra::negligible;
+/// assert!(negligible(0.1 + 0.2 - 0.3, 0.6));
+/// assert!(!negligible(1e-9, 1.0));
+/// ```
+pub fn negligible(value: f64, magnitude: f64) -> bool {
+    value.abs() <= NEGLIGIBLE_ULPS * f64::EPSILON * magnitude
 }

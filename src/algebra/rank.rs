@@ -155,6 +155,13 @@ pub struct SvdRank {
 /// assert_eq!(svd_rank(&m).rank, 1);
 /// ```
 pub fn svd_rank(m: &DMatrix<f64>) -> SvdRank {
+    svd_rank_above(m, 0.0)
+}
+
+/// Like [`svd_rank`], but singular values up to `noise` (a bound on the Frobenius norm of
+/// the rounding error in the entries) also count as zero: a matrix made only of rounding
+/// noise then has rank 0 instead of full rank.
+pub fn svd_rank_above(m: &DMatrix<f64>, noise: f64) -> SvdRank {
     let (rows, cols) = m.shape();
     if rows == 0 || cols == 0 {
         return SvdRank {
@@ -167,7 +174,7 @@ pub fn svd_rank(m: &DMatrix<f64>) -> SvdRank {
     let mut sv: Vec<f64> = m.clone().singular_values().iter().copied().collect();
     sv.sort_by(|a, b| b.total_cmp(a));
     let smax = sv.first().copied().unwrap_or(0.0);
-    let tol = smax * rows.max(cols) as f64 * f64::EPSILON;
+    let tol = (smax * rows.max(cols) as f64 * f64::EPSILON).max(noise);
     let rank = sv.iter().filter(|&&s| s > tol).count();
     let smin = sv.last().copied().unwrap_or(0.0);
     SvdRank {

@@ -235,3 +235,62 @@ mod tests {
         assert!(c.max_residual < 3.0 * (4.0 * f64::EPSILON).sqrt());
     }
 }
+
+/// The coefficients of eq. p3f3sqr for one frame, from the projected squared lengths
+/// (aᵢ², bᵢ², cᵢ²): F(x, y, z) = x² + y² + z² − 2xy − 2xz − 2yz + K + 2αx + 2βy + 2γz with
+/// x = a², y = b², z = c².
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct FrameCoefficients {
+    /// α = −aᵢ² + bᵢ² + cᵢ².
+    pub alpha: f64,
+    /// β = aᵢ² − bᵢ² + cᵢ².
+    pub beta: f64,
+    /// γ = aᵢ² + bᵢ² − cᵢ².
+    pub gamma: f64,
+    /// K = aᵢ⁴ + bᵢ⁴ + cᵢ⁴ − 2aᵢ²bᵢ² − 2aᵢ²cᵢ² − 2bᵢ²cᵢ² (= −16·area², zero when collinear).
+    pub k: f64,
+    /// aᵢ² + bᵢ² + cᵢ²: the scale against which rounding is judged.
+    pub scale: f64,
+}
+
+impl FrameCoefficients {
+    /// From projected squared lengths of PQ, QR, RP in one frame.
+    ///
+    /// # Example
+    /// ```
+    /// use orthocheck::derivations::twofold::FrameCoefficients;
+    /// // a right triangle 3-4-5 seen face-on: the true squares satisfy F = 0
+    /// let f = FrameCoefficients::new([9.0, 16.0, 25.0]);
+    /// assert_eq!(f.eval(9.0, 16.0, 25.0), 0.0);
+    /// ```
+    pub fn new([a2, b2, c2]: [f64; 3]) -> Self {
+        FrameCoefficients {
+            alpha: -a2 + b2 + c2,
+            beta: a2 - b2 + c2,
+            gamma: a2 + b2 - c2,
+            k: a2 * a2 + b2 * b2 + c2 * c2 - 2.0 * a2 * b2 - 2.0 * a2 * c2 - 2.0 * b2 * c2,
+            scale: a2 + b2 + c2,
+        }
+    }
+
+    /// F(x, y, z).
+    pub fn eval(&self, x: f64, y: f64, z: f64) -> f64 {
+        x * x + y * y + z * z - 2.0 * x * y - 2.0 * x * z - 2.0 * y * z
+            + self.k
+            + 2.0 * self.alpha * x
+            + 2.0 * self.beta * y
+            + 2.0 * self.gamma * z
+    }
+
+    /// The linear equation F_self − F_other = 0 as (coefficients of x, y, z; constant).
+    pub fn difference(&self, other: &FrameCoefficients) -> ([f64; 3], f64) {
+        (
+            [
+                2.0 * (self.alpha - other.alpha),
+                2.0 * (self.beta - other.beta),
+                2.0 * (self.gamma - other.gamma),
+            ],
+            self.k - other.k,
+        )
+    }
+}
