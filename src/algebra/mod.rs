@@ -1,6 +1,7 @@
 //! Exact and floating algebra: polynomials over ℚ, exact root isolation, float roots, rank.
 
 mod float_roots;
+mod newton;
 mod poly;
 mod rank;
 mod sturm;
@@ -8,6 +9,7 @@ mod sturm;
 pub use float_roots::{
     closed_form_real, companion_roots, compare_methods, quadratic, EigenMethod, RootAgreement,
 };
+pub use newton::min_norm_newton;
 pub use poly::{parse_decimal, Monomial, Poly};
 pub use rank::{exact_rank, svd_rank, svd_rank_above, ExactRankMethod, SvdRank};
 pub use sturm::{RealRoot, UPoly};

@@ -52,6 +52,18 @@ impl Printed {
         0.5 * 10f64.powi(-(self.decimals as i32))
     }
 
+    /// Half a unit in the `digits`-th significant digit: the precision of a number printed
+    /// with a fixed count of significant digits and trailing zeros dropped (C's `%g`, C++
+    /// stream defaults), where "4" printed with six digits means 4.00000.
+    pub fn half_unit_significant(&self, digits: u32) -> f64 {
+        let v = self.to_f64().abs();
+        if v == 0.0 {
+            return self.half_unit();
+        }
+        let magnitude = v.log10().floor() as i32;
+        0.5 * 10f64.powi(magnitude - digits as i32 + 1)
+    }
+
     /// The value as `f64`.
     pub fn to_f64(&self) -> f64 {
         self.value.to_f64().unwrap_or(f64::NAN)
@@ -148,6 +160,8 @@ pub enum CaseCheck {
     DofIdentifiability(DofIdentifiabilityCase),
     /// Eq. p3f3sqr and the signed relations.
     TwofoldSquared(TwofoldCase),
+    /// §2's worked example.
+    P3f3Example(P3f3ExampleCase),
 }
 
 /// §2.1 worked examples.
@@ -254,6 +268,78 @@ pub struct PolynomialClaim {
     pub claim: ClaimRef,
     /// The transcription.
     pub printed: String,
+}
+
+/// §2's example.
+#[derive(Clone, Debug, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct P3f3ExampleCase {
+    /// The body table.
+    pub body: BodyTable,
+    /// The figure.
+    pub figure: FigureFrames,
+    /// The printed solutions.
+    pub solutions: PrintedSolutions,
+    /// The feasibility rules, applied to the printed solutions.
+    pub feasibility: ClaimRef,
+    /// Monte Carlo samples of the rounding box.
+    pub rounding_trials: usize,
+    /// Seed.
+    pub seed: u64,
+}
+
+/// A printed edge table: lengths and their squares.
+#[derive(Clone, Debug, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct BodyTable {
+    /// The claim.
+    pub claim: ClaimRef,
+    /// Printed lengths, in the paper's edge order.
+    pub lengths: Vec<Printed>,
+    /// Printed squares.
+    pub squares: Vec<Printed>,
+}
+
+/// Figure coordinates: frames of points, each `[x, y]` as printed.
+#[derive(Clone, Debug, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct FigureFrames {
+    /// The claim.
+    pub claim: ClaimRef,
+    /// `frames[i][j] = [x, y]`.
+    pub frames: Vec<Vec<[Printed; 2]>>,
+    /// Whether the first point of each frame is the shifted origin (exact, not rounded).
+    #[serde(default)]
+    pub origin_exact: bool,
+}
+
+impl FigureFrames {
+    /// Flat coordinates and rounding half-widths.
+    pub fn rounding_box(&self) -> crate::derivations::rounding::RoundingBox {
+        let mut center = Vec::new();
+        let mut half = Vec::new();
+        for frame in &self.frames {
+            for (j, p) in frame.iter().enumerate() {
+                for c in p {
+                    center.push(c.to_f64());
+                    half.push(if j == 0 && self.origin_exact { 0.0 } else { c.half_unit() });
+                }
+            }
+        }
+        crate::derivations::rounding::RoundingBox { center, half }
+    }
+}
+
+/// Printed solutions (squared edges).
+#[derive(Clone, Debug, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct PrintedSolutions {
+    /// The claim.
+    pub claim: ClaimRef,
+    /// Significant digits the program printed (trailing zeros dropped).
+    pub significant_digits: u32,
+    /// The solutions, each in the paper's edge order.
+    pub values: Vec<Vec<Printed>>,
 }
 
 /// Read and validate one case file.
@@ -426,6 +512,27 @@ fn validate(case: &Case, text: &str, path: &Path) -> Result<()> {
                 "check.twofold_squared.polynomial.printed",
                 &c.polynomial.printed,
             )?;
+        }
+        CaseCheck::P3f3Example(c) => {
+            let f = &c.figure.frames;
+            if f.len() != 3 || f.iter().any(|fr| fr.len() != 3) {
+                return err(
+                    "check.p3f3_example.figure.frames",
+                    "needs 3 frames of 3 points".into(),
+                );
+            }
+            if c.body.lengths.len() != 3 || c.body.squares.len() != 3 {
+                return err(
+                    "check.p3f3_example.body.lengths",
+                    "needs 3 lengths and 3 squares".into(),
+                );
+            }
+            if c.solutions.values.len() > 2 || c.solutions.values.iter().any(|v| v.len() != 3) {
+                return err(
+                    "check.p3f3_example.solutions.values",
+                    "at most 2 solutions of 3 squared edges".into(),
+                );
+            }
         }
     }
     Ok(())

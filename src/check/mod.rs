@@ -2,6 +2,7 @@
 //! with what the derivations compute, ending in a [`Verdict`].
 
 mod dof;
+mod p3f3;
 mod twofold;
 
 pub use twofold::{audit as audit_twofold, TwofoldAudit};
@@ -188,5 +189,6 @@ pub fn run_case(case: &Case) -> Result<Vec<ClaimResult>> {
         CaseCheck::DofCount(c) => dof::check_count(&b, c),
         CaseCheck::DofIdentifiability(c) => dof::check_identifiability(&b, c),
         CaseCheck::TwofoldSquared(c) => twofold::check(&b, c),
+        CaseCheck::P3f3Example(c) => p3f3::check_example(&b, c),
     }
 }

@@ -4,5 +4,6 @@
 pub mod dof;
 pub mod p3f3;
 pub mod p3f4;
+pub mod rounding;
 pub mod solver;
 pub mod twofold;

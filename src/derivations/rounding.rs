@@ -1,0 +1,98 @@
+//! Propagating the rounding of printed data: seeded Monte Carlo over the rounding box, and a
+//! witness search for a point of the box that reproduces printed results.
+
+use rand::Rng;
+
+use crate::algebra::min_norm_newton;
+use crate::model::rng;
+
+/// Printed values and their rounding half-widths (0 for values known exactly).
+#[derive(Clone, Debug, PartialEq)]
+pub struct RoundingBox {
+    /// The printed values.
+    pub center: Vec<f64>,
+    /// Half a unit of each value's last printed digit (0 when exact).
+    pub half: Vec<f64>,
+}
+
+impl RoundingBox {
+    /// A uniformly random point of the box.
+    pub fn sample<R: Rng>(&self, g: &mut R) -> Vec<f64> {
+        self.center
+            .iter()
+            .zip(&self.half)
+            .map(|(c, h)| if *h > 0.0 { c + g.random_range(-h..=*h) } else { *c })
+            .collect()
+    }
+
+    /// Largest |x − center| / half over the rounded values (≤ 1 inside the box).
+    pub fn shift_ratio(&self, x: &[f64]) -> f64 {
+        x.iter()
+            .zip(&self.center)
+            .zip(&self.half)
+            .filter(|(_, h)| **h > 0.0)
+            .map(|((x, c), h)| (x - c).abs() / h)
+            .fold(0.0, f64::max)
+    }
+}
+
+/// Evaluate `f` at `trials` seeded uniform points of the box.
+pub fn monte_carlo<T>(b: &RoundingBox, trials: usize, seed: u64, f: impl Fn(&[f64]) -> T) -> Vec<T> {
+    let mut g = rng(seed);
+    (0..trials).map(|_| f(&b.sample(&mut g))).collect()
+}
+
+/// A point of the box where the printed results are reproduced.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Witness {
+    /// The point.
+    pub point: Vec<f64>,
+    /// Largest |residual| there.
+    pub residual: f64,
+    /// Largest shift from the printed values in units of their half-widths (≤ 1: inside).
+    pub shift_ratio: f64,
+}
+
+/// Search the box for a point where `residual` vanishes to `tolerance`, starting from the
+/// printed values and moving only the rounded ones (minimum-norm Gauss–Newton).
+pub fn witness(
+    b: &RoundingBox,
+    residual: &dyn Fn(&[f64]) -> Option<Vec<f64>>,
+    tolerance: f64,
+) -> Option<Witness> {
+    let free: Vec<usize> = (0..b.center.len()).filter(|&i| b.half[i] > 0.0).collect();
+    // unknowns scaled by their half-widths, so the minimum-norm step is a minimum shift in
+    // units of rounding
+    let embed = |u: &[f64]| {
+        let mut x = b.center.clone();
+        for (k, &i) in free.iter().enumerate() {
+            x[i] += u[k] * b.half[i];
+        }
+        x
+    };
+    let f = |u: &[f64]| residual(&embed(u));
+    let (u, r) = min_norm_newton(&f, &vec![0.0; free.len()], tolerance, 60)?;
+    let point = embed(&u);
+    Some(Witness {
+        shift_ratio: b.shift_ratio(&point),
+        residual: r,
+        point,
+    })
+}
+
+/// The `q`-quantile (0 ≤ q ≤ 1) of sorted finite data, by nearest rank.
+pub fn quantile(sorted: &[f64], q: f64) -> Option<f64> {
+    if sorted.is_empty() {
+        return None;
+    }
+    let i = ((q * (sorted.len() - 1) as f64).round() as usize).min(sorted.len() - 1);
+    Some(sorted[i])
+}
+
+/// Fraction of sorted data not above `x` (the percentile rank of `x`, in [0, 1]).
+pub fn rank_of(sorted: &[f64], x: f64) -> f64 {
+    if sorted.is_empty() {
+        return 0.0;
+    }
+    sorted.partition_point(|v| *v <= x) as f64 / sorted.len() as f64
+}
