@@ -7,6 +7,7 @@ pub mod cases;
 pub mod check;
 pub mod derivations;
 pub mod error;
+pub mod input;
 pub mod model;
 pub mod numfmt;
 pub mod report;

@@ -1,9 +1,15 @@
 //! The `orthocheck` command line: parses arguments, calls the library, maps errors to exit codes.
 
-use std::path::PathBuf;
+use std::io::{IsTerminal, Write as _};
+use std::path::{Path, PathBuf};
 use std::process::ExitCode;
+use std::sync::atomic::{AtomicUsize, Ordering};
 
 use clap::{Parser, Subcommand, ValueEnum};
+use orthocheck::derivations::noise::LevelSummary;
+use orthocheck::derivations::solver::{solve_tracks, Method};
+use orthocheck::input::{load_tracks, tracks_to_csv, tracks_to_yaml, PointOrder};
+use orthocheck::model::{rng, NoiseModel, Scene};
 use orthocheck::{cases, check, derivations, report, Error};
 
 #[derive(Parser)]
@@ -63,12 +69,89 @@ enum Command {
         #[arg(long)]
         json: bool,
     },
+    /// Recover the squared edges (and the body) from a tracks file.
+    Solve {
+        /// Tracks: YAML (`frames:` lists of [x, y], optional `points:`) or CSV
+        /// (`frame,point,x,y`).
+        #[arg(long)]
+        input: PathBuf,
+        /// Solver; `auto` picks from the number of points and frames.
+        #[arg(long, value_enum, default_value = "auto")]
+        method: MethodArg,
+        /// JSON output.
+        #[arg(long)]
+        json: bool,
+    },
+    /// Run a noise study of a paper case with your own levels, trials and seed.
+    Noise {
+        /// The noise case's id (e.g. ex2-noise, ex3-noise).
+        #[arg(long)]
+        case: String,
+        /// Relative error levels ε, comma-separated (default: the case's).
+        #[arg(long, value_delimiter = ',')]
+        levels: Vec<f64>,
+        /// Trials per level and model (default: the case's).
+        #[arg(long)]
+        trials: Option<usize>,
+        /// Seed (default: the case's).
+        #[arg(long)]
+        seed: Option<u64>,
+        /// Noise model (default: both).
+        #[arg(long, value_enum)]
+        model: Option<ModelArg>,
+        /// Folder of case files.
+        #[arg(long, default_value = "paper_cases")]
+        cases: PathBuf,
+        /// JSON output.
+        #[arg(long)]
+        json: bool,
+    },
+    /// Write a tracks file of a seeded random scene, to try the solvers on.
+    Synth {
+        /// Number of points.
+        #[arg(long)]
+        points: usize,
+        /// Number of frames.
+        #[arg(long)]
+        frames: usize,
+        /// Seed.
+        #[arg(long)]
+        seed: u64,
+        /// Relative error up to ε on every image coordinate.
+        #[arg(long)]
+        noise: Option<f64>,
+        /// Output format.
+        #[arg(long, value_enum, default_value = "yaml")]
+        format: FormatArg,
+        /// Write to this file (refused if it exists); standard output otherwise.
+        #[arg(long)]
+        out: Option<PathBuf>,
+    },
 }
 
 #[derive(Clone, Copy, ValueEnum)]
 enum AuditId {
     /// Eq. p3f3sqr: the twofold squaring of the signed relations.
     TwofoldSquared,
+}
+
+#[derive(Clone, Copy, ValueEnum)]
+enum MethodArg {
+    Auto,
+    P3f3,
+    P3f4,
+}
+
+#[derive(Clone, Copy, ValueEnum)]
+enum ModelArg {
+    RelativeCoordinate,
+    RelativeLength,
+}
+
+#[derive(Clone, Copy, ValueEnum)]
+enum FormatArg {
+    Yaml,
+    Csv,
 }
 
 fn exit_code(e: &Error) -> u8 {
@@ -144,8 +227,152 @@ fn run(cli: Cli) -> Result<(), Error> {
                 }
             }
         },
+        Command::Solve {
+            input,
+            method,
+            json,
+        } => {
+            let tracks = load_tracks(&input, PointOrder::ByName)?;
+            let method = match method {
+                MethodArg::Auto => Method::Auto,
+                MethodArg::P3f3 => Method::P3f3,
+                MethodArg::P3f4 => Method::P3f4,
+            };
+            let solved = solve_tracks(&tracks, method)?;
+            if json {
+                println!("{}", to_json(&report::solve_json(&solved)));
+            } else {
+                print!("{}", report::solve_text(&solved));
+            }
+        }
+        Command::Noise {
+            case,
+            levels,
+            trials,
+            seed,
+            model,
+            cases,
+            json,
+        } => {
+            let summaries = noise(&case, &levels, trials, seed, model, &cases)?;
+            if json {
+                println!("{}", to_json(&summaries));
+            } else {
+                print!("{}", report::noise_text(&case, &summaries));
+            }
+        }
+        Command::Synth {
+            points,
+            frames,
+            seed,
+            noise,
+            format,
+            out,
+        } => {
+            if points == 0 || frames == 0 {
+                return Err(Error::InvalidInput(
+                    "--points and --frames must be at least 1".into(),
+                ));
+            }
+            if let Some(e) = noise.filter(|e| !(e.is_finite() && *e >= 0.0)) {
+                return Err(Error::InvalidInput(format!(
+                    "--noise {e}: must be a finite ε ≥ 0"
+                )));
+            }
+            let scene = Scene::random(points, frames, seed);
+            let mut tracks = scene.tracks();
+            if let Some(eps) = noise {
+                // the noise stream is separate from the scene's, so --noise 0 gives the scene
+                tracks = NoiseModel::RelativeCoordinate { eps }
+                    .perturb_tracks(&tracks, &mut rng(seed.wrapping_add(1)));
+            }
+            let header = report::synth_header(&scene, seed, noise);
+            let body = match format {
+                FormatArg::Yaml => tracks_to_yaml(&tracks),
+                FormatArg::Csv => tracks_to_csv(&tracks),
+            };
+            let text = format!("{header}{body}");
+            match out {
+                Some(path) => write_new(&path, &text)?,
+                None => print!("{text}"),
+            }
+        }
     }
     Ok(())
+}
+
+/// Run the noise study of case `id` with the given overrides, one level and model at a time.
+fn noise(
+    id: &str,
+    levels: &[f64],
+    trials: Option<usize>,
+    seed: Option<u64>,
+    model: Option<ModelArg>,
+    dir: &Path,
+) -> Result<Vec<LevelSummary>, Error> {
+    let all = cases::load_all(dir)?;
+    let Some(case) = all.iter().find(|c| c.id == id) else {
+        return Err(Error::InvalidInput(format!(
+            "no case `{id}` in {}",
+            dir.display()
+        )));
+    };
+    let cases::CaseCheck::NoiseStudy(nc) = &case.check else {
+        return Err(Error::InvalidInput(format!(
+            "case `{id}` is not a noise study"
+        )));
+    };
+    let mut study = check::study_of(nc)?;
+    study.trials = trials.unwrap_or(study.trials);
+    study.seed = seed.unwrap_or(study.seed);
+    let levels: Vec<f64> = if levels.is_empty() {
+        nc.levels.iter().map(|l| l.level.to_f64()).collect()
+    } else {
+        levels.to_vec()
+    };
+    if let Some(e) = levels.iter().find(|e| !(e.is_finite() && **e >= 0.0)) {
+        return Err(Error::InvalidInput(format!(
+            "--levels: {e} is not a finite ε ≥ 0"
+        )));
+    }
+    let keep = |m: usize| match model {
+        None => true,
+        Some(ModelArg::RelativeCoordinate) => m == 0,
+        Some(ModelArg::RelativeLength) => m == 1,
+    };
+    let runs = (0..2).filter(|m| keep(*m)).count() * levels.len();
+    let total = runs * study.trials;
+    let done = AtomicUsize::new(0);
+    let show = std::io::stderr().is_terminal();
+    let progress = |n: usize| {
+        let d = done.fetch_add(n, Ordering::Relaxed) + n;
+        if show {
+            eprint!("\r{d}/{total} trials");
+            let _ = std::io::stderr().flush();
+        }
+    };
+    let out = derivations::noise::run_levels(&study, &levels, keep, &progress)
+        .iter()
+        .map(|r| r.summary())
+        .collect();
+    if show {
+        eprintln!();
+    }
+    Ok(out)
+}
+
+/// Write a file that must not exist yet: a user's file is never overwritten.
+fn write_new(path: &Path, text: &str) -> Result<(), Error> {
+    let io = |source| Error::Io {
+        path: path.to_path_buf(),
+        source,
+    };
+    let mut f = std::fs::OpenOptions::new()
+        .write(true)
+        .create_new(true)
+        .open(path)
+        .map_err(io)?;
+    f.write_all(text.as_bytes()).map_err(io)
 }
 
 fn to_json<T: serde::Serialize>(v: &T) -> String {

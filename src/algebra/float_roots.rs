@@ -17,11 +17,20 @@ use num_complex::Complex64;
 /// assert!((r[0].re - 1e-8).abs() < 1e-22);
 /// ```
 pub fn quadratic(a: f64, b: f64, c: f64) -> Vec<Complex64> {
+    let (r, n) = quadratic_roots(a, b, c);
+    r[..n].to_vec()
+}
+
+/// [`quadratic`] without allocation: the roots (real ones ascending, complex ones with the
+/// negative imaginary part first) and how many there are (0, 1 or 2).
+#[inline]
+pub fn quadratic_roots(a: f64, b: f64, c: f64) -> ([Complex64; 2], usize) {
+    let zero = Complex64::new(0.0, 0.0);
     if a == 0.0 {
         return if b == 0.0 {
-            Vec::new()
+            ([zero; 2], 0)
         } else {
-            vec![Complex64::new(-c / b, 0.0)]
+            ([Complex64::new(-c / b, 0.0), zero], 1)
         };
     }
     let disc = b * b - 4.0 * a * c;
@@ -30,15 +39,15 @@ pub fn quadratic(a: f64, b: f64, c: f64) -> Vec<Complex64> {
         let q = -0.5 * (b + b.signum() * sq);
         if q == 0.0 {
             // b = 0 and c = 0: a double root at zero.
-            return vec![Complex64::new(0.0, 0.0), Complex64::new(0.0, 0.0)];
+            return ([zero; 2], 2);
         }
         let (r1, r2) = (q / a, c / q);
         let (lo, hi) = if r1 <= r2 { (r1, r2) } else { (r2, r1) };
-        vec![Complex64::new(lo, 0.0), Complex64::new(hi, 0.0)]
+        ([Complex64::new(lo, 0.0), Complex64::new(hi, 0.0)], 2)
     } else {
         let re = -b / (2.0 * a);
         let im = (-disc).sqrt() / (2.0 * a.abs());
-        vec![Complex64::new(re, -im), Complex64::new(re, im)]
+        ([Complex64::new(re, -im), Complex64::new(re, im)], 2)
     }
 }
 

@@ -7,7 +7,8 @@ mod rank;
 mod sturm;
 
 pub use float_roots::{
-    closed_form_real, companion_roots, compare_methods, quadratic, EigenMethod, RootAgreement,
+    closed_form_real, companion_roots, compare_methods, quadratic, quadratic_roots, EigenMethod,
+    RootAgreement,
 };
 pub use newton::min_norm_newton;
 pub use poly::{parse_decimal, Monomial, Poly};
@@ -35,6 +36,7 @@ pub const NEGLIGIBLE_ULPS: f64 = 64.0;
 /// assert!(negligible(0.1 + 0.2 - 0.3, 0.6));
 /// assert!(!negligible(1e-9, 1.0));
 /// ```
+#[inline]
 pub fn negligible(value: f64, magnitude: f64) -> bool {
     value.abs() <= NEGLIGIBLE_ULPS * f64::EPSILON * magnitude
 }

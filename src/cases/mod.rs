@@ -162,6 +162,120 @@ pub enum CaseCheck {
     TwofoldSquared(TwofoldCase),
     /// §2's worked example.
     P3f3Example(P3f3ExampleCase),
+    /// §2.2's solution count over generic and degenerate scenes.
+    P3f3Census(CensusCase),
+    /// §3's uniqueness over generic and special motions.
+    P3f4Census(CensusCase),
+    /// A noise study (§2, §3).
+    NoiseStudy(NoiseStudyCase),
+}
+
+/// A noise study as the paper reports it.
+#[derive(Clone, Debug, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct NoiseStudyCase {
+    /// The solver the paper used.
+    pub solver: crate::derivations::noise::StudySolver,
+    /// The body.
+    pub body: NoiseBody,
+    /// Frames per trial.
+    pub frames: usize,
+    /// Trials per level and noise model.
+    pub trials: usize,
+    /// Seed.
+    pub seed: u64,
+    /// The levels the paper reports.
+    pub levels: Vec<NoiseLevel>,
+}
+
+/// The body of a noise study: printed lengths (and squares, when printed).
+#[derive(Clone, Debug, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct NoiseBody {
+    /// The claim about the printed body, if any.
+    #[serde(default)]
+    pub claim: Option<ClaimRef>,
+    /// Printed lengths PQ, QR, RP.
+    pub lengths: Vec<Printed>,
+    /// Printed squares, if printed.
+    #[serde(default)]
+    pub squares: Vec<Printed>,
+    /// Significant digits the program printed the squares with.
+    #[serde(default)]
+    pub significant_digits: Option<u32>,
+}
+
+/// What the paper's symbols say the printed values are.
+#[derive(Clone, Copy, Debug, Deserialize, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Quantity {
+    /// a², b², c².
+    Squares,
+    /// a, b, c.
+    Lengths,
+}
+
+/// One noise level as reported.
+#[derive(Clone, Debug, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct NoiseLevel {
+    /// The claim.
+    pub claim: ClaimRef,
+    /// ε as printed ("up to 0.1 %" is "0.001").
+    pub level: Printed,
+    /// What the printed symbols say the values are.
+    pub labelled_as: Quantity,
+    /// The printed run's solutions; the first is the one compared with the truth.
+    pub printed: Vec<Vec<Printed>>,
+    /// A numeric statement about the errors, if the paper makes one.
+    #[serde(default)]
+    pub statement: Option<Statement>,
+}
+
+/// "error below 0.2 %", "deviates more than 15 %", "average performance within 20 %".
+#[derive(Clone, Debug, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct Statement {
+    /// Whether it is about the printed example or about the mean over trials.
+    pub about: StatementSubject,
+    /// The bound is an upper one ("below") or a lower one ("above").
+    pub direction: Direction,
+    /// The bound as a fraction ("0.002" for 0.2 %).
+    pub bound: Printed,
+}
+
+/// The subject of a statement.
+#[derive(Clone, Copy, Debug, Deserialize, PartialEq, Eq)]
+#[serde(rename_all = "snake_case")]
+pub enum StatementSubject {
+    /// The printed run.
+    Example,
+    /// The mean error over all trials.
+    TrialMean,
+}
+
+/// Below or above.
+#[derive(Clone, Copy, Debug, Deserialize, PartialEq, Eq)]
+#[serde(rename_all = "snake_case")]
+pub enum Direction {
+    /// The error is below the bound.
+    Below,
+    /// The error is above the bound.
+    Above,
+}
+
+/// A claim decided over seeded random scenes.
+#[derive(Clone, Debug, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct CensusCase {
+    /// The claims decided.
+    pub claims: Vec<ClaimRef>,
+    /// Frames per scene.
+    pub frames: usize,
+    /// Scenes.
+    pub trials: usize,
+    /// Seed.
+    pub seed: u64,
 }
 
 /// §2.1 worked examples.
@@ -322,7 +436,11 @@ impl FigureFrames {
             for (j, p) in frame.iter().enumerate() {
                 for c in p {
                     center.push(c.to_f64());
-                    half.push(if j == 0 && self.origin_exact { 0.0 } else { c.half_unit() });
+                    half.push(if j == 0 && self.origin_exact {
+                        0.0
+                    } else {
+                        c.half_unit()
+                    });
                 }
             }
         }
@@ -512,6 +630,53 @@ fn validate(case: &Case, text: &str, path: &Path) -> Result<()> {
                 "check.twofold_squared.polynomial.printed",
                 &c.polynomial.printed,
             )?;
+        }
+        CaseCheck::NoiseStudy(c) => {
+            if c.body.lengths.len() != 3
+                || !(c.body.squares.is_empty() || c.body.squares.len() == 3)
+            {
+                return err(
+                    "check.noise_study.body.lengths",
+                    "needs 3 lengths (and 3 squares if any)".into(),
+                );
+            }
+            let needed = match c.solver {
+                crate::derivations::noise::StudySolver::P3f3 => c.frames == 3,
+                crate::derivations::noise::StudySolver::P3f4 => c.frames >= 4,
+            };
+            if !needed {
+                return err(
+                    "check.noise_study.frames",
+                    "p3f3 needs 3 frames, p3f4 at least 4".into(),
+                );
+            }
+            for (i, l) in c.levels.iter().enumerate() {
+                if l.printed.is_empty() || l.printed.iter().any(|p| p.len() != 3) {
+                    return err(
+                        &format!("check.noise_study.levels[{i}].printed"),
+                        "needs solutions of 3 values".into(),
+                    );
+                }
+            }
+        }
+        CaseCheck::P3f3Census(c) | CaseCheck::P3f4Census(c) => {
+            if c.trials == 0 || c.claims.is_empty() {
+                return err("check", "needs at least one claim and one trial".into());
+            }
+            let needed = if matches!(case.check, CaseCheck::P3f3Census(_)) {
+                3
+            } else {
+                4
+            };
+            if c.frames < needed || (needed == 3 && c.frames != 3) {
+                return err(
+                    "check",
+                    format!(
+                        "frames must be {}",
+                        if needed == 3 { "3" } else { "at least 4" }
+                    ),
+                );
+            }
         }
         CaseCheck::P3f3Example(c) => {
             let f = &c.figure.frames;

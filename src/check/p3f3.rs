@@ -4,9 +4,7 @@ use num_rational::BigRational;
 
 use super::{ClaimResult, Evidence, ResultBuilder, Tolerance, Verdict};
 use crate::cases::{P3f3ExampleCase, Printed};
-use crate::derivations::p3f3::{
-    match_solutions, real_solutions_from_coordinates, validate,
-};
+use crate::derivations::p3f3::{match_solutions, real_solutions_from_coordinates, validate};
 use crate::derivations::rounding::{monte_carlo, quantile, witness, RoundingBox};
 use crate::error::Result;
 use crate::numfmt::{below, sig, sig_list};
@@ -37,7 +35,11 @@ fn violation(s: &[f64; 3], proj: &[[f64; 3]]) -> Option<String> {
         }
         for (f, p) in proj.iter().enumerate() {
             if s[e] < p[e] {
-                return Some(format!("{} shorter than its projection in frame {}", names[e], f + 1));
+                return Some(format!(
+                    "{} shorter than its projection in frame {}",
+                    names[e],
+                    f + 1
+                ));
             }
         }
     }
@@ -57,7 +59,11 @@ pub(super) fn check_example(b: &ResultBuilder, case: &P3f3ExampleCase) -> Result
     out.push(b.result(
         &case.body.claim,
         None,
-        if sq_ok { Verdict::Reproduced } else { Verdict::Contradicted },
+        if sq_ok {
+            Verdict::Reproduced
+        } else {
+            Verdict::Contradicted
+        },
         format!(
             "lengths {}, squares {}",
             join(&case.body.lengths),
@@ -72,7 +78,9 @@ pub(super) fn check_example(b: &ResultBuilder, case: &P3f3ExampleCase) -> Result
                 .collect::<Vec<_>>()
                 .join(", ")
         ),
-        Some(Tolerance::exact("exact rational squares of the printed digits")),
+        Some(Tolerance::exact(
+            "exact rational squares of the printed digits",
+        )),
         Evidence::new("exact arithmetic on the printed digits"),
     ));
 
@@ -151,9 +159,16 @@ pub(super) fn check_example(b: &ResultBuilder, case: &P3f3ExampleCase) -> Result
     )
     .with(
         "roots at the printed coordinates",
-        at_printed.iter().map(|s| triple(s)).collect::<Vec<_>>().join(", "),
+        at_printed
+            .iter()
+            .map(|s| triple(s))
+            .collect::<Vec<_>>()
+            .join(", "),
     )
-    .with("printed precision", format!("{digits} significant digits, trailing zeros dropped"));
+    .with(
+        "printed precision",
+        format!("{digits} significant digits, trailing zeros dropped"),
+    );
     match &wit {
         Some(w) => {
             ev = ev
@@ -169,10 +184,16 @@ pub(super) fn check_example(b: &ResultBuilder, case: &P3f3ExampleCase) -> Result
                 "witness: exact c² roots (Sturm, width 1e-30)",
                 v.exact.as_deref().map_or("singular".into(), sig_list),
             )
-            .with("witness: largest relative disagreement of routes", below(v.max_relative_disagreement));
+            .with(
+                "witness: largest relative disagreement of routes",
+                below(v.max_relative_disagreement),
+            );
     }
     ev = ev
-        .with("Monte Carlo samples (seed)", format!("{} ({})", case.rounding_trials, case.seed))
+        .with(
+            "Monte Carlo samples (seed)",
+            format!("{} ({})", case.rounding_trials, case.seed),
+        )
         .with("samples with two real roots", with_roots.len());
     for (k, t) in targets.iter().enumerate() {
         let s = [0, 1, 2].map(|e| spread(k, e));
@@ -255,12 +276,16 @@ pub(super) fn check_example(b: &ResultBuilder, case: &P3f3ExampleCase) -> Result
         Some(
             projections(x)
                 .iter()
-                .map(|p| crate::derivations::twofold::FrameCoefficients::new(*p).eval(t[0], t[1], t[2]))
+                .map(|p| {
+                    crate::derivations::twofold::FrameCoefficients::new(*p).eval(t[0], t[1], t[2])
+                })
                 .collect(),
         )
     };
     let body_wit = witness(&bx, &body_residual, 1e-9);
-    let fits = body_wit.as_ref().is_some_and(|w| w.shift_ratio <= 1.0 && w.residual <= 1e-9);
+    let fits = body_wit
+        .as_ref()
+        .is_some_and(|w| w.shift_ratio <= 1.0 && w.residual <= 1e-9);
     out.push(b.result(
         &case.figure.claim,
         None,
@@ -294,7 +319,13 @@ pub(super) fn check_example(b: &ResultBuilder, case: &P3f3ExampleCase) -> Result
     let all_feasible = printed_checks.iter().all(|(_, v)| v.is_none());
     let recomputed: Vec<String> = at_printed
         .iter()
-        .map(|s| format!("{}: {}", triple(s), violation(s, &proj).unwrap_or_else(|| "feasible".into())))
+        .map(|s| {
+            format!(
+                "{}: {}",
+                triple(s),
+                violation(s, &proj).unwrap_or_else(|| "feasible".into())
+            )
+        })
         .collect();
     out.push(b.result(
         &case.feasibility,
@@ -319,5 +350,82 @@ pub(super) fn check_example(b: &ResultBuilder, case: &P3f3ExampleCase) -> Result
 }
 
 fn join(v: &[Printed]) -> String {
-    v.iter().map(|p| p.text.clone()).collect::<Vec<_>>().join(", ")
+    v.iter()
+        .map(|p| p.text.clone())
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+pub(super) fn check_census(
+    b: &ResultBuilder,
+    case: &crate::cases::CensusCase,
+) -> Result<Vec<ClaimResult>> {
+    use crate::derivations::solver::Degenerate;
+    let c = crate::derivations::p3f3::census(case.trials, case.seed);
+    let infinitely = matches!(c.collinear, Some(Degenerate::Collinear))
+        && matches!(c.identical_frames, Some(Degenerate::IdenticalFrames { .. }));
+    let ok = infinitely && c.truth_found == c.trials;
+    let ev = Evidence::new("p3f3 on seeded random scenes (uniform rotations, points in the unit cube), plus a collinear body and two frames related by an in-plane rotation")
+        .with("scenes (seed)", format!("{} ({})", c.trials, c.seed))
+        .with("scenes with 0 / 1 / 2 feasible edge solutions", format!("{} / {} / {}", c.feasible_counts[0], c.feasible_counts[1], c.feasible_counts[2]))
+        .with("true squares among the feasible ones", format!("{} of {}", c.truth_found, c.trials))
+        .with("largest relative error of the true solution", below(c.max_truth_error))
+        .with("collinear body", c.collinear.map_or("no degenerate outcome".into(), |d| d.to_string()))
+        .with("frames identical up to an in-plane rotation", c.identical_frames.map_or("no degenerate outcome".into(), |d| d.to_string()))
+        .with(
+            "structure-and-motion solutions per edge solution (up to the global mirror reversal)",
+            format!("{:?}: each frame's depth pattern may flip (a planar triangle turns onto its mirror image), so 2^k = 8 motions per edge solution, 4 up to the mirror; with two edge solutions up to 16", c.motions_per_edge_solution),
+        );
+    Ok(case
+        .claims
+        .iter()
+        .map(|claim| {
+            b.result(
+                claim,
+                None,
+                if ok { Verdict::Reproduced } else { Verdict::Contradicted },
+                "none, one or two solutions; infinitely many if collinear or two frames identical up to rotation".into(),
+                format!(
+                    "0/1/2 feasible edge solutions in {}/{}/{} scenes, never more; the degenerate scenes give infinitely many: {infinitely}",
+                    c.feasible_counts[0], c.feasible_counts[1], c.feasible_counts[2]
+                ),
+                Some(Tolerance::exact("counts of roots; degeneracy detected at rounding level")),
+                ev.clone(),
+            )
+        })
+        .collect())
+}
+
+pub(super) fn check_p3f4_census(
+    b: &ResultBuilder,
+    case: &crate::cases::CensusCase,
+) -> Result<Vec<ClaimResult>> {
+    let c = crate::derivations::p3f4::census(case.trials, case.frames, case.seed);
+    let ok = c.unique == c.trials && c.truth_found == c.trials && c.viewing_axis_rank < 3;
+    let ev = Evidence::new("p3f4 (frame differences, linear in a², b², c²) on seeded random scenes, plus rotations about the viewing axis and about one fixed generic axis")
+        .with("scenes, frames (seed)", format!("{}, {} ({})", c.trials, c.frames, c.seed))
+        .with("unique solutions (rank 3)", c.unique)
+        .with("equal to the truth", c.truth_found)
+        .with("largest relative error", below(c.max_truth_error))
+        .with("median condition number", sig(c.median_condition))
+        .with("rank, rotations about the viewing axis only", c.viewing_axis_rank)
+        .with("rank, rotations about one fixed generic axis", c.fixed_axis_rank);
+    Ok(case
+        .claims
+        .iter()
+        .map(|claim| {
+            b.result(
+                claim,
+                Some("four-frames").filter(|_| claim.claim == "abstract-linear"),
+                if ok { Verdict::Reproduced } else { Verdict::Contradicted },
+                "linear in a², b², c² with a unique solution unless the motion is special".into(),
+                format!(
+                    "unique and exact in {} of {} generic scenes; rank {} for rotations about the viewing axis, {} about a fixed generic axis",
+                    c.truth_found, c.trials, c.viewing_axis_rank, c.fixed_axis_rank
+                ),
+                Some(Tolerance::exact("numerical rank with the rounding-noise floor of the entries")),
+                ev.clone(),
+            )
+        })
+        .collect())
 }

@@ -2,6 +2,7 @@
 //! read files, print, or know what the paper printed.
 
 pub mod dof;
+pub mod noise;
 pub mod p3f3;
 pub mod p3f4;
 pub mod rounding;

@@ -21,7 +21,13 @@ impl RoundingBox {
         self.center
             .iter()
             .zip(&self.half)
-            .map(|(c, h)| if *h > 0.0 { c + g.random_range(-h..=*h) } else { *c })
+            .map(|(c, h)| {
+                if *h > 0.0 {
+                    c + g.random_range(-h..=*h)
+                } else {
+                    *c
+                }
+            })
             .collect()
     }
 
@@ -37,7 +43,12 @@ impl RoundingBox {
 }
 
 /// Evaluate `f` at `trials` seeded uniform points of the box.
-pub fn monte_carlo<T>(b: &RoundingBox, trials: usize, seed: u64, f: impl Fn(&[f64]) -> T) -> Vec<T> {
+pub fn monte_carlo<T>(
+    b: &RoundingBox,
+    trials: usize,
+    seed: u64,
+    f: impl Fn(&[f64]) -> T,
+) -> Vec<T> {
     let mut g = rng(seed);
     (0..trials).map(|_| f(&b.sample(&mut g))).collect()
 }

@@ -172,6 +172,9 @@ pub struct Solution {
     pub feasibility: Feasibility,
     /// Largest equation residual, relative to the squared scale of the solution.
     pub residual: f64,
+    /// First-order bound on the rounding error of the squared edges (absolute), where the
+    /// solver can give one; infinite at a double root.
+    pub error_bound: Option<f64>,
 }
 
 /// Input the paper's route cannot solve uniquely (or at all).
@@ -252,6 +255,153 @@ pub struct SolverOutput {
 impl SolverOutput {
     /// The feasible solutions.
     pub fn feasible(&self) -> impl Iterator<Item = &Solution> {
-        self.solutions.iter().filter(|s| s.feasibility.is_feasible())
+        self.solutions
+            .iter()
+            .filter(|s| s.feasibility.is_feasible())
     }
+}
+
+/// Which solver `solve` runs.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Method {
+    /// Pick from the number of points and frames.
+    Auto,
+    /// §2.2: three points, three frames.
+    P3f3,
+    /// §3: three points, four or more frames.
+    P3f4,
+}
+
+impl Method {
+    /// The method for `p` points in `k` frames, and why; an error when no solver applies.
+    ///
+    /// # Example
+    /// ```
+    /// use orthocheck::derivations::solver::Method;
+    /// assert_eq!(Method::Auto.resolve(3, 5).unwrap().0, Method::P3f4);
+    /// assert!(Method::Auto.resolve(3, 2).is_err());
+    /// ```
+    pub fn resolve(self, p: usize, k: usize) -> Result<(Method, String)> {
+        let auto = match (p, k) {
+            (3, 3) => Ok((
+                Method::P3f3,
+                "3 points in 3 frames: the closed form of §2.2",
+            )),
+            (3, k) if k >= 4 => Ok((
+                Method::P3f4,
+                "3 points in 4 or more frames: the linear system of §3 (least squares beyond 4)",
+            )),
+            (_, k) if k < 3 => Err(format!(
+                "{k} frame(s): at least 3 are needed (two frames never determine the body, §5)"
+            )),
+            (p, _) if p < 3 => Err(format!("{p} point(s): at least 3 are needed")),
+            _ => Err(format!("no solver for {p} points in {k} frames yet")),
+        };
+        match self {
+            Method::Auto => auto
+                .map(|(m, why)| (m, why.to_string()))
+                .map_err(Error::InvalidInput),
+            m => {
+                let fits = match m {
+                    Method::P3f3 => p == 3 && k == 3,
+                    Method::P3f4 => p == 3 && k >= 4,
+                    Method::Auto => true,
+                };
+                if fits {
+                    Ok((m, "chosen on the command line".into()))
+                } else {
+                    Err(Error::InvalidInput(format!(
+                        "{} does not apply to {p} points in {k} frames",
+                        m.name()
+                    )))
+                }
+            }
+        }
+    }
+
+    /// The method's name.
+    pub fn name(self) -> &'static str {
+        match self {
+            Method::Auto => "auto",
+            Method::P3f3 => "p3f3",
+            Method::P3f4 => "p3f4",
+        }
+    }
+}
+
+/// The 3-D body behind one feasible solution, where the solver recovers it.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Structure {
+    /// The points in frame 1's camera coordinates, the first at the origin.
+    pub points: Vec<[f64; 3]>,
+    /// Structure-and-motion solutions behind this edge solution that reproject (depth-sign
+    /// combinations of the later frames; the global mirror reversal doubles this count).
+    pub motions: usize,
+    /// Reprojection error of the best of them, relative to the largest edge (noisy tracks
+    /// reproject only approximately, and then `motions` may be 0).
+    pub reprojection_error: f64,
+}
+
+/// What [`solve_tracks`] returns.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Solved {
+    /// The solver's output.
+    #[serde(flatten)]
+    pub output: SolverOutput,
+    /// Why this method.
+    pub why: String,
+    /// Per solution: the recovered body, for feasible p3f3 solutions.
+    pub structures: Vec<Option<Structure>>,
+}
+
+/// Reprojection errors at most this (relative to the largest edge) count as exact: the
+/// reconstruction is computed from rounded square roots of differences of squares.
+pub const REPROJECTION_EXACT: f64 = 1e-6;
+
+/// Solve tracks with `method` (resolved by [`Method::resolve`]), and recover the body behind
+/// every feasible three-point solution.
+///
+/// # Example
+/// ```
+/// use orthocheck::derivations::solver::{solve_tracks, Method};
+/// let scene = orthocheck::model::Scene::random(3, 4, 2);
+/// let s = solve_tracks(&scene.tracks(), Method::Auto).unwrap();
+/// assert_eq!(s.output.method, "p3f4");
+/// assert_eq!(s.output.feasible().count(), 1);
+/// ```
+pub fn solve_tracks(tracks: &Tracks, method: Method) -> Result<Solved> {
+    let (m, why) = method.resolve(tracks.points(), tracks.frames.len())?;
+    let input = SquaredLengths::from_tracks(tracks);
+    let output = match m {
+        Method::P3f3 => super::p3f3::solve(&input)?,
+        Method::P3f4 | Method::Auto => super::p3f4::solve(&input)?,
+    };
+    let structures = output
+        .solutions
+        .iter()
+        .map(|s| {
+            if !s.feasibility.is_feasible() || s.squared_edges.len() != 3 {
+                return Ok(None);
+            }
+            let sq = [s.squared_edges[0], s.squared_edges[1], s.squared_edges[2]];
+            let recs = super::p3f3::reconstructions(tracks, &sq)?;
+            let best = recs
+                .iter()
+                .min_by(|a, b| a.reprojection_error.total_cmp(&b.reprojection_error));
+            Ok(best.map(|r| Structure {
+                points: r.points.iter().map(|p| [p.x, p.y, p.z]).collect(),
+                motions: recs
+                    .iter()
+                    .filter(|r| r.reprojection_error <= REPROJECTION_EXACT)
+                    .count(),
+                reprojection_error: r.reprojection_error,
+            }))
+        })
+        .collect::<Result<_>>()?;
+    Ok(Solved {
+        output,
+        why,
+        structures,
+    })
 }

@@ -263,6 +263,7 @@ impl FrameCoefficients {
     /// let f = FrameCoefficients::new([9.0, 16.0, 25.0]);
     /// assert_eq!(f.eval(9.0, 16.0, 25.0), 0.0);
     /// ```
+    #[inline]
     pub fn new([a2, b2, c2]: [f64; 3]) -> Self {
         FrameCoefficients {
             alpha: -a2 + b2 + c2,
@@ -274,6 +275,7 @@ impl FrameCoefficients {
     }
 
     /// F(x, y, z).
+    #[inline]
     pub fn eval(&self, x: f64, y: f64, z: f64) -> f64 {
         x * x + y * y + z * z - 2.0 * x * y - 2.0 * x * z - 2.0 * y * z
             + self.k
@@ -282,7 +284,19 @@ impl FrameCoefficients {
             + 2.0 * self.gamma * z
     }
 
+    /// The sum of the absolute values of F's terms at (x, y, z): the scale of its rounding.
+    #[inline]
+    pub fn terms(&self, x: f64, y: f64, z: f64) -> f64 {
+        x * x
+            + y * y
+            + z * z
+            + 2.0 * ((x * y).abs() + (x * z).abs() + (y * z).abs())
+            + self.k.abs()
+            + 2.0 * ((self.alpha * x).abs() + (self.beta * y).abs() + (self.gamma * z).abs())
+    }
+
     /// The linear equation F_self − F_other = 0 as (coefficients of x, y, z; constant).
+    #[inline]
     pub fn difference(&self, other: &FrameCoefficients) -> ([f64; 3], f64) {
         (
             [

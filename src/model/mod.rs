@@ -314,6 +314,30 @@ impl NoiseModel {
     }
 }
 
+impl Body {
+    /// The triangle with PQ = a, QR = b, RP = c, in the plane z = 0 with P at the origin.
+    ///
+    /// # Example
+    /// ```
+    /// let b = orthocheck::model::Body::triangle(2.0, 3.0, 4.0).unwrap();
+    /// assert!((b.squared_distance(1, 2) - 9.0).abs() < 1e-12);
+    /// ```
+    pub fn triangle(a: f64, b: f64, c: f64) -> Result<Body> {
+        if !(a > 0.0 && b > 0.0 && c > 0.0) || a + b <= c || b + c <= a || a + c <= b {
+            return Err(Error::InvalidInput(format!(
+                "edges {a}, {b}, {c} do not form a triangle"
+            )));
+        }
+        let rx = (a * a + c * c - b * b) / (2.0 * a);
+        let ry = (c * c - rx * rx).max(0.0).sqrt();
+        Ok(Body::new(vec![
+            Vector3::zeros(),
+            Vector3::new(a, 0.0, 0.0),
+            Vector3::new(rx, ry, 0.0),
+        ]))
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -222,3 +222,171 @@ pub fn twofold_text(a: &crate::check::TwofoldAudit) -> String {
         verdict = a.verdict.name()
     )
 }
+
+/// `orthocheck solve --json`: `{"method", "why", "solutions": [{"squared_edges": {"PQ": …},
+/// "feasible", "reason", "residual", …}], "degenerate": null | "…", "condition"}`.
+pub fn solve_json(s: &crate::derivations::solver::Solved) -> serde_json::Value {
+    use serde_json::{json, Map, Value};
+    let o = &s.output;
+    let solutions: Vec<Value> = o
+        .solutions
+        .iter()
+        .zip(&s.structures)
+        .map(|(sol, st)| {
+            let edges: Map<String, Value> = o
+                .edges
+                .iter()
+                .zip(&sol.squared_edges)
+                .map(|(n, v)| (n.clone(), json!(v)))
+                .collect();
+            let mut v = json!({
+                "squared_edges": edges,
+                "feasible": sol.feasibility.is_feasible(),
+                "reason": sol.feasibility.reason(),
+                "residual": sol.residual,
+                "error_bound": sol.error_bound,
+            });
+            if sol.imaginary.iter().any(|x| *x != 0.0) {
+                let im: Map<String, Value> = o
+                    .edges
+                    .iter()
+                    .zip(&sol.imaginary)
+                    .map(|(n, v)| (n.clone(), json!(v)))
+                    .collect();
+                v["imaginary"] = Value::Object(im);
+            }
+            if let Some(st) = st {
+                v["structure"] = json!(st);
+            }
+            v
+        })
+        .collect();
+    json!({
+        "method": o.method,
+        "why": s.why,
+        "solutions": solutions,
+        "degenerate": o.degenerate.map(|d| d.to_string()),
+        "condition": o.condition,
+    })
+}
+
+/// `orthocheck solve` as text.
+pub fn solve_text(s: &crate::derivations::solver::Solved) -> String {
+    use crate::numfmt::sig;
+    let o = &s.output;
+    let mut t = format!("method: {} ({})\n", o.method, s.why);
+    if let Some(d) = &o.degenerate {
+        let _ = writeln!(t, "degenerate: {d}");
+    }
+    if let Some(c) = o.condition {
+        let _ = writeln!(t, "condition number: {}", sig(c));
+    }
+    if o.solutions.is_empty() {
+        t.push_str("no solution\n");
+    }
+    for (i, (sol, st)) in o.solutions.iter().zip(&s.structures).enumerate() {
+        let edges: Vec<String> = o
+            .edges
+            .iter()
+            .zip(sol.squared_edges.iter().zip(&sol.imaginary))
+            .map(|(n, (re, im))| {
+                if *im == 0.0 {
+                    format!("{n}²={}", sig(*re))
+                } else {
+                    format!("{n}²={}{:+}i", sig(*re), sig(*im))
+                }
+            })
+            .collect();
+        let _ = writeln!(
+            t,
+            "solution {}: {}  [{}; residual {}]",
+            i + 1,
+            edges.join(" "),
+            sol.feasibility.reason(),
+            crate::numfmt::below(sol.residual)
+        );
+        if let Some(st) = st {
+            let pts: Vec<String> = st
+                .points
+                .iter()
+                .map(|p| crate::numfmt::sig_list(p))
+                .collect();
+            let _ = writeln!(
+                t,
+                "  body in frame 1: {}; {} structure-and-motion solutions reproject ({} with the mirror reversal)",
+                pts.join(" "),
+                st.motions,
+                2 * st.motions
+            );
+        }
+    }
+    t
+}
+
+/// `orthocheck noise` as text: one block per level and model.
+pub fn noise_text(case: &str, rows: &[crate::derivations::noise::LevelSummary]) -> String {
+    use crate::numfmt::sig;
+    let pct = |x: f64| format!("{}%", sig(100.0 * x));
+    let mut t = format!("noise study {case}: relative errors against the truth\n");
+    for r in rows {
+        let _ = writeln!(
+            t,
+            "\nε = {} ({}): {} trials, {} without a usable real solution",
+            sig(r.level),
+            r.model,
+            r.trials,
+            r.failures
+        );
+        let _ = writeln!(
+            t,
+            "  {:<14}{}  {:>10}",
+            "metric",
+            r.metrics
+                .first()
+                .map(|m| m
+                    .quantiles
+                    .iter()
+                    .map(|q| format!("{:>10}", format!("{}%", sig(100.0 * q.q))))
+                    .collect::<String>())
+                .unwrap_or_default(),
+            "mean"
+        );
+        for m in &r.metrics {
+            let _ = writeln!(
+                t,
+                "  {:<14}{}  {:>10}",
+                m.metric,
+                m.quantiles
+                    .iter()
+                    .map(|q| format!("{:>10}", pct(q.value)))
+                    .collect::<String>(),
+                pct(m.mean)
+            );
+        }
+    }
+    t
+}
+
+/// The comment block `orthocheck synth` writes above the tracks: how to make them again, and
+/// the truth to compare a solve with.
+pub fn synth_header(scene: &crate::model::Scene, seed: u64, noise: Option<f64>) -> String {
+    let b = &scene.body;
+    let truth: Vec<String> = crate::derivations::solver::edges(b.points.len())
+        .iter()
+        .map(|&(i, j)| {
+            format!(
+                "{}{}={}",
+                b.names[i],
+                b.names[j],
+                crate::numfmt::sig(b.squared_distance(i, j))
+            )
+        })
+        .collect();
+    format!(
+        "# orthocheck synth --points {} --frames {} --seed {seed}{}\n# true squared edges: {}\n",
+        b.points.len(),
+        scene.motions.len(),
+        noise.map_or(String::new(), |e| format!(" --noise {e}")),
+        truth.join(" ")
+    )
+}

@@ -1,0 +1,309 @@
+//! Claims of the noise studies (§2, §3): where the paper's runs fall in seeded distributions.
+
+use super::{ClaimResult, Evidence, ResultBuilder, Tolerance, Verdict};
+use crate::cases::{Direction, NoiseStudyCase, Quantity, StatementSubject};
+use crate::derivations::noise::{models, run_level, stream, LevelResult, Study, TrialError};
+use crate::error::Result;
+use crate::model::Body;
+use crate::numfmt::{sig, sig_list};
+
+fn pct(x: f64) -> String {
+    format!("{}%", sig(100.0 * x))
+}
+
+/// The study a noise case describes: its body, solver, frames, trials and seed.
+pub fn study_of(case: &NoiseStudyCase) -> Result<Study> {
+    let l: Vec<f64> = case.body.lengths.iter().map(|p| p.to_f64()).collect();
+    Ok(Study {
+        solver: case.solver,
+        body: Body::triangle(l[0], l[1], l[2])?,
+        frames: case.frames,
+        trials: case.trials,
+        seed: case.seed,
+    })
+}
+
+/// The studies a case asks for, one per level and noise model (coordinate model first).
+/// Level `i` under model `m` uses random stream `2i + m`.
+pub fn run_study(case: &NoiseStudyCase) -> Result<Vec<[LevelResult; 2]>> {
+    let study = study_of(case)?;
+    Ok(case
+        .levels
+        .iter()
+        .enumerate()
+        .map(|(i, lv)| {
+            let models = models(lv.level.to_f64());
+            std::array::from_fn(|m| run_level(&study, models[m], stream(i, m), &|_| {}))
+        })
+        .collect())
+}
+
+pub(super) fn check(b: &ResultBuilder, case: &NoiseStudyCase) -> Result<Vec<ClaimResult>> {
+    let mut out = Vec::new();
+    let lengths: Vec<f64> = case.body.lengths.iter().map(|p| p.to_f64()).collect();
+    let truth: Vec<f64> = lengths.iter().map(|x| x * x).collect();
+
+    if let Some(claim) = &case.body.claim {
+        let digits = case.body.significant_digits.unwrap_or(6);
+        let agree: Vec<bool> = case
+            .body
+            .lengths
+            .iter()
+            .zip(&case.body.squares)
+            .map(|(l, s)| {
+                let sq = l.to_f64() * l.to_f64();
+                (sq - s.to_f64()).abs() <= s.half_unit_significant(digits)
+            })
+            .collect();
+        out.push(
+            b.result(
+                claim,
+                None,
+                if agree.iter().all(|a| *a) {
+                    Verdict::Reproduced
+                } else {
+                    Verdict::Contradicted
+                },
+                format!(
+                    "lengths {}, squares {}",
+                    texts(&case.body.lengths),
+                    texts(&case.body.squares)
+                ),
+                format!("squares of the printed lengths: {}", sig_list(&truth)),
+                Some(Tolerance {
+                    value: sig_list(
+                        &case
+                            .body
+                            .squares
+                            .iter()
+                            .map(|s| s.half_unit_significant(digits))
+                            .collect::<Vec<_>>(),
+                    ),
+                    source: format!(
+                        "half a unit in the {digits}th significant digit of the printed squares"
+                    ),
+                }),
+                Evidence::new("squares of the printed lengths against the printed squares"),
+            ),
+        );
+    }
+
+    let results = run_study(case)?;
+    for (lv, res) in case.levels.iter().zip(&results) {
+        // one claim quoted at several levels gets one result per level
+        let repeated = case
+            .levels
+            .iter()
+            .filter(|l| l.claim.claim == lv.claim.claim)
+            .count()
+            > 1;
+        let level_id = format!("eps-{}", lv.level.text);
+        let suffix = |s: Option<&str>| match (repeated, s) {
+            (true, Some(s)) => Some(format!("{level_id}/{s}")),
+            (true, None) => Some(level_id.clone()),
+            (false, s) => s.map(str::to_string),
+        };
+        let first: Vec<f64> = lv.printed[0].iter().map(|p| p.to_f64()).collect();
+        // What are the printed numbers: squares or lengths? Decide by which truth they are near.
+        let near = |t: &[f64]| {
+            first
+                .iter()
+                .zip(t)
+                .map(|(a, b)| ((a - b) / b).abs())
+                .fold(0.0, f64::max)
+        };
+        let as_squares = near(&truth) <= near(&lengths);
+        let quantity = if as_squares {
+            Quantity::Squares
+        } else {
+            Quantity::Lengths
+        };
+        if quantity != lv.labelled_as {
+            out.push(b.result(
+                &lv.claim,
+                suffix(Some("symbols")).as_deref(),
+                Verdict::Erratum,
+                format!(
+                    "printed as {} = {}",
+                    if lv.labelled_as == Quantity::Lengths { "a, b, c" } else { "a², b², c²" },
+                    texts(&lv.printed[0])
+                ),
+                format!(
+                    "the values are {}: within {} of the true {} {}, but {} from the true {} {}; read them as {}",
+                    if as_squares { "squared lengths" } else { "lengths" },
+                    pct(near(if as_squares { &truth } else { &lengths })),
+                    if as_squares { "squares" } else { "lengths" },
+                    sig_list(if as_squares { &truth } else { &lengths }),
+                    pct(near(if as_squares { &lengths } else { &truth })),
+                    if as_squares { "lengths" } else { "squares" },
+                    sig_list(if as_squares { &lengths } else { &truth }),
+                    if as_squares { "a², b², c²" } else { "a, b, c" }
+                ),
+                None,
+                Evidence::new("relative distance of the printed values to the true lengths and to the true squares"),
+            ));
+        }
+        let squares_of_first: Vec<f64> = if as_squares {
+            first.clone()
+        } else {
+            first.iter().map(|x| x * x).collect()
+        };
+        let example = TrialError::of(&squares_of_first, &truth);
+        let mut ev = Evidence::new(
+            "seeded Monte Carlo: the body under uniformly random rotations in every frame, P at the origin, \
+             noise, the solver, and the real solution nearest the truth; errors relative to the truth, \
+             largest over the three edges",
+        )
+        .with("trials per model (seed)", format!("{} ({})", case.trials, case.seed))
+        .with("printed values read as", if as_squares { "squared lengths" } else { "lengths" });
+        if let Some(e) = example {
+            ev = ev.with(
+                "printed run: largest error in squares / in lengths",
+                format!("{} / {}", pct(e.max_squares), pct(e.max_lengths)),
+            );
+        }
+        let mut summary = Vec::new();
+        for r in res {
+            let q = |m: usize, p: f64| r.quantile(m, p).map_or("-".into(), pct);
+            ev = ev.with(
+                &format!("{} model: failures", r.model),
+                format!("{} of {}", r.failures, r.trials),
+            );
+            for (m, name) in [(0, "squares"), (2, "lengths")] {
+                ev = ev.with(
+                    &format!(
+                        "{} model: largest error in {name}, 5/25/50/75/95/99 %",
+                        r.model
+                    ),
+                    [0.05, 0.25, 0.5, 0.75, 0.95, 0.99]
+                        .map(|p| q(m, p))
+                        .join(" / "),
+                );
+                ev = ev.with(
+                    &format!(
+                        "{} model: mean over trials of the largest error in {name}",
+                        r.model
+                    ),
+                    pct(r.mean(m)),
+                );
+            }
+            if let Some(e) = example {
+                let (ps, pl) = (r.rank_of(0, e.max_squares), r.rank_of(2, e.max_lengths));
+                ev = ev.with(
+                    &format!(
+                        "{} model: percentile of the printed run (squares / lengths)",
+                        r.model
+                    ),
+                    format!("{} / {}", pct(ps), pct(pl)),
+                );
+                summary.push(format!(
+                    "{} model: printed run at percentile {} (squares), {} (lengths)",
+                    r.model,
+                    pct(ps),
+                    pct(pl)
+                ));
+            }
+        }
+        // The statement, decided in squares and in lengths.
+        let mut paper_value = format!(
+            "ε = {}: {}",
+            lv.level.text,
+            lv.printed
+                .iter()
+                .map(|p| format!("({})", texts(p)))
+                .collect::<Vec<_>>()
+                .join(", ")
+        );
+        if let Some(st) = &lv.statement {
+            let bound = st.bound.to_f64();
+            let holds = |x: f64| match st.direction {
+                Direction::Below => x < bound,
+                Direction::Above => x > bound,
+            };
+            let word = match st.direction {
+                Direction::Below => "below",
+                Direction::Above => "above",
+            };
+            paper_value.push_str(&format!("; error {word} {}", pct(bound)));
+            match st.about {
+                StatementSubject::Example => {
+                    if let Some(e) = example {
+                        summary.push(format!(
+                            "the printed run's error is {} in squares ({word} {}: {}), {} in lengths ({})",
+                            pct(e.max_squares),
+                            pct(bound),
+                            holds(e.max_squares),
+                            pct(e.max_lengths),
+                            holds(e.max_lengths)
+                        ));
+                    }
+                    for r in res {
+                        let frac = |m: usize| {
+                            r.sorted[m].iter().filter(|x| holds(**x)).count() as f64
+                                / r.trials as f64
+                        };
+                        ev = ev.with(
+                            &format!(
+                                "{} model: trials whose error is {word} {} (squares / lengths)",
+                                r.model,
+                                pct(bound)
+                            ),
+                            format!("{} / {}", pct(frac(0)), pct(frac(2))),
+                        );
+                    }
+                }
+                StatementSubject::TrialMean => {
+                    // "average performance": the mean over trials, of the worst edge and of
+                    // the mean over the edges, in squares and in lengths
+                    for r in res {
+                        let said = |m: usize| format!("{} ({})", pct(r.mean(m)), holds(r.mean(m)));
+                        summary.push(format!(
+                            "{} model: mean error, worst edge: {} in squares, {} in lengths; \
+                             mean over edges: {} in squares, {} in lengths ({word} {}?)",
+                            r.model,
+                            said(0),
+                            said(2),
+                            said(1),
+                            said(3),
+                            pct(bound),
+                        ));
+                        ev = ev.with(
+                            &format!(
+                                "{} model: median of the mean-over-edges error (squares / lengths)",
+                                r.model
+                            ),
+                            format!(
+                                "{} / {}",
+                                r.quantile(1, 0.5).map_or("-".into(), pct),
+                                r.quantile(3, 0.5).map_or("-".into(), pct)
+                            ),
+                        );
+                    }
+                }
+            }
+        }
+        if lv.printed.len() > 1 {
+            ev = ev.with(
+                "the run's other solutions",
+                "cannot be checked: the paper does not print the noisy projections of its runs",
+            );
+        }
+        out.push(b.result(
+            &lv.claim,
+            suffix(None).as_deref(),
+            Verdict::Statistical,
+            paper_value,
+            summary.join("; "),
+            None,
+            ev,
+        ));
+    }
+    Ok(out)
+}
+
+fn texts(v: &[crate::cases::Printed]) -> String {
+    v.iter()
+        .map(|p| p.text.clone())
+        .collect::<Vec<_>>()
+        .join(", ")
+}

@@ -1,0 +1,371 @@
+//! The noise studies of §2, §3 and §4: seeded Monte Carlo of a solver under a named noise
+//! model, summarised as error distributions in squared and in plain edge lengths.
+//!
+//! Trials run in fixed chunks, each with its own ChaCha stream, so the result does not depend
+//! on the number of threads.
+
+use rand::SeedableRng;
+use rand_chacha::ChaCha8Rng;
+use rayon::prelude::*;
+
+use super::solver::SquaredLengths;
+use super::{p3f3, p3f4};
+use crate::model::{random_rotation, Body, Motion, NoiseModel, Scene};
+
+/// Which solver a study runs.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum StudySolver {
+    /// §2: three points, three frames.
+    P3f3,
+    /// §3: three points, four frames.
+    P3f4,
+}
+
+/// Error of one trial's best solution against the truth.
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
+pub struct TrialError {
+    /// Largest relative error over the edges, in squared lengths.
+    pub max_squares: f64,
+    /// Mean relative error over the edges, in squared lengths.
+    pub mean_squares: f64,
+    /// Largest relative error over the edges, in lengths.
+    pub max_lengths: f64,
+    /// Mean relative error over the edges, in lengths.
+    pub mean_lengths: f64,
+}
+
+impl TrialError {
+    /// Errors of squared edges `s` against the true squares `t`; `None` if a square is negative.
+    pub fn of(s: &[f64], t: &[f64]) -> Option<TrialError> {
+        if s.iter().any(|v| *v < 0.0 || !v.is_finite()) {
+            return None;
+        }
+        let sq: Vec<f64> = s.iter().zip(t).map(|(a, b)| (a - b).abs() / b).collect();
+        let ln: Vec<f64> = s
+            .iter()
+            .zip(t)
+            .map(|(a, b)| (a.sqrt() - b.sqrt()).abs() / b.sqrt())
+            .collect();
+        let n = sq.len() as f64;
+        Some(TrialError {
+            max_squares: sq.iter().fold(0.0, |a, b| a.max(*b)),
+            mean_squares: sq.iter().sum::<f64>() / n,
+            max_lengths: ln.iter().fold(0.0, |a, b| a.max(*b)),
+            mean_lengths: ln.iter().sum::<f64>() / n,
+        })
+    }
+
+    /// The four metrics in a fixed order: max and mean in squares, max and mean in lengths.
+    pub fn metrics(&self) -> [f64; 4] {
+        [
+            self.max_squares,
+            self.mean_squares,
+            self.max_lengths,
+            self.mean_lengths,
+        ]
+    }
+}
+
+/// Names of [`TrialError::metrics`].
+pub const METRICS: [&str; 4] = ["max-squares", "mean-squares", "max-lengths", "mean-lengths"];
+
+/// One noise level under one model.
+#[derive(Clone, Debug, serde::Serialize)]
+pub struct LevelResult {
+    /// ε.
+    pub level: f64,
+    /// The noise model's name.
+    pub model: &'static str,
+    /// Trials run.
+    pub trials: usize,
+    /// Trials without a real solution with non-negative squares.
+    pub failures: usize,
+    /// Errors of the successful trials, sorted per metric (`sorted[m]` for metric `m`).
+    #[serde(skip)]
+    pub sorted: [Vec<f64>; 4],
+}
+
+impl LevelResult {
+    /// The q-quantile of metric `m` (see [`METRICS`]).
+    pub fn quantile(&self, m: usize, q: f64) -> Option<f64> {
+        super::rounding::quantile(&self.sorted[m], q)
+    }
+
+    /// The mean of metric `m`.
+    pub fn mean(&self, m: usize) -> f64 {
+        let v = &self.sorted[m];
+        if v.is_empty() {
+            return f64::NAN;
+        }
+        v.iter().sum::<f64>() / v.len() as f64
+    }
+
+    /// Fraction of successful trials with metric `m` not above `x`.
+    pub fn rank_of(&self, m: usize, x: f64) -> f64 {
+        super::rounding::rank_of(&self.sorted[m], x)
+    }
+}
+
+/// The noise models, in report order, at level `eps`.
+pub fn models(eps: f64) -> [NoiseModel; 2] {
+    [
+        NoiseModel::RelativeCoordinate { eps },
+        NoiseModel::RelativeLength { eps },
+    ]
+}
+
+/// The random stream of level `i` under model `m` (of [`models`]): the report and the
+/// `noise` command use the same, so their results agree.
+pub fn stream(level: usize, model: usize) -> u64 {
+    (2 * level + model) as u64
+}
+
+/// Run `levels` under the models of [`models`] whose indices `keep` accepts, in order
+/// (level, then model); `progress` receives finished trial counts.
+pub fn run_levels(
+    study: &Study,
+    levels: &[f64],
+    keep: impl Fn(usize) -> bool,
+    progress: &(dyn Fn(usize) + Sync),
+) -> Vec<LevelResult> {
+    let mut out = Vec::new();
+    for (i, &eps) in levels.iter().enumerate() {
+        for (m, model) in models(eps).into_iter().enumerate() {
+            if keep(m) {
+                out.push(run_level(study, model, stream(i, m), progress));
+            }
+        }
+    }
+    out
+}
+
+/// Trials per chunk (each chunk has its own random stream).
+const CHUNK: usize = 1024;
+
+/// What a study runs: a body under random motions, solved by one solver.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Study {
+    /// The solver.
+    pub solver: StudySolver,
+    /// The body.
+    pub body: Body,
+    /// Frames per trial.
+    pub frames: usize,
+    /// Trials per level.
+    pub trials: usize,
+    /// Seed.
+    pub seed: u64,
+}
+
+/// Run one level: random motions of the body, noise, solve, error of the real solution
+/// nearest the truth. `stream` separates levels and models; `progress` receives finished
+/// trial counts.
+pub fn run_level(
+    study: &Study,
+    model: NoiseModel,
+    stream: u64,
+    progress: &(dyn Fn(usize) + Sync),
+) -> LevelResult {
+    let Study {
+        solver,
+        ref body,
+        frames,
+        trials,
+        seed,
+    } = *study;
+    let truth: Vec<f64> = [(0, 1), (1, 2), (2, 0)]
+        .iter()
+        .map(|&(i, j)| body.squared_distance(i, j))
+        .collect();
+    let level = match model {
+        NoiseModel::RelativeCoordinate { eps } | NoiseModel::RelativeLength { eps } => eps,
+    };
+    let chunks = trials.div_ceil(CHUNK);
+    let results: Vec<Vec<Option<TrialError>>> = (0..chunks)
+        .into_par_iter()
+        .map(|c| {
+            let mut g = ChaCha8Rng::seed_from_u64(seed);
+            g.set_stream((stream << 32) | c as u64);
+            let n = CHUNK.min(trials - c * CHUNK);
+            let out: Vec<Option<TrialError>> = (0..n)
+                .map(|_| trial(solver, body, frames, model, &truth, &mut g))
+                .collect();
+            progress(n);
+            out
+        })
+        .collect();
+    let ok: Vec<TrialError> = results.iter().flatten().flatten().copied().collect();
+    let mut sorted: [Vec<f64>; 4] =
+        std::array::from_fn(|m| ok.iter().map(|e| e.metrics()[m]).collect());
+    for v in &mut sorted {
+        v.sort_by(f64::total_cmp);
+    }
+    LevelResult {
+        level,
+        model: model.name(),
+        trials,
+        failures: trials - ok.len(),
+        sorted,
+    }
+}
+
+fn trial(
+    solver: StudySolver,
+    body: &Body,
+    frames: usize,
+    model: NoiseModel,
+    truth: &[f64],
+    g: &mut ChaCha8Rng,
+) -> Option<TrialError> {
+    let scene = Scene {
+        body: body.clone(),
+        motions: (0..frames)
+            .map(|_| Motion {
+                rotation: random_rotation(g),
+                translation: nalgebra::Vector2::zeros(),
+            })
+            .collect(),
+    };
+    // P shifted to the origin in every frame, as in the paper's figures
+    let mut tracks = scene.tracks();
+    for f in &mut tracks.frames {
+        let o = f[0];
+        for p in f.iter_mut() {
+            *p -= o;
+        }
+    }
+    let tracks = model.perturb_tracks(&tracks, g);
+    let mut lengths = SquaredLengths::from_tracks(&tracks);
+    for f in &mut lengths.frames {
+        for v in f.iter_mut() {
+            *v = model.perturb_length(v.sqrt(), g).powi(2);
+        }
+    }
+    let tri = |i: usize| {
+        [
+            lengths.frames[i][0],
+            lengths.frames[i][1],
+            lengths.frames[i][2],
+        ]
+    };
+    // the allocation-free cores where the frame count allows (this loop runs 10⁶ times)
+    let candidates: Vec<[f64; 3]> = match (solver, frames) {
+        (StudySolver::P3f3, _) => {
+            let core = p3f3::solve_core(&[tri(0), tri(1), tri(2)]);
+            (0..core.count)
+                .filter(|&k| core.imag[k] == [0.0; 3])
+                .map(|k| core.squares[k])
+                .collect()
+        }
+        (StudySolver::P3f4, 4) => p3f4::solve_core(&[tri(0), tri(1), tri(2), tri(3)])
+            .map(|(x, _)| x)
+            .into_iter()
+            .collect(),
+        (StudySolver::P3f4, _) => p3f4::solve(&lengths)
+            .ok()?
+            .solutions
+            .iter()
+            .map(|s| [s.squared_edges[0], s.squared_edges[1], s.squared_edges[2]])
+            .collect(),
+    };
+    candidates
+        .iter()
+        .filter_map(|s| TrialError::of(s, truth))
+        .min_by(|a, b| a.max_squares.total_cmp(&b.max_squares))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn zero_noise_recovers_the_body_and_threads_do_not_matter() {
+        let body = Body::triangle(2.0, 3.0, 4.0).unwrap();
+        let s3 = Study {
+            solver: StudySolver::P3f3,
+            body: body.clone(),
+            frames: 3,
+            trials: 300,
+            seed: 1,
+        };
+        let r = run_level(&s3, NoiseModel::RelativeCoordinate { eps: 0.0 }, 0, &|_| {});
+        assert_eq!(r.failures, 0);
+        assert!(r.quantile(0, 1.0).unwrap() < 1e-9);
+        let s4 = Study {
+            solver: StudySolver::P3f4,
+            body,
+            frames: 4,
+            trials: 3000,
+            seed: 9,
+        };
+        let a = run_level(&s4, NoiseModel::RelativeLength { eps: 0.01 }, 1, &|_| {});
+        let pool = rayon::ThreadPoolBuilder::new()
+            .num_threads(1)
+            .build()
+            .unwrap();
+        let b =
+            pool.install(|| run_level(&s4, NoiseModel::RelativeLength { eps: 0.01 }, 1, &|_| {}));
+        assert_eq!(a.sorted, b.sorted);
+    }
+}
+
+/// The quantiles every summary reports.
+pub const QUANTILES: [f64; 6] = [0.05, 0.25, 0.5, 0.75, 0.95, 0.99];
+
+/// One metric's distribution, summarised.
+#[derive(Clone, Debug, serde::Serialize)]
+pub struct MetricSummary {
+    /// The metric (see [`METRICS`]).
+    pub metric: &'static str,
+    /// The value at each q of [`QUANTILES`].
+    pub quantiles: Vec<Quantile>,
+    /// Mean over the successful trials.
+    pub mean: f64,
+}
+
+/// One quantile of a distribution.
+#[derive(Clone, Copy, Debug, serde::Serialize)]
+pub struct Quantile {
+    /// q, in [0, 1].
+    pub q: f64,
+    /// The value.
+    pub value: f64,
+}
+
+/// A level's distributions, summarised.
+#[derive(Clone, Debug, serde::Serialize)]
+pub struct LevelSummary {
+    /// ε.
+    pub level: f64,
+    /// The noise model.
+    pub model: &'static str,
+    /// Trials run.
+    pub trials: usize,
+    /// Trials without a usable real solution.
+    pub failures: usize,
+    /// One summary per metric, in [`METRICS`] order.
+    pub metrics: Vec<MetricSummary>,
+}
+
+impl LevelResult {
+    /// Quantiles and means of every metric.
+    pub fn summary(&self) -> LevelSummary {
+        LevelSummary {
+            level: self.level,
+            model: self.model,
+            trials: self.trials,
+            failures: self.failures,
+            metrics: (0..METRICS.len())
+                .map(|m| MetricSummary {
+                    metric: METRICS[m],
+                    quantiles: QUANTILES
+                        .iter()
+                        .filter_map(|&q| self.quantile(m, q).map(|value| Quantile { q, value }))
+                        .collect(),
+                    mean: self.mean(m),
+                })
+                .collect(),
+        }
+    }
+}

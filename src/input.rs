@@ -1,0 +1,306 @@
+//! Users' tracks files: YAML (`frames:` lists of `[x, y]`, optional `points:` names) or CSV
+//! (header `frame,point,x,y`). Every error names the file, the line and the field.
+
+use std::fmt::Write as _;
+use std::path::Path;
+
+use nalgebra::Vector2;
+use serde::Deserialize;
+
+use crate::cases::parse_yaml;
+use crate::error::{Error, InputLocation, Result};
+use crate::model::{default_names, Tracks};
+
+/// How frames are matched point by point.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum PointOrder {
+    /// The same points in every frame: CSV rows are matched by point name.
+    ByName,
+    /// Each frame's points as listed (frame 2's order may be unknown, as for `identify`);
+    /// names are taken from the first frame.
+    AsListed,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct YamlTracks {
+    #[serde(default)]
+    points: Option<Vec<String>>,
+    frames: Vec<Vec<[f64; 2]>>,
+}
+
+fn located(path: &Path, line: Option<u64>, field: &str, message: String) -> Error {
+    Error::Input {
+        location: InputLocation {
+            file: path.to_path_buf(),
+            line,
+            column: None,
+            field: Some(field.to_string()),
+        },
+        message,
+    }
+}
+
+/// Read a tracks file; the extension (`.csv`, otherwise YAML) picks the format.
+///
+/// # Example
+/// ```
+/// use orthocheck::input::{parse_tracks, PointOrder};
+/// let t = parse_tracks("frame,point,x,y\n1,P,0,0\n1,Q,1,0\n2,Q,0,1\n2,P,0,0\n",
+///     std::path::Path::new("t.csv"), PointOrder::ByName).unwrap();
+/// assert_eq!(t.names, ["P", "Q"]);
+/// assert_eq!(t.frames[1][1].y, 1.0);
+/// ```
+pub fn load_tracks(path: &Path, order: PointOrder) -> Result<Tracks> {
+    let text = std::fs::read_to_string(path).map_err(|source| Error::Io {
+        path: path.to_path_buf(),
+        source,
+    })?;
+    parse_tracks(&text, path, order)
+}
+
+/// Parse tracks text; `path` names the file in errors and its extension picks the format.
+pub fn parse_tracks(text: &str, path: &Path, order: PointOrder) -> Result<Tracks> {
+    if text.trim().is_empty() {
+        return Err(located(path, Some(1), "frames", "the file is empty".into()));
+    }
+    let is_csv = path
+        .extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("csv"));
+    if is_csv {
+        parse_csv(text, path, order)
+    } else {
+        parse_yaml_tracks(text, path)
+    }
+}
+
+fn parse_yaml_tracks(text: &str, path: &Path) -> Result<Tracks> {
+    let y: YamlTracks = parse_yaml(text, path)?;
+    // serde has checked the shapes; what is left has no position of its own, so point at
+    // the `frames:` key line
+    let frames_line = text
+        .lines()
+        .position(|l| l.trim_start().starts_with("frames:"))
+        .map(|i| i as u64 + 1);
+    let bad = |field: String, message: String| Err(located(path, frames_line, &field, message));
+    if y.frames.is_empty() {
+        return bad("frames".into(), "no frames".into());
+    }
+    let p = y.frames[0].len();
+    let names = match y.points {
+        Some(n) => {
+            if n.len() != p {
+                return bad(
+                    "points".into(),
+                    format!("{} names for {p} points per frame", n.len()),
+                );
+            }
+            n
+        }
+        None => default_names(p),
+    };
+    let mut frames = Vec::with_capacity(y.frames.len());
+    for (i, f) in y.frames.iter().enumerate() {
+        if f.len() != p {
+            return bad(
+                format!("frames[{i}]"),
+                format!("{} points, but frame 1 has {p}", f.len()),
+            );
+        }
+        for (j, xy) in f.iter().enumerate() {
+            if let Some(c) = xy.iter().position(|v| !v.is_finite()) {
+                return bad(
+                    format!("frames[{i}][{j}][{c}]"),
+                    "coordinate is not a finite number".into(),
+                );
+            }
+        }
+        frames.push(f.iter().map(|xy| Vector2::new(xy[0], xy[1])).collect());
+    }
+    Tracks::new(names, frames).map_err(|e| located(path, frames_line, "frames", e.to_string()))
+}
+
+fn parse_csv(text: &str, path: &Path, order: PointOrder) -> Result<Tracks> {
+    let mut lines = text
+        .lines()
+        .enumerate()
+        .map(|(i, l)| (i as u64 + 1, l.trim()))
+        .filter(|(_, l)| !l.is_empty() && !l.starts_with('#'));
+    let Some((hline, header)) = lines.next() else {
+        return Err(located(path, Some(1), "header", "the file is empty".into()));
+    };
+    let cols: Vec<&str> = header.split(',').map(str::trim).collect();
+    if cols != ["frame", "point", "x", "y"] {
+        return Err(located(
+            path,
+            Some(hline),
+            "header",
+            format!("expected `frame,point,x,y`, found `{header}`"),
+        ));
+    }
+    // frames in order of first appearance; each a list of (name, point, line)
+    let mut frame_ids: Vec<String> = Vec::new();
+    let mut rows: Vec<Vec<(String, Vector2<f64>, u64)>> = Vec::new();
+    for (line, l) in lines {
+        let f: Vec<&str> = l.split(',').map(str::trim).collect();
+        if f.len() != 4 {
+            return Err(located(
+                path,
+                Some(line),
+                "row",
+                format!("{} fields, expected 4 (frame,point,x,y)", f.len()),
+            ));
+        }
+        let mut xy = [0.0; 2];
+        for (k, name) in ["x", "y"].iter().enumerate() {
+            xy[k] = match f[2 + k].parse::<f64>() {
+                Ok(v) if v.is_finite() => v,
+                _ => {
+                    return Err(located(
+                        path,
+                        Some(line),
+                        name,
+                        format!("`{}` is not a finite number", f[2 + k]),
+                    ))
+                }
+            };
+        }
+        if f[1].is_empty() {
+            return Err(located(
+                path,
+                Some(line),
+                "point",
+                "empty point name".into(),
+            ));
+        }
+        let idx = match frame_ids.iter().position(|id| id == f[0]) {
+            Some(i) => i,
+            None => {
+                frame_ids.push(f[0].to_string());
+                rows.push(Vec::new());
+                rows.len() - 1
+            }
+        };
+        if rows[idx].iter().any(|(n, _, _)| n == f[1]) {
+            return Err(located(
+                path,
+                Some(line),
+                "point",
+                format!("point `{}` appears twice in frame `{}`", f[1], f[0]),
+            ));
+        }
+        rows[idx].push((f[1].to_string(), Vector2::new(xy[0], xy[1]), line));
+    }
+    let Some(first) = rows.first() else {
+        return Err(located(path, Some(hline), "frame", "no rows".into()));
+    };
+    let names: Vec<String> = first.iter().map(|(n, _, _)| n.clone()).collect();
+    let mut frames = Vec::with_capacity(rows.len());
+    for (i, r) in rows.iter().enumerate() {
+        let last_line = r.last().map(|x| x.2);
+        if r.len() != names.len() {
+            return Err(located(
+                path,
+                last_line,
+                "point",
+                format!(
+                    "frame `{}` has {} points, but frame `{}` has {}",
+                    frame_ids[i],
+                    r.len(),
+                    frame_ids[0],
+                    names.len()
+                ),
+            ));
+        }
+        let frame = match order {
+            PointOrder::AsListed => r.iter().map(|x| x.1).collect(),
+            PointOrder::ByName => {
+                let mut f = Vec::with_capacity(names.len());
+                for n in &names {
+                    let Some(x) = r.iter().find(|x| &x.0 == n) else {
+                        return Err(located(
+                            path,
+                            last_line,
+                            "point",
+                            format!("frame `{}` lacks point `{n}`", frame_ids[i]),
+                        ));
+                    };
+                    f.push(x.1);
+                }
+                f
+            }
+        };
+        frames.push(frame);
+    }
+    Tracks::new(names, frames).map_err(|e| located(path, None, "frame", e.to_string()))
+}
+
+/// Tracks as YAML, in the format [`load_tracks`] reads (shortest round-trip floats).
+pub fn tracks_to_yaml(t: &Tracks) -> String {
+    let mut s = String::new();
+    let _ = writeln!(s, "points: [{}]", t.names.join(", "));
+    let _ = writeln!(s, "frames:");
+    for f in &t.frames {
+        let pts: Vec<String> = f
+            .iter()
+            .map(|p| format!("[{:?}, {:?}]", p.x, p.y))
+            .collect();
+        let _ = writeln!(s, "  - [{}]", pts.join(", "));
+    }
+    s
+}
+
+/// Tracks as CSV with the header `frame,point,x,y` (frames numbered from 1).
+pub fn tracks_to_csv(t: &Tracks) -> String {
+    let mut s = String::from("frame,point,x,y\n");
+    for (i, f) in t.frames.iter().enumerate() {
+        for (n, p) in t.names.iter().zip(f) {
+            let _ = writeln!(s, "{},{n},{:?},{:?}", i + 1, p.x, p.y);
+        }
+    }
+    s
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::Scene;
+
+    fn csv(text: &str) -> Result<Tracks> {
+        parse_tracks(text, Path::new("t.csv"), PointOrder::ByName)
+    }
+
+    #[test]
+    fn both_formats_round_trip() {
+        let t = Scene::random(4, 3, 5).tracks();
+        let y = parse_tracks(&tracks_to_yaml(&t), Path::new("t.yaml"), PointOrder::ByName);
+        assert_eq!(y.unwrap(), t);
+        assert_eq!(csv(&tracks_to_csv(&t)).unwrap(), t);
+    }
+
+    #[test]
+    fn errors_name_line_and_field() {
+        let e = csv("frame,point,x,y\n1,P,0,0\n1,Q,abc,0\n").unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "t.csv:3: field `x`: `abc` is not a finite number"
+        );
+        let e = csv("frame,point,x,y\n1,P,0,NaN\n").unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "t.csv:2: field `y`: `NaN` is not a finite number"
+        );
+        let e = csv("frame,point,x,y\n1,P,0,0\n1,Q,1,0\n2,P,0,0\n").unwrap_err();
+        assert!(e.to_string().contains("frame `2` has 1 points"), "{e}");
+        let e = parse_tracks(
+            "frames:\n  - [[0, 0], [1, 0]]\n  - [[0, 0]]\n",
+            Path::new("t.yaml"),
+            PointOrder::ByName,
+        )
+        .unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "t.yaml:1: field `frames[1]`: 1 points, but frame 1 has 2"
+        );
+    }
+}
