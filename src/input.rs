@@ -7,7 +7,7 @@ use std::path::Path;
 use nalgebra::Vector2;
 use serde::Deserialize;
 
-use crate::cases::parse_yaml;
+use crate::cases::{line_of, parse_yaml};
 use crate::error::{Error, InputLocation, Result};
 use crate::model::{default_names, Tracks};
 
@@ -75,14 +75,23 @@ pub fn parse_tracks(text: &str, path: &Path, order: PointOrder) -> Result<Tracks
 }
 
 fn parse_yaml_tracks(text: &str, path: &Path) -> Result<Tracks> {
-    let y: YamlTracks = parse_yaml(text, path)?;
-    // serde has checked the shapes; what is left has no position of its own, so point at
-    // the `frames:` key line
-    let frames_line = text
+    let data = text
         .lines()
-        .position(|l| l.trim_start().starts_with("frames:"))
-        .map(|i| i as u64 + 1);
-    let bad = |field: String, message: String| Err(located(path, frames_line, &field, message));
+        .any(|l| !l.trim().is_empty() && !l.trim_start().starts_with('#'));
+    if !data {
+        return Err(located(
+            path,
+            Some(1),
+            "frames",
+            "the file has no data".into(),
+        ));
+    }
+    let y: YamlTracks = parse_yaml(text, path)?;
+    // serde has checked the shapes; what is left is found by its field path
+    let bad = |field: String, message: String| {
+        let line = line_of(text, &field).or_else(|| line_of(text, "frames"));
+        Err(located(path, line, &field, message))
+    };
     if y.frames.is_empty() {
         return bad("frames".into(), "no frames".into());
     }
@@ -117,7 +126,8 @@ fn parse_yaml_tracks(text: &str, path: &Path) -> Result<Tracks> {
         }
         frames.push(f.iter().map(|xy| Vector2::new(xy[0], xy[1])).collect());
     }
-    Tracks::new(names, frames).map_err(|e| located(path, frames_line, "frames", e.to_string()))
+    Tracks::new(names, frames)
+        .map_err(|e| located(path, line_of(text, "frames"), "frames", e.to_string()))
 }
 
 fn parse_csv(text: &str, path: &Path, order: PointOrder) -> Result<Tracks> {
@@ -300,7 +310,7 @@ mod tests {
         .unwrap_err();
         assert_eq!(
             e.to_string(),
-            "t.yaml:1: field `frames[1]`: 1 points, but frame 1 has 2"
+            "t.yaml:3: field `frames[1]`: 1 points, but frame 1 has 2"
         );
     }
 }

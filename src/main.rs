@@ -238,7 +238,7 @@ fn run(cli: Cli) -> Result<(), Error> {
                 MethodArg::P3f3 => Method::P3f3,
                 MethodArg::P3f4 => Method::P3f4,
             };
-            let solved = solve_tracks(&tracks, method)?;
+            let solved = solve_tracks(&tracks, method).map_err(|e| in_file(&input, e))?;
             if json {
                 println!("{}", to_json(&report::solve_json(&solved)));
             } else {
@@ -359,6 +359,22 @@ fn noise(
         eprintln!();
     }
     Ok(out)
+}
+
+/// An input that parsed but cannot be used is still the user's file's fault: name it.
+fn in_file(path: &Path, e: Error) -> Error {
+    match e {
+        Error::InvalidInput(message) => Error::Input {
+            location: orthocheck::error::InputLocation {
+                file: path.to_path_buf(),
+                line: None,
+                column: None,
+                field: None,
+            },
+            message,
+        },
+        e => e,
+    }
 }
 
 /// Write a file that must not exist yet: a user's file is never overwritten.

@@ -166,8 +166,30 @@ pub enum CaseCheck {
     P3f3Census(CensusCase),
     /// §3's uniqueness over generic and special motions.
     P3f4Census(CensusCase),
+    /// Claims the paper gives no data for: what is printed and what a reproduction lacks.
+    NotReproducible(NotReproducibleCase),
     /// A noise study (§2, §3).
     NoiseStudy(NoiseStudyCase),
+}
+
+/// Claims without data.
+#[derive(Clone, Debug, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct NotReproducibleCase {
+    /// One entry per claim.
+    pub claims: Vec<MissingData>,
+}
+
+/// One claim the paper gives no data for.
+#[derive(Clone, Debug, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct MissingData {
+    /// The claim.
+    pub claim: ClaimRef,
+    /// What the paper does print about it.
+    pub printed: String,
+    /// What a reproduction would need and the paper does not give.
+    pub missing: Vec<String>,
 }
 
 /// A noise study as the paper reports it.
@@ -518,13 +540,14 @@ fn field_of(message: &str) -> Option<String> {
 
 /// The 1-based line of a dotted field path (`check.dof_count.examples[1].points`) in
 /// block-style YAML, for errors found after parsing.
-fn line_of(text: &str, field: &str) -> Option<u64> {
+pub(crate) fn line_of(text: &str, field: &str) -> Option<u64> {
     let lines: Vec<&str> = text.lines().collect();
     let indent = |l: &str| l.len() - l.trim_start().len();
     let (mut pos, mut min_indent) = (0usize, 0usize);
     for segment in field.split('.') {
         let (key, index) = match segment.split_once('[') {
-            Some((k, i)) => (k, i.trim_end_matches(']').parse::<usize>().ok()),
+            // the first index only: deeper ones sit in flow sequences on the item's line
+            Some((k, i)) => (k, i.split(']').next().and_then(|n| n.parse::<usize>().ok())),
             None => (segment, None),
         };
         let found = (pos..lines.len()).find(|&i| {
@@ -675,6 +698,14 @@ fn validate(case: &Case, text: &str, path: &Path) -> Result<()> {
                         "frames must be {}",
                         if needed == 3 { "3" } else { "at least 4" }
                     ),
+                );
+            }
+        }
+        CaseCheck::NotReproducible(c) => {
+            if let Some(i) = c.claims.iter().position(|m| m.missing.is_empty()) {
+                return err(
+                    &format!("check.not_reproducible.claims[{i}].missing"),
+                    "say what is missing".into(),
                 );
             }
         }

@@ -195,5 +195,20 @@ pub fn run_case(case: &Case) -> Result<Vec<ClaimResult>> {
         CaseCheck::P3f3Census(c) => p3f3::check_census(&b, c),
         CaseCheck::P3f4Census(c) => p3f3::check_p3f4_census(&b, c),
         CaseCheck::NoiseStudy(c) => noise::check(&b, c),
+        CaseCheck::NotReproducible(c) => Ok(c
+            .claims
+            .iter()
+            .map(|m| {
+                b.result(
+                    &m.claim,
+                    None,
+                    Verdict::NotReproducible,
+                    m.printed.clone(),
+                    format!("missing: {}", m.missing.join("; ")),
+                    None,
+                    Evidence::new("nothing to compute: the paper does not print the data"),
+                )
+            })
+            .collect()),
     }
 }

@@ -150,3 +150,172 @@ fn a_missing_cases_folder_exits_2() {
     assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).contains("no-such-folder"));
 }
+
+#[test]
+fn every_bad_tracks_file_exits_2_with_its_error() {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/bad_tracks");
+    let mut checked = 0;
+    for entry in std::fs::read_dir(&dir).unwrap() {
+        let path = entry.unwrap().path();
+        let text = std::fs::read_to_string(&path).unwrap();
+        let expected = text
+            .lines()
+            .next()
+            .unwrap()
+            .strip_prefix("# expect: ")
+            .unwrap();
+        let rel = format!(
+            "tests/bad_tracks/{}",
+            path.file_name().unwrap().to_str().unwrap()
+        );
+        let out = orthocheck(&["solve", "--input", &rel]);
+        assert_eq!(out.status.code(), Some(2), "{rel}");
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(err.trim_end(), format!("error: {rel}{expected}"), "{rel}");
+        checked += 1;
+    }
+    assert!(checked >= 10, "only {checked} bad tracks files");
+}
+
+#[test]
+fn synth_then_solve_recovers_the_truth_in_both_formats() {
+    let dir = tempfile::tempdir().unwrap();
+    for (frames, format, method) in [(3, "yaml", "p3f3"), (6, "csv", "p3f4")] {
+        let file = dir.path().join(format!("t.{format}"));
+        let out = orthocheck(&[
+            "synth",
+            "--points",
+            "3",
+            "--frames",
+            &frames.to_string(),
+            "--seed",
+            "4",
+            "--format",
+            format,
+            "--out",
+            file.to_str().unwrap(),
+        ]);
+        assert_eq!(out.status.code(), Some(0));
+        let text = std::fs::read_to_string(&file).unwrap();
+        // the truth is in the header: "# true squared edges: PQ=… QR=… RP=…"
+        let truth: Vec<f64> = text
+            .lines()
+            .find_map(|l| l.strip_prefix("# true squared edges: "))
+            .unwrap()
+            .split_whitespace()
+            .map(|kv| kv.split_once('=').unwrap().1.parse().unwrap())
+            .collect();
+        let out = orthocheck(&["solve", "--input", file.to_str().unwrap(), "--json"]);
+        assert_eq!(
+            out.status.code(),
+            Some(0),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let v = json(&out);
+        assert_eq!(v["method"], method);
+        assert!(v["degenerate"].is_null());
+        let found = v["solutions"].as_array().unwrap().iter().any(|s| {
+            s["feasible"] == true
+                && ["PQ", "QR", "RP"].iter().zip(&truth).all(|(e, t)| {
+                    // the header prints six significant digits
+                    (s["squared_edges"][e].as_f64().unwrap() - t).abs() <= 5e-6 * t
+                })
+        });
+        assert!(found, "{v}");
+        for key in ["residual", "reason", "squared_edges", "feasible"] {
+            assert!(v["solutions"][0].get(key).is_some(), "missing {key}");
+        }
+    }
+    // an existing file is never overwritten
+    let file = dir.path().join("t.yaml");
+    let before = std::fs::read(&file).unwrap();
+    let out = orthocheck(&[
+        "synth",
+        "--points",
+        "3",
+        "--frames",
+        "3",
+        "--seed",
+        "9",
+        "--out",
+        file.to_str().unwrap(),
+    ]);
+    assert_eq!(out.status.code(), Some(2));
+    assert_eq!(std::fs::read(&file).unwrap(), before);
+}
+
+#[test]
+fn solve_auto_says_why_and_refuses_what_it_cannot_do() {
+    let out = orthocheck(&["solve", "--input", "tests/bad_tracks/two_frames.yaml"]);
+    assert_eq!(out.status.code(), Some(2));
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("t.yaml");
+    orthocheck(&[
+        "synth",
+        "--points",
+        "3",
+        "--frames",
+        "3",
+        "--seed",
+        "1",
+        "--out",
+        file.to_str().unwrap(),
+    ]);
+    let out = orthocheck(&[
+        "solve",
+        "--input",
+        file.to_str().unwrap(),
+        "--method",
+        "p3f4",
+    ]);
+    assert_eq!(out.status.code(), Some(2));
+    let out = orthocheck(&["solve", "--input", file.to_str().unwrap()]);
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        text.starts_with("method: p3f3 (3 points in 3 frames"),
+        "{text}"
+    );
+}
+
+#[test]
+fn noise_is_seeded_and_agrees_with_itself() {
+    let args = [
+        "noise",
+        "--case",
+        "ex2-noise",
+        "--levels",
+        "0.01",
+        "--trials",
+        "500",
+        "--seed",
+        "3",
+        "--model",
+        "relative-length",
+        "--json",
+    ];
+    let a = orthocheck(&args);
+    assert_eq!(
+        a.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&a.stderr)
+    );
+    assert_eq!(a.stdout, orthocheck(&args).stdout);
+    let v = json(&a);
+    let rows = v.as_array().unwrap();
+    assert_eq!(rows.len(), 1);
+    assert_eq!(rows[0]["model"], "relative-length");
+    assert_eq!(rows[0]["trials"], 500);
+    assert_eq!(rows[0]["metrics"].as_array().unwrap().len(), 4);
+    assert_eq!(
+        orthocheck(&["noise", "--case", "dof-counts"]).status.code(),
+        Some(2)
+    );
+    assert_eq!(
+        orthocheck(&["noise", "--case", "ex2-noise", "--levels", "-1"])
+            .status
+            .code(),
+        Some(2)
+    );
+}

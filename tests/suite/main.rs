@@ -6,3 +6,5 @@ mod algebra_props;
 mod cli;
 /// The paper cases cover the claims this tool must decide.
 mod inventory;
+/// Property tests of the solvers on seeded random scenes, generic and degenerate.
+mod solver_props;
