@@ -1,10 +1,11 @@
-//! Speed goals of the three-point solvers: p3f3 from projected squared lengths (all roots and
-//! feasibility), p3f4, and a noise study of 10⁶ p3f3 trials on every core.
+//! Speed goals of the solvers: p3f3 from projected squared lengths (all roots and
+//! feasibility), p3f4, p4f3, the least-squares form, and a noise study of 10⁶ p3f3 trials on
+//! every core.
 
 use criterion::{criterion_group, criterion_main, BatchSize, Criterion};
 use orthocheck::derivations::noise::{run_level, Study, StudySolver};
 use orthocheck::derivations::solver::SquaredLengths;
-use orthocheck::derivations::{p3f3, p3f4};
+use orthocheck::derivations::{p3f3, p3f4, p4f3};
 use orthocheck::model::{Body, NoiseModel, Scene};
 
 /// Projected squared lengths (PQ, QR, RP) of `k` frames of seeded random scenes.
@@ -38,6 +39,28 @@ fn solvers(c: &mut Criterion) {
     });
 }
 
+fn four_points(c: &mut Criterion) {
+    // goal: ≤ 1 µs per p4f3 solve, with the feasibility and realizability checks
+    let inst: Vec<[[f64; 6]; 3]> = (0..1000u64)
+        .map(|seed| {
+            let l = SquaredLengths::from_tracks(&Scene::random(4, 3, seed).tracks());
+            std::array::from_fn(|i| std::array::from_fn(|e| l.frames[i][e]))
+        })
+        .collect();
+    let mut i = 0;
+    c.bench_function("p4f3_core", |b| {
+        b.iter(|| {
+            i = if i + 1 == inst.len() { 0 } else { i + 1 };
+            p4f3::solve_core(std::hint::black_box(&inst[i]))
+        })
+    });
+    // goal: ≤ 1 ms for the least-squares form over every triangle, 20 points × 10 frames
+    let big = SquaredLengths::from_tracks(&Scene::random(20, 10, 1).tracks());
+    c.bench_function("lsq_p20_k10", |b| {
+        b.iter(|| p4f3::solve_least_squares(std::hint::black_box(&big)).expect("solves"))
+    });
+}
+
 fn noise_study(c: &mut Criterion) {
     // goal: < 2 s for 10⁶ p3f3 trials on two cores
     let study = Study {
@@ -46,6 +69,7 @@ fn noise_study(c: &mut Criterion) {
         frames: 3,
         trials: 1_000_000,
         seed: 1,
+        motions: None,
     };
     let mut g = c.benchmark_group("noise");
     g.sample_size(10);
@@ -59,5 +83,5 @@ fn noise_study(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, solvers, noise_study);
+criterion_group!(benches, solvers, four_points, noise_study);
 criterion_main!(benches);

@@ -75,7 +75,8 @@ enum Command {
         /// (`frame,point,x,y`).
         #[arg(long)]
         input: PathBuf,
-        /// Solver; `auto` picks from the number of points and frames.
+        /// Solver; `auto` picks from the number of points and frames (p3f3, p3f4, p4f3, or
+        /// lsq for p ≥ 4 points in k ≥ 3 frames).
         #[arg(long, value_enum, default_value = "auto")]
         method: MethodArg,
         /// JSON output.
@@ -140,6 +141,8 @@ enum MethodArg {
     Auto,
     P3f3,
     P3f4,
+    P4f3,
+    Lsq,
 }
 
 #[derive(Clone, Copy, ValueEnum)]
@@ -237,6 +240,8 @@ fn run(cli: Cli) -> Result<(), Error> {
                 MethodArg::Auto => Method::Auto,
                 MethodArg::P3f3 => Method::P3f3,
                 MethodArg::P3f4 => Method::P3f4,
+                MethodArg::P4f3 => Method::P4f3,
+                MethodArg::Lsq => Method::Lsq,
             };
             let solved = solve_tracks(&tracks, method).map_err(|e| in_file(&input, e))?;
             if json {

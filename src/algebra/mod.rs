@@ -1,6 +1,8 @@
 //! Exact and floating algebra: polynomials over ℚ, exact root isolation, float roots, rank.
 
 mod float_roots;
+mod interval;
+mod lanczos;
 mod newton;
 mod poly;
 mod rank;
@@ -10,9 +12,11 @@ pub use float_roots::{
     closed_form_real, companion_roots, compare_methods, quadratic, quadratic_roots, EigenMethod,
     RootAgreement,
 };
+pub use interval::Interval;
+pub use lanczos::largest_eigenvalue;
 pub use newton::min_norm_newton;
 pub use poly::{parse_decimal, Monomial, Poly};
-pub use rank::{exact_rank, svd_rank, svd_rank_above, ExactRankMethod, SvdRank};
+pub use rank::{exact_rank, exact_solve, svd_rank, svd_rank_above, ExactRankMethod, SvdRank};
 pub use sturm::{RealRoot, UPoly};
 
 use num_rational::BigRational;

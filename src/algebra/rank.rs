@@ -131,6 +131,51 @@ fn bareiss_rank(rows: &[Vec<BigRational>]) -> usize {
     rank
 }
 
+/// Solve the square system `A x = b` exactly over ℚ (Gauss–Jordan with exact pivots);
+/// `None` when A is singular.
+///
+/// # Example
+/// ```
+/// use orthocheck::algebra::{exact_solve, rat};
+/// let a = vec![vec![rat(2, 1), rat(1, 1)], vec![rat(1, 1), rat(3, 1)]];
+/// let x = exact_solve(&a, &[rat(3, 1), rat(5, 1)]).unwrap();
+/// assert_eq!(x, [rat(4, 5), rat(7, 5)]);
+/// ```
+pub fn exact_solve(a: &[Vec<BigRational>], b: &[BigRational]) -> Option<Vec<BigRational>> {
+    let n = a.len();
+    if b.len() != n || a.iter().any(|r| r.len() != n) {
+        return None;
+    }
+    let mut m: Vec<Vec<BigRational>> = a
+        .iter()
+        .zip(b)
+        .map(|(r, bi)| {
+            r.iter()
+                .cloned()
+                .chain(std::iter::once(bi.clone()))
+                .collect()
+        })
+        .collect();
+    for c in 0..n {
+        let p = (c..n).find(|&r| !m[r][c].is_zero())?;
+        m.swap(c, p);
+        let inv = BigRational::one() / &m[c][c];
+        for v in m[c].iter_mut() {
+            *v = &*v * &inv;
+        }
+        for r in 0..n {
+            if r != c && !m[r][c].is_zero() {
+                let f = m[r][c].clone();
+                let pivot = m[c].clone();
+                for (v, p) in m[r].iter_mut().zip(&pivot).skip(c) {
+                    *v -= &f * p;
+                }
+            }
+        }
+    }
+    Some(m.into_iter().map(|r| r[n].clone()).collect())
+}
+
 /// Numerical rank by singular values.
 #[derive(Clone, Debug, serde::Serialize)]
 pub struct SvdRank {

@@ -162,6 +162,10 @@ pub enum CaseCheck {
     TwofoldSquared(TwofoldCase),
     /// §2's worked example.
     P3f3Example(P3f3ExampleCase),
+    /// §4's worked example.
+    P4f3Example(P4f3ExampleCase),
+    /// §4's uniqueness over generic and degenerate scenes.
+    P4f3Census(CensusCase),
     /// §2.2's solution count over generic and degenerate scenes.
     P3f3Census(CensusCase),
     /// §3's uniqueness over generic and special motions.
@@ -217,7 +221,7 @@ pub struct NoiseBody {
     /// The claim about the printed body, if any.
     #[serde(default)]
     pub claim: Option<ClaimRef>,
-    /// Printed lengths PQ, QR, RP.
+    /// Printed lengths in edge order (PQ, QR, RP, then TP, TQ, TR for four points).
     pub lengths: Vec<Printed>,
     /// Printed squares, if printed.
     #[serde(default)]
@@ -264,6 +268,20 @@ pub struct Statement {
     pub direction: Direction,
     /// The bound as a fraction ("0.002" for 0.2 %).
     pub bound: Printed,
+    /// How the edges' errors combine: the worst edge (default) or their mean ("on average").
+    #[serde(default)]
+    pub over_edges: OverEdges,
+}
+
+/// How a statement combines the errors of the edges.
+#[derive(Clone, Copy, Debug, Default, Deserialize, PartialEq, Eq)]
+#[serde(rename_all = "snake_case")]
+pub enum OverEdges {
+    /// The largest error over the edges.
+    #[default]
+    Max,
+    /// The mean error over the edges.
+    Mean,
 }
 
 /// The subject of a statement.
@@ -434,6 +452,45 @@ pub struct BodyTable {
     pub lengths: Vec<Printed>,
     /// Printed squares.
     pub squares: Vec<Printed>,
+    /// Significant digits the program printed with (trailing zeros dropped), when the
+    /// numbers are not exact.
+    #[serde(default)]
+    pub significant_digits: Option<u32>,
+}
+
+/// §4's example: the edge table, the figure, the printed coefficient matrix and solution.
+#[derive(Clone, Debug, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct P4f3ExampleCase {
+    /// The edge table (PQ, QR, RP, TP, TQ, TR).
+    pub body: BodyTable,
+    /// The figure: three frames of P, Q, R, T.
+    pub figure: FigureFrames,
+    /// The printed coefficient matrix.
+    pub matrix: PrintedMatrix,
+    /// The printed solution x1 … x6.
+    pub solution: PrintedSolutions,
+    /// The claim the conditioning result answers.
+    pub conditioning: ClaimRef,
+    /// The printed noise runs: each level is judged against random motions of the body and
+    /// against the figure's own scene.
+    pub noise: Vec<NoiseLevel>,
+    /// Monte Carlo trials per level, noise model and scene.
+    pub trials: usize,
+    /// Seed.
+    pub seed: u64,
+}
+
+/// A printed matrix: rows of printed numbers, the last column the constant.
+#[derive(Clone, Debug, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct PrintedMatrix {
+    /// The claim.
+    pub claim: ClaimRef,
+    /// Significant digits the program printed with.
+    pub significant_digits: u32,
+    /// The rows as printed.
+    pub rows: Vec<Vec<Printed>>,
 }
 
 /// Figure coordinates: frames of points, each `[x, y]` as printed.
@@ -655,31 +712,41 @@ fn validate(case: &Case, text: &str, path: &Path) -> Result<()> {
             )?;
         }
         CaseCheck::NoiseStudy(c) => {
-            if c.body.lengths.len() != 3
-                || !(c.body.squares.is_empty() || c.body.squares.len() == 3)
+            use crate::derivations::noise::StudySolver;
+            let edges = match c.solver {
+                StudySolver::P3f3 | StudySolver::P3f4 => 3,
+                StudySolver::P4f3 => 6,
+            };
+            if c.body.lengths.len() != edges
+                || !(c.body.squares.is_empty() || c.body.squares.len() == edges)
             {
                 return err(
                     "check.noise_study.body.lengths",
-                    "needs 3 lengths (and 3 squares if any)".into(),
+                    format!("the solver needs {edges} lengths (and {edges} squares if any)"),
                 );
             }
-            let needed = match c.solver {
-                crate::derivations::noise::StudySolver::P3f3 => c.frames == 3,
-                crate::derivations::noise::StudySolver::P3f4 => c.frames >= 4,
+            let frames_ok = match c.solver {
+                StudySolver::P3f3 | StudySolver::P4f3 => c.frames == 3,
+                StudySolver::P3f4 => c.frames >= 4,
             };
-            if !needed {
+            if !frames_ok {
                 return err(
                     "check.noise_study.frames",
-                    "p3f3 needs 3 frames, p3f4 at least 4".into(),
+                    "p3f3 and p4f3 need 3 frames, p3f4 at least 4".into(),
                 );
             }
             for (i, l) in c.levels.iter().enumerate() {
-                if l.printed.is_empty() || l.printed.iter().any(|p| p.len() != 3) {
+                if l.printed.is_empty() || l.printed.iter().any(|p| p.len() != edges) {
                     return err(
                         &format!("check.noise_study.levels[{i}].printed"),
-                        "needs solutions of 3 values".into(),
+                        format!("needs solutions of {edges} values"),
                     );
                 }
+            }
+        }
+        CaseCheck::P4f3Census(c) => {
+            if c.trials == 0 || c.claims.is_empty() || c.frames != 3 {
+                return err("check", "needs a claim, a trial and 3 frames".into());
             }
         }
         CaseCheck::P3f3Census(c) | CaseCheck::P3f4Census(c) => {
@@ -698,6 +765,43 @@ fn validate(case: &Case, text: &str, path: &Path) -> Result<()> {
                         "frames must be {}",
                         if needed == 3 { "3" } else { "at least 4" }
                     ),
+                );
+            }
+        }
+        CaseCheck::P4f3Example(c) => {
+            let f = &c.figure.frames;
+            if f.len() != 3 || f.iter().any(|fr| fr.len() != 4) {
+                return err(
+                    "check.p4f3_example.figure.frames",
+                    "needs 3 frames of 4 points".into(),
+                );
+            }
+            if c.body.lengths.len() != 6 || c.body.squares.len() != 6 {
+                return err(
+                    "check.p4f3_example.body.lengths",
+                    "needs 6 lengths and 6 squares".into(),
+                );
+            }
+            if c.matrix.rows.len() != 6 || c.matrix.rows.iter().any(|r| r.len() != 7) {
+                return err(
+                    "check.p4f3_example.matrix.rows",
+                    "needs 6 rows of 7 numbers (x1 … x6 and the constant)".into(),
+                );
+            }
+            if let Some(i) = c
+                .noise
+                .iter()
+                .position(|l| l.printed.is_empty() || l.printed.iter().any(|p| p.len() != 6))
+            {
+                return err(
+                    &format!("check.p4f3_example.noise[{i}].printed"),
+                    "needs solutions of 6 values".into(),
+                );
+            }
+            if c.solution.values.len() != 1 || c.solution.values[0].len() != 6 {
+                return err(
+                    "check.p4f3_example.solution.values",
+                    "needs one solution of 6 values".into(),
                 );
             }
         }

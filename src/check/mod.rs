@@ -4,6 +4,7 @@
 mod dof;
 mod noise;
 mod p3f3;
+mod p4f3;
 mod twofold;
 
 pub use noise::{run_study, study_of};
@@ -192,6 +193,8 @@ pub fn run_case(case: &Case) -> Result<Vec<ClaimResult>> {
         CaseCheck::DofIdentifiability(c) => dof::check_identifiability(&b, c),
         CaseCheck::TwofoldSquared(c) => twofold::check(&b, c),
         CaseCheck::P3f3Example(c) => p3f3::check_example(&b, c),
+        CaseCheck::P4f3Example(c) => p4f3::check_example(&b, c),
+        CaseCheck::P4f3Census(c) => p4f3::check_census(&b, c),
         CaseCheck::P3f3Census(c) => p3f3::check_census(&b, c),
         CaseCheck::P3f4Census(c) => p3f3::check_p3f4_census(&b, c),
         CaseCheck::NoiseStudy(c) => noise::check(&b, c),

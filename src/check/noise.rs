@@ -1,8 +1,9 @@
 //! Claims of the noise studies (§2, §3): where the paper's runs fall in seeded distributions.
 
 use super::{ClaimResult, Evidence, ResultBuilder, Tolerance, Verdict};
-use crate::cases::{Direction, NoiseStudyCase, Quantity, StatementSubject};
+use crate::cases::{Direction, NoiseLevel, NoiseStudyCase, OverEdges, Quantity, StatementSubject};
 use crate::derivations::noise::{models, run_level, stream, LevelResult, Study, TrialError};
+use crate::derivations::p4f3::realize;
 use crate::error::Result;
 use crate::model::Body;
 use crate::numfmt::{sig, sig_list};
@@ -14,12 +15,34 @@ fn pct(x: f64) -> String {
 /// The study a noise case describes: its body, solver, frames, trials and seed.
 pub fn study_of(case: &NoiseStudyCase) -> Result<Study> {
     let l: Vec<f64> = case.body.lengths.iter().map(|p| p.to_f64()).collect();
+    let body = if l.len() == 3 {
+        Body::triangle(l[0], l[1], l[2])?
+    } else {
+        // more points: realize the printed squares (or the squares of the printed lengths)
+        let squares: Vec<f64> = if case.body.squares.is_empty() {
+            l.iter().map(|x| x * x).collect()
+        } else {
+            case.body.squares.iter().map(|p| p.to_f64()).collect()
+        };
+        let p = (1..)
+            .find(|p| p * (p - 1) / 2 >= squares.len())
+            .unwrap_or(2);
+        let r = realize(&squares, p);
+        if !r.realizable {
+            return Err(crate::error::Error::InvalidInput(format!(
+                "the printed edges are not realizable in 3-D (Gram eigenvalues {:?})",
+                r.eigenvalues
+            )));
+        }
+        Body::new(r.points)
+    };
     Ok(Study {
         solver: case.solver,
-        body: Body::triangle(l[0], l[1], l[2])?,
+        body,
         frames: case.frames,
         trials: case.trials,
         seed: case.seed,
+        motions: None,
     })
 }
 
@@ -41,7 +64,14 @@ pub fn run_study(case: &NoiseStudyCase) -> Result<Vec<[LevelResult; 2]>> {
 pub(super) fn check(b: &ResultBuilder, case: &NoiseStudyCase) -> Result<Vec<ClaimResult>> {
     let mut out = Vec::new();
     let lengths: Vec<f64> = case.body.lengths.iter().map(|p| p.to_f64()).collect();
-    let truth: Vec<f64> = lengths.iter().map(|x| x * x).collect();
+    // the printed squares when there are any (the runs are compared with them), else the
+    // squares of the printed lengths
+    let truth: Vec<f64> = if case.body.squares.is_empty() {
+        lengths.iter().map(|x| x * x).collect()
+    } else {
+        case.body.squares.iter().map(|p| p.to_f64()).collect()
+    };
+    let names = crate::derivations::solver::default_edge_names(truth.len());
 
     if let Some(claim) = &case.body.claim {
         let digits = case.body.significant_digits.unwrap_or(6);
@@ -89,6 +119,13 @@ pub(super) fn check(b: &ResultBuilder, case: &NoiseStudyCase) -> Result<Vec<Clai
     }
 
     let results = run_study(case)?;
+    let judge = Judge {
+        truth: &truth,
+        lengths: &lengths,
+        names: &names,
+        trials: case.trials,
+        seed: case.seed,
+    };
     for (lv, res) in case.levels.iter().zip(&results) {
         // one claim quoted at several levels gets one result per level
         let repeated = case
@@ -97,6 +134,39 @@ pub(super) fn check(b: &ResultBuilder, case: &NoiseStudyCase) -> Result<Vec<Clai
             .filter(|l| l.claim.claim == lv.claim.claim)
             .count()
             > 1;
+        out.extend(judge.level(b, lv, repeated, res));
+    }
+    Ok(out)
+}
+
+/// What a printed noise level is judged against.
+pub(super) struct Judge<'a> {
+    /// True squared edges.
+    pub truth: &'a [f64],
+    /// True lengths.
+    pub lengths: &'a [f64],
+    /// Edge names.
+    pub names: &'a [String],
+    /// Trials per distribution.
+    pub trials: usize,
+    /// Seed.
+    pub seed: u64,
+}
+
+impl Judge<'_> {
+    /// The results for one printed level against the distributions `res` (one per noise
+    /// model or scene); `repeated` when the claim is quoted at several levels, so each
+    /// level's result gets its own id.
+    pub(super) fn level(
+        &self,
+        b: &ResultBuilder,
+        lv: &NoiseLevel,
+        repeated: bool,
+        res: &[LevelResult],
+    ) -> Vec<ClaimResult> {
+        let (truth, lengths, names) = (self.truth, self.lengths, self.names);
+        let case = self;
+        let mut out = Vec::new();
         let level_id = format!("eps-{}", lv.level.text);
         let suffix = |s: Option<&str>| match (repeated, s) {
             (true, Some(s)) => Some(format!("{level_id}/{s}")),
@@ -112,7 +182,7 @@ pub(super) fn check(b: &ResultBuilder, case: &NoiseStudyCase) -> Result<Vec<Clai
                 .map(|(a, b)| ((a - b) / b).abs())
                 .fold(0.0, f64::max)
         };
-        let as_squares = near(&truth) <= near(&lengths);
+        let as_squares = near(truth) <= near(lengths);
         let quantity = if as_squares {
             Quantity::Squares
         } else {
@@ -131,12 +201,12 @@ pub(super) fn check(b: &ResultBuilder, case: &NoiseStudyCase) -> Result<Vec<Clai
                 format!(
                     "the values are {}: within {} of the true {} {}, but {} from the true {} {}; read them as {}",
                     if as_squares { "squared lengths" } else { "lengths" },
-                    pct(near(if as_squares { &truth } else { &lengths })),
+                    pct(near(if as_squares { truth } else { lengths })),
                     if as_squares { "squares" } else { "lengths" },
-                    sig_list(if as_squares { &truth } else { &lengths }),
-                    pct(near(if as_squares { &lengths } else { &truth })),
+                    sig_list(if as_squares { truth } else { lengths }),
+                    pct(near(if as_squares { lengths } else { truth })),
                     if as_squares { "lengths" } else { "squares" },
-                    sig_list(if as_squares { &lengths } else { &truth }),
+                    sig_list(if as_squares { lengths } else { truth }),
                     if as_squares { "a², b², c²" } else { "a, b, c" }
                 ),
                 None,
@@ -148,11 +218,11 @@ pub(super) fn check(b: &ResultBuilder, case: &NoiseStudyCase) -> Result<Vec<Clai
         } else {
             first.iter().map(|x| x * x).collect()
         };
-        let example = TrialError::of(&squares_of_first, &truth);
+        let example = TrialError::of(&squares_of_first, truth);
         let mut ev = Evidence::new(
-            "seeded Monte Carlo: the body under uniformly random rotations in every frame, P at the origin, \
-             noise, the solver, and the real solution nearest the truth; errors relative to the truth, \
-             largest over the three edges",
+            "seeded Monte Carlo: the body under uniformly random rotations in every frame (or at the \
+             paper's own scene where the model says so), P at the origin, noise, the solver, and the real \
+             solution nearest the truth; errors relative to the truth, largest over the edges unless said otherwise",
         )
         .with("trials per model (seed)", format!("{} ({})", case.trials, case.seed))
         .with("printed values read as", if as_squares { "squared lengths" } else { "lengths" });
@@ -162,9 +232,48 @@ pub(super) fn check(b: &ResultBuilder, case: &NoiseStudyCase) -> Result<Vec<Clai
                 format!("{} / {}", pct(e.max_squares), pct(e.max_lengths)),
             );
         }
+        // with more than three edges, say which edges err how much
+        let per_edge = truth.len() > 3;
+        if let (true, Some(sq)) = (per_edge, Some(&squares_of_first)) {
+            let errs: Vec<String> = names
+                .iter()
+                .zip(sq.iter().zip(truth))
+                .map(|(n, (x, t))| {
+                    format!(
+                        "{n} {} / {}",
+                        pct((x / t - 1.0).abs()),
+                        pct(((x / t).sqrt() - 1.0).abs())
+                    )
+                })
+                .collect();
+            ev = ev.with(
+                "printed run, per edge: error in squares / in lengths",
+                errs.join("; "),
+            );
+        }
         let mut summary = Vec::new();
         for r in res {
             let q = |m: usize, p: f64| r.quantile(m, p).map_or("-".into(), pct);
+            if per_edge {
+                let med: Vec<String> = names
+                    .iter()
+                    .enumerate()
+                    .map(|(e, n)| {
+                        let m = |l: bool| {
+                            crate::derivations::rounding::quantile(&r.edge_errors(e, l), 0.5)
+                                .map_or("-".into(), pct)
+                        };
+                        format!("{n} {} / {}", m(false), m(true))
+                    })
+                    .collect();
+                ev = ev.with(
+                    &format!(
+                        "{} model: median error per edge, squares / lengths",
+                        r.model
+                    ),
+                    med.join("; "),
+                );
+            }
             ev = ev.with(
                 &format!("{} model: failures", r.model),
                 format!("{} of {}", r.failures, r.trials),
@@ -227,14 +336,47 @@ pub(super) fn check(b: &ResultBuilder, case: &NoiseStudyCase) -> Result<Vec<Clai
             paper_value.push_str(&format!("; error {word} {}", pct(bound)));
             match st.about {
                 StatementSubject::Example => {
+                    let (ms, ml, how) = match st.over_edges {
+                        OverEdges::Max => (0, 2, "largest over the edges"),
+                        OverEdges::Mean => (1, 3, "mean over the edges"),
+                    };
                     if let Some(e) = example {
+                        let m = e.metrics();
                         summary.push(format!(
-                            "the printed run's error is {} in squares ({word} {}: {}), {} in lengths ({})",
-                            pct(e.max_squares),
+                            "the printed run's error ({how}) is {} in squares ({word} {}: {}), {} in lengths ({})",
+                            pct(m[ms]),
                             pct(bound),
-                            holds(e.max_squares),
-                            pct(e.max_lengths),
-                            holds(e.max_lengths)
+                            holds(m[ms]),
+                            pct(m[ml]),
+                            holds(m[ml])
+                        ));
+                    }
+                    if per_edge {
+                        let which = |lengths: bool| {
+                            let v: Vec<&str> = names
+                                .iter()
+                                .zip(squares_of_first.iter().zip(truth))
+                                .filter(|(_, (x, t))| {
+                                    let r = *x / *t;
+                                    holds(if lengths {
+                                        (r.sqrt() - 1.0).abs()
+                                    } else {
+                                        (r - 1.0).abs()
+                                    })
+                                })
+                                .map(|(n, _)| n.as_str())
+                                .collect();
+                            if v.is_empty() {
+                                "none".to_string()
+                            } else {
+                                v.join(", ")
+                            }
+                        };
+                        summary.push(format!(
+                            "edges whose own error is {word} {}: {} in squares, {} in lengths",
+                            pct(bound),
+                            which(false),
+                            which(true)
                         ));
                     }
                     for r in res {
@@ -244,11 +386,11 @@ pub(super) fn check(b: &ResultBuilder, case: &NoiseStudyCase) -> Result<Vec<Clai
                         };
                         ev = ev.with(
                             &format!(
-                                "{} model: trials whose error is {word} {} (squares / lengths)",
+                                "{} model: trials whose error ({how}) is {word} {} (squares / lengths)",
                                 r.model,
                                 pct(bound)
                             ),
-                            format!("{} / {}", pct(frac(0)), pct(frac(2))),
+                            format!("{} / {}", pct(frac(ms)), pct(frac(ml))),
                         );
                     }
                 }
@@ -297,8 +439,8 @@ pub(super) fn check(b: &ResultBuilder, case: &NoiseStudyCase) -> Result<Vec<Clai
             None,
             ev,
         ));
+        out
     }
-    Ok(out)
 }
 
 fn texts(v: &[crate::cases::Printed]) -> String {

@@ -5,6 +5,7 @@ pub mod dof;
 pub mod noise;
 pub mod p3f3;
 pub mod p3f4;
+pub mod p4f3;
 pub mod rounding;
 pub mod solver;
 pub mod twofold;

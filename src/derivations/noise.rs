@@ -8,8 +8,9 @@ use rand::SeedableRng;
 use rand_chacha::ChaCha8Rng;
 use rayon::prelude::*;
 
+use super::solver::edges;
 use super::solver::SquaredLengths;
-use super::{p3f3, p3f4};
+use super::{p3f3, p3f4, p4f3};
 use crate::model::{random_rotation, Body, Motion, NoiseModel, Scene};
 
 /// Which solver a study runs.
@@ -20,6 +21,8 @@ pub enum StudySolver {
     P3f3,
     /// §3: three points, four frames.
     P3f4,
+    /// §4: four points, three frames.
+    P4f3,
 }
 
 /// Error of one trial's best solution against the truth.
@@ -76,7 +79,7 @@ pub struct LevelResult {
     /// ε.
     pub level: f64,
     /// The noise model's name.
-    pub model: &'static str,
+    pub model: String,
     /// Trials run.
     pub trials: usize,
     /// Trials without a real solution with non-negative squares.
@@ -84,6 +87,12 @@ pub struct LevelResult {
     /// Errors of the successful trials, sorted per metric (`sorted[m]` for metric `m`).
     #[serde(skip)]
     pub sorted: [Vec<f64>; 4],
+    /// Per successful trial, recovered over true squared edge for every edge (trial-major,
+    /// `edges` values per trial): the per-edge errors in squares and in lengths follow.
+    #[serde(skip)]
+    pub ratios: Vec<f64>,
+    /// Edges per trial.
+    pub edges: usize,
 }
 
 impl LevelResult {
@@ -99,6 +108,24 @@ impl LevelResult {
             return f64::NAN;
         }
         v.iter().sum::<f64>() / v.len() as f64
+    }
+
+    /// The sorted relative errors of edge `e` over the successful trials, in squares
+    /// (|x/t − 1|) or in lengths (|√(x/t) − 1|).
+    pub fn edge_errors(&self, e: usize, lengths: bool) -> Vec<f64> {
+        let mut v: Vec<f64> = self
+            .ratios
+            .chunks(self.edges.max(1))
+            .map(|r| {
+                if lengths {
+                    (r[e].sqrt() - 1.0).abs()
+                } else {
+                    (r[e] - 1.0).abs()
+                }
+            })
+            .collect();
+        v.sort_by(f64::total_cmp);
+        v
     }
 
     /// Fraction of successful trials with metric `m` not above `x`.
@@ -156,6 +183,8 @@ pub struct Study {
     pub trials: usize,
     /// Seed.
     pub seed: u64,
+    /// Fixed motions (one per frame) instead of random ones: the paper's own scene.
+    pub motions: Option<Vec<Motion>>,
 }
 
 /// Run one level: random motions of the body, noise, solve, error of the real solution
@@ -173,8 +202,9 @@ pub fn run_level(
         frames,
         trials,
         seed,
+        ref motions,
     } = *study;
-    let truth: Vec<f64> = [(0, 1), (1, 2), (2, 0)]
+    let truth: Vec<f64> = edges(body.points.len())
         .iter()
         .map(|&(i, j)| body.squared_distance(i, j))
         .collect();
@@ -182,20 +212,37 @@ pub fn run_level(
         NoiseModel::RelativeCoordinate { eps } | NoiseModel::RelativeLength { eps } => eps,
     };
     let chunks = trials.div_ceil(CHUNK);
-    let results: Vec<Vec<Option<TrialError>>> = (0..chunks)
+    // per chunk: the ratios of its successful trials, flat
+    let results: Vec<Vec<f64>> = (0..chunks)
         .into_par_iter()
         .map(|c| {
             let mut g = ChaCha8Rng::seed_from_u64(seed);
             g.set_stream((stream << 32) | c as u64);
             let n = CHUNK.min(trials - c * CHUNK);
-            let out: Vec<Option<TrialError>> = (0..n)
-                .map(|_| trial(solver, body, frames, model, &truth, &mut g))
-                .collect();
+            let mut out = Vec::with_capacity(n * truth.len());
+            for _ in 0..n {
+                trial(
+                    solver,
+                    body,
+                    frames,
+                    motions.as_deref(),
+                    model,
+                    &truth,
+                    &mut g,
+                    &mut out,
+                );
+            }
             progress(n);
             out
         })
         .collect();
-    let ok: Vec<TrialError> = results.iter().flatten().flatten().copied().collect();
+    let ratios: Vec<f64> = results.concat();
+    let e = truth.len();
+    let ones = vec![1.0; e];
+    let ok: Vec<TrialError> = ratios
+        .chunks(e)
+        .filter_map(|r| TrialError::of(r, &ones))
+        .collect();
     let mut sorted: [Vec<f64>; 4] =
         std::array::from_fn(|m| ok.iter().map(|e| e.metrics()[m]).collect());
     for v in &mut sorted {
@@ -203,29 +250,39 @@ pub fn run_level(
     }
     LevelResult {
         level,
-        model: model.name(),
+        model: model.name().to_string(),
         trials,
         failures: trials - ok.len(),
         sorted,
+        ratios,
+        edges: e,
     }
 }
 
+/// One trial: random (or the fixed) motions, noise, solve; appends the best solution's ratios to `out`
+/// (nothing when no real solution with non-negative squares exists).
+#[allow(clippy::too_many_arguments)]
 fn trial(
     solver: StudySolver,
     body: &Body,
     frames: usize,
+    fixed: Option<&[Motion]>,
     model: NoiseModel,
     truth: &[f64],
     g: &mut ChaCha8Rng,
-) -> Option<TrialError> {
+    out: &mut Vec<f64>,
+) {
     let scene = Scene {
         body: body.clone(),
-        motions: (0..frames)
-            .map(|_| Motion {
-                rotation: random_rotation(g),
-                translation: nalgebra::Vector2::zeros(),
-            })
-            .collect(),
+        motions: match fixed {
+            Some(m) => m.to_vec(),
+            None => (0..frames)
+                .map(|_| Motion {
+                    rotation: random_rotation(g),
+                    translation: nalgebra::Vector2::zeros(),
+                })
+                .collect(),
+        },
     };
     // P shifted to the origin in every frame, as in the paper's figures
     let mut tracks = scene.tracks();
@@ -242,7 +299,7 @@ fn trial(
             *v = model.perturb_length(v.sqrt(), g).powi(2);
         }
     }
-    let tri = |i: usize| {
+    let first3 = |i: usize| {
         [
             lengths.frames[i][0],
             lengths.frames[i][1],
@@ -250,29 +307,38 @@ fn trial(
         ]
     };
     // the allocation-free cores where the frame count allows (this loop runs 10⁶ times)
-    let candidates: Vec<[f64; 3]> = match (solver, frames) {
+    let candidates: Vec<Vec<f64>> = match (solver, frames) {
         (StudySolver::P3f3, _) => {
-            let core = p3f3::solve_core(&[tri(0), tri(1), tri(2)]);
+            let core = p3f3::solve_core(&[first3(0), first3(1), first3(2)]);
             (0..core.count)
                 .filter(|&k| core.imag[k] == [0.0; 3])
-                .map(|k| core.squares[k])
+                .map(|k| core.squares[k].to_vec())
                 .collect()
         }
-        (StudySolver::P3f4, 4) => p3f4::solve_core(&[tri(0), tri(1), tri(2), tri(3)])
-            .map(|(x, _)| x)
+        (StudySolver::P3f4, 4) => p3f4::solve_core(&[first3(0), first3(1), first3(2), first3(3)])
+            .map(|(x, _)| x.to_vec())
             .into_iter()
             .collect(),
         (StudySolver::P3f4, _) => p3f4::solve(&lengths)
-            .ok()?
-            .solutions
-            .iter()
-            .map(|s| [s.squared_edges[0], s.squared_edges[1], s.squared_edges[2]])
-            .collect(),
+            .map(|o| o.solutions.into_iter().map(|s| s.squared_edges).collect())
+            .unwrap_or_default(),
+        (StudySolver::P4f3, _) => {
+            let l: [[f64; 6]; 3] =
+                std::array::from_fn(|i| std::array::from_fn(|e| lengths.frames[i][e]));
+            p4f3::solve_core(&l)
+                .squares
+                .map(|x| x.to_vec())
+                .into_iter()
+                .collect()
+        }
     };
-    candidates
+    let best = candidates
         .iter()
-        .filter_map(|s| TrialError::of(s, truth))
-        .min_by(|a, b| a.max_squares.total_cmp(&b.max_squares))
+        .filter_map(|s| TrialError::of(s, truth).map(|e| (e, s)))
+        .min_by(|a, b| a.0.max_squares.total_cmp(&b.0.max_squares));
+    if let Some((_, s)) = best {
+        out.extend(s.iter().zip(truth).map(|(x, t)| x / t));
+    }
 }
 
 #[cfg(test)]
@@ -288,6 +354,7 @@ mod tests {
             frames: 3,
             trials: 300,
             seed: 1,
+            motions: None,
         };
         let r = run_level(&s3, NoiseModel::RelativeCoordinate { eps: 0.0 }, 0, &|_| {});
         assert_eq!(r.failures, 0);
@@ -298,6 +365,7 @@ mod tests {
             frames: 4,
             trials: 3000,
             seed: 9,
+            motions: None,
         };
         let a = run_level(&s4, NoiseModel::RelativeLength { eps: 0.01 }, 1, &|_| {});
         let pool = rayon::ThreadPoolBuilder::new()
@@ -339,7 +407,7 @@ pub struct LevelSummary {
     /// ε.
     pub level: f64,
     /// The noise model.
-    pub model: &'static str,
+    pub model: String,
     /// Trials run.
     pub trials: usize,
     /// Trials without a usable real solution.
@@ -353,7 +421,7 @@ impl LevelResult {
     pub fn summary(&self) -> LevelSummary {
         LevelSummary {
             level: self.level,
-            model: self.model,
+            model: self.model.clone(),
             trials: self.trials,
             failures: self.failures,
             metrics: (0..METRICS.len())

@@ -96,7 +96,10 @@ pub fn solve(input: &SquaredLengths) -> Result<SolverOutput> {
         condition: rank.condition,
     };
     if rank.rank < 3 {
-        out.degenerate = Some(Degenerate::SpecialMotion { rank: rank.rank });
+        out.degenerate = Some(Degenerate::SpecialMotion {
+            rank: rank.rank,
+            unknowns: 3,
+        });
         return Ok(out);
     }
     // Least squares by Householder QR (rank 3 is established): backward stable, and more
@@ -232,7 +235,7 @@ mod tests {
         let out = solve(&SquaredLengths::from_tracks(&scene.tracks())).unwrap();
         assert!(matches!(
             out.degenerate,
-            Some(Degenerate::SpecialMotion { rank: 0 })
+            Some(Degenerate::SpecialMotion { rank: 0, .. })
         ));
         assert!(out.solutions.is_empty());
     }

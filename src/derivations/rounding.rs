@@ -82,7 +82,34 @@ pub fn witness(
         x
     };
     let f = |u: &[f64]| residual(&embed(u));
-    let (u, r) = min_norm_newton(&f, &vec![0.0; free.len()], tolerance, 60)?;
+    let (mut u, mut r) = min_norm_newton(&f, &vec![0.0; free.len()], tolerance, 60)?;
+    // The minimum-norm point minimises the shift in the 2-norm; the box is a ∞-norm ball.
+    // When that point leaves the box, alternate: clamp into the box, then back onto the
+    // solutions by minimum-norm steps (clamping to 0.98 of the box, so that a box whose
+    // intersection with the solutions has an interior is entered, not only approached);
+    // keep the solution with the smallest largest shift.
+    let inf = |u: &[f64]| u.iter().fold(0.0_f64, |a, v| a.max(v.abs()));
+    let mut best = (u.clone(), r);
+    for _ in 0..200 {
+        if r > tolerance || inf(&best.0) <= 1.0 {
+            break;
+        }
+        let clamped: Vec<f64> = u.iter().map(|v| v.clamp(-0.98, 0.98)).collect();
+        let Some((v, rv)) = min_norm_newton(&f, &clamped, tolerance, 20) else {
+            break;
+        };
+        if rv > tolerance {
+            break;
+        }
+        if inf(&v) < inf(&best.0) {
+            best = (v.clone(), rv);
+        }
+        if inf(&v) >= inf(&u) - 1e-9 {
+            break;
+        }
+        (u, r) = (v, rv);
+    }
+    let (u, r) = if best.1 <= tolerance { best } else { (u, r) };
     let point = embed(&u);
     Some(Witness {
         shift_ratio: b.shift_ratio(&point),

@@ -34,6 +34,24 @@ pub fn edges(p: usize) -> Vec<(usize, usize)> {
     e
 }
 
+/// The names of the first `count` edges of a body with the default point names ("PQ", "QR",
+/// "RP", "TP", …).
+///
+/// # Example
+/// ```
+/// use orthocheck::derivations::solver::default_edge_names;
+/// assert_eq!(default_edge_names(4), ["PQ", "QR", "RP", "TP"]);
+/// ```
+pub fn default_edge_names(count: usize) -> Vec<String> {
+    let p = (2..).find(|p| p * (p - 1) / 2 >= count).unwrap_or(2);
+    let names = crate::model::default_names(p);
+    edges(p)
+        .iter()
+        .take(count)
+        .map(|&(i, j)| format!("{}{}", names[i], names[j]))
+        .collect()
+}
+
 /// Projected squared lengths of every edge in every frame.
 #[derive(Clone, Debug, PartialEq)]
 pub struct SquaredLengths {
@@ -111,6 +129,12 @@ pub enum Feasibility {
         /// The edge.
         edge: String,
     },
+    /// The squared edges are not the distances of any point set in 3-D: the Gram matrix
+    /// of the edge vectors from the first point has a negative eigenvalue.
+    NotRealizable {
+        /// The most negative eigenvalue.
+        eigenvalue: f64,
+    },
     /// An edge is shorter than its projection in some frame.
     ShorterThanProjection {
         /// The edge.
@@ -132,6 +156,10 @@ impl Feasibility {
             Feasibility::Feasible => "feasible".into(),
             Feasibility::Complex => "complex root".into(),
             Feasibility::NegativeSquare { edge } => format!("{edge}² is negative"),
+            Feasibility::NotRealizable { eigenvalue } => format!(
+                "not realizable in 3-D (Gram eigenvalue {})",
+                crate::numfmt::sig(*eigenvalue)
+            ),
             Feasibility::ShorterThanProjection { edge, frame } => {
                 format!("{edge} is shorter than its projection in frame {frame}")
             }
@@ -144,16 +172,18 @@ pub fn feasibility(squares: &[f64], imag: &[f64], input: &SquaredLengths) -> Fea
     if imag.iter().any(|v| *v != 0.0) {
         return Feasibility::Complex;
     }
-    let names = input.edge_names();
+    // names only for a violation: this runs for every solve
+    let name = |e: usize| {
+        let (i, j) = input.edges[e];
+        format!("{}{}", input.names[i], input.names[j])
+    };
     if let Some(e) = squares.iter().position(|v| *v < 0.0) {
-        return Feasibility::NegativeSquare {
-            edge: names[e].clone(),
-        };
+        return Feasibility::NegativeSquare { edge: name(e) };
     }
     for (f, frame) in input.frames.iter().enumerate() {
         if let Some(e) = squares.iter().zip(frame).position(|(s, p)| s < p) {
             return Feasibility::ShorterThanProjection {
-                edge: names[e].clone(),
+                edge: name(e),
                 frame: f + 1,
             };
         }
@@ -206,7 +236,12 @@ pub enum Degenerate {
     SpecialMotion {
         /// The rank found.
         rank: usize,
+        /// The number of unknowns.
+        unknowns: usize,
     },
+    /// Every frame is an affine image of one plane (the triangles' area ratios agree in all
+    /// frames): a planar body. The linear systems of §4 are then singular.
+    Coplanar,
 }
 
 impl fmt::Display for Degenerate {
@@ -229,9 +264,13 @@ impl fmt::Display for Degenerate {
             }
             Degenerate::Indeterminate => write!(f, "the equation vanishes: infinitely many solutions"),
             Degenerate::NoRealRoot => write!(f, "no real root"),
-            Degenerate::SpecialMotion { rank } => write!(
+            Degenerate::SpecialMotion { rank, unknowns } => write!(
                 f,
-                "the motion is too special: rank {rank} of 3, no unique solution"
+                "the motion is too special: rank {rank} of {unknowns}, no unique solution"
+            ),
+            Degenerate::Coplanar => write!(
+                f,
+                "the body is planar (every frame an affine image of one plane): the linear system is singular, infinitely many solutions"
             ),
         }
     }
@@ -271,6 +310,10 @@ pub enum Method {
     P3f3,
     /// §3: three points, four or more frames.
     P3f4,
+    /// §4: four points, three frames (the paper's six equations).
+    P4f3,
+    /// §4 generalised: p ≥ 4 points, k ≥ 3 frames, every triangle, least squares.
+    Lsq,
 }
 
 impl Method {
@@ -296,7 +339,11 @@ impl Method {
                 "{k} frame(s): at least 3 are needed (two frames never determine the body, §5)"
             )),
             (p, _) if p < 3 => Err(format!("{p} point(s): at least 3 are needed")),
-            _ => Err(format!("no solver for {p} points in {k} frames yet")),
+            (4, 3) => Ok((Method::P4f3, "4 points in 3 frames: the linear system of §4")),
+            _ => Ok((
+                Method::Lsq,
+                "4 or more points in 3 or more frames: every triangle against frame 1, least squares",
+            )),
         };
         match self {
             Method::Auto => auto
@@ -306,6 +353,8 @@ impl Method {
                 let fits = match m {
                     Method::P3f3 => p == 3 && k == 3,
                     Method::P3f4 => p == 3 && k >= 4,
+                    Method::P4f3 => p == 4 && k == 3,
+                    Method::Lsq => p >= 4 && k >= 3,
                     Method::Auto => true,
                 };
                 if fits {
@@ -326,6 +375,8 @@ impl Method {
             Method::Auto => "auto",
             Method::P3f3 => "p3f3",
             Method::P3f4 => "p3f4",
+            Method::P4f3 => "p4f3",
+            Method::Lsq => "lsq",
         }
     }
 }
@@ -376,13 +427,24 @@ pub fn solve_tracks(tracks: &Tracks, method: Method) -> Result<Solved> {
     let output = match m {
         Method::P3f3 => super::p3f3::solve(&input)?,
         Method::P3f4 | Method::Auto => super::p3f4::solve(&input)?,
+        Method::P4f3 => super::p4f3::solve(&input)?,
+        Method::Lsq => super::p4f3::solve_least_squares(&input)?,
     };
     let structures = output
         .solutions
         .iter()
         .map(|s| {
-            if !s.feasibility.is_feasible() || s.squared_edges.len() != 3 {
+            if !s.feasibility.is_feasible() {
                 return Ok(None);
+            }
+            if s.squared_edges.len() != 3 {
+                // four or more points: one body up to the mirror, one camera per frame
+                let fit = super::p4f3::fit(tracks, &s.squared_edges);
+                return Ok(Some(Structure {
+                    points: fit.points.iter().map(|p| [p.x, p.y, p.z]).collect(),
+                    motions: usize::from(fit.residual <= REPROJECTION_EXACT),
+                    reprojection_error: fit.residual,
+                }));
             }
             let sq = [s.squared_edges[0], s.squared_edges[1], s.squared_edges[2]];
             let recs = super::p3f3::reconstructions(tracks, &sq)?;

@@ -1,6 +1,6 @@
 use nalgebra::{Rotation3, Vector2, Vector3};
 use orthocheck::derivations::solver::{Degenerate, SquaredLengths};
-use orthocheck::derivations::{p3f3, p3f4};
+use orthocheck::derivations::{p3f3, p3f4, p4f3};
 use orthocheck::model::{Body, Motion, Scene};
 use proptest::prelude::*;
 
@@ -69,4 +69,37 @@ proptest! {
         prop_assert!(special, "{:?}", out.degenerate);
         prop_assert!(out.solutions.is_empty());
     }
+
+    #[test]
+    fn p4f3_and_least_squares_recover_generic_bodies(seed in any::<u64>(), points in 4usize..8, frames in 3usize..6) {
+        let scene = Scene::random(4, 3, seed);
+        let out = p4f3::solve(&SquaredLengths::from_tracks(&scene.tracks())).unwrap();
+        prop_assert_eq!(out.solutions.len(), 1);
+        prop_assert!(out.solutions[0].feasibility.is_feasible(), "{:?}", out);
+        prop_assert!(all_edges_within(&scene, &out.solutions[0].squared_edges, 1e-9));
+        let scene = Scene::random(points, frames, seed);
+        let out = p4f3::solve_least_squares(&SquaredLengths::from_tracks(&scene.tracks())).unwrap();
+        prop_assert!(out.solutions[0].feasibility.is_feasible(), "{:?}", out);
+        prop_assert!(all_edges_within(&scene, &out.solutions[0].squared_edges, 1e-9));
+    }
+
+    #[test]
+    fn a_planar_body_is_a_typed_outcome(seed in any::<u64>(), a in -1.0f64..1.0, b in -1.0f64..1.0) {
+        let mut scene = Scene::random(4, 3, seed);
+        for x in &mut scene.body.points {
+            x.z = a * x.x + b * x.y;
+        }
+        let out = p4f3::solve(&SquaredLengths::from_tracks(&scene.tracks())).unwrap();
+        prop_assert_eq!(out.degenerate, Some(Degenerate::Coplanar));
+        prop_assert!(out.solutions.is_empty());
+    }
+}
+
+fn all_edges_within(scene: &Scene, squares: &[f64], tol: f64) -> bool {
+    let e = orthocheck::derivations::solver::edges(scene.body.points.len());
+    e.len() == squares.len()
+        && e.iter().zip(squares).all(|(&(i, j), s)| {
+            let t = scene.body.squared_distance(i, j);
+            (s - t).abs() <= tol * t
+        })
 }

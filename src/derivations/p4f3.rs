@@ -1,0 +1,915 @@
+//! §4: four points, three frames — the paper's linear system, its general least-squares form
+//! for p ≥ 4 points and k ≥ 3 frames, and the body and motions behind a solution.
+//!
+//! Every triangle of the body obeys eq. p3f3sqr in every frame; the difference of frame i's
+//! equation and frame 1's, Fᵢ − F₁ = 0, is linear in the triangle's three squared edges:
+//! 2(αᵢ − α₁)u² + 2(βᵢ − β₁)v² + 2(γᵢ − γ₁)w² + (Kᵢ − K₁) = 0. The paper takes the triangles
+//! PQT, QRT, RPT and frames 2, 3: six equations in the six squared edges.
+
+use nalgebra::{DMatrix, DVector, Matrix2x3, Matrix3, SMatrix, SVector, SymmetricEigen, Vector3};
+
+use super::solver::{feasibility, Degenerate, Feasibility, Solution, SolverOutput, SquaredLengths};
+use super::twofold::FrameCoefficients;
+use crate::algebra::{largest_eigenvalue, svd_rank_above, Interval, SvdRank, NEGLIGIBLE_ULPS};
+use crate::error::{Error, Result};
+use crate::model::Tracks;
+
+/// The index of the edge {i, j} in [`edges`](super::solver::edges) order.
+///
+/// # Example
+/// ```
+/// use orthocheck::derivations::p4f3::edge_index;
+/// assert_eq!(edge_index(2, 0), 2); // RP
+/// assert_eq!(edge_index(1, 3), 4); // TQ
+/// ```
+pub fn edge_index(i: usize, j: usize) -> usize {
+    let (lo, hi) = if i < j { (i, j) } else { (j, i) };
+    match (lo, hi) {
+        (0, 1) => 0,
+        (1, 2) => 1,
+        (0, 2) => 2,
+        // point hi ≥ 3 has its edges to 0..hi after the 3 + 4 + … + (hi − 1) earlier ones
+        _ => 3 + (3..hi).sum::<usize>() + lo,
+    }
+}
+
+/// A triangle as the indices of its three edges (in [`edges`](super::solver::edges) order).
+pub type Triangle = [usize; 3];
+
+/// The paper's triangles PQT, QRT, RPT (edges a g f, d b g, d f c).
+pub const PAPER_TRIANGLES: [Triangle; 3] = [[0, 4, 3], [5, 1, 4], [5, 3, 2]];
+
+/// Every triangle of `p` points, in lexicographic order of its points.
+pub fn all_triangles(p: usize) -> Vec<Triangle> {
+    let mut t = Vec::new();
+    for i in 0..p {
+        for j in i + 1..p {
+            for k in j + 1..p {
+                t.push([edge_index(i, j), edge_index(j, k), edge_index(k, i)]);
+            }
+        }
+    }
+    t
+}
+
+/// One equation Fᵢ − F₁ = 0 of a triangle: coefficients of its three squared edges, and the
+/// constant (the equation is `coefficients · x + constant = 0`, the paper's printed form).
+pub fn triangle_row(frames: &[Vec<f64>], tri: Triangle, frame: usize) -> ([f64; 3], f64) {
+    let pick = |f: &[f64]| [f[tri[0]], f[tri[1]], f[tri[2]]];
+    FrameCoefficients::new(pick(&frames[frame]))
+        .difference(&FrameCoefficients::new(pick(&frames[0])))
+}
+
+/// The paper's 6×6 system in the printed row order (frame 2: PQT, QRT, RPT; then frame 3)
+/// and column order x1 … x6 = PQ, QR, RP, TP, TQ, TR: `A x + b = 0`.
+pub fn paper_system(l: &[[f64; 6]; 3]) -> (SMatrix<f64, 6, 6>, SVector<f64, 6>) {
+    let mut a = SMatrix::<f64, 6, 6>::zeros();
+    let mut b = SVector::<f64, 6>::zeros();
+    let frames: Vec<Vec<f64>> = l.iter().map(|f| f.to_vec()).collect();
+    for (fi, frame) in [1, 2].into_iter().enumerate() {
+        for (ti, tri) in PAPER_TRIANGLES.iter().enumerate() {
+            let (c, k) = triangle_row(&frames, *tri, frame);
+            let r = 3 * fi + ti;
+            for (col, v) in tri.iter().zip(c) {
+                a[(r, *col)] = v;
+            }
+            b[r] = k;
+        }
+    }
+    (a, b)
+}
+
+/// The allocation-free result of [`solve_core`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Core {
+    /// x1 … x6 = PQ², QR², RP², TP², TQ², TR²; `None` when the system is singular.
+    pub squares: Option<[f64; 6]>,
+    /// No negative square and no edge shorter than a projection.
+    pub feasible: bool,
+    /// The squares are the distances of four points in 3-D (positive semidefinite Gram).
+    pub realizable: bool,
+}
+
+/// The paper's system for four points in three frames (projected squared lengths in
+/// [`edges`](super::solver::edges) order), solved with the feasibility and realizability checks.
+///
+/// # Example
+/// ```
+/// use orthocheck::derivations::{p4f3::solve_core, solver::SquaredLengths};
+/// let scene = orthocheck::model::Scene::random(4, 3, 5);
+/// let l = SquaredLengths::from_tracks(&scene.tracks());
+/// let core = solve_core(&std::array::from_fn(|i| std::array::from_fn(|e| l.frames[i][e])));
+/// let x = core.squares.unwrap();
+/// approx::assert_relative_eq!(x[5], scene.body.squared_distance(3, 2), max_relative = 1e-9);
+/// assert!(core.feasible && core.realizable);
+/// ```
+pub fn solve_core(l: &[[f64; 6]; 3]) -> Core {
+    let (a, b) = paper_system(l);
+    let Some(x) = a.lu().solve(&(-b)) else {
+        return Core {
+            squares: None,
+            feasible: false,
+            realizable: false,
+        };
+    };
+    let x: [f64; 6] = std::array::from_fn(|i| x[i]);
+    let feasible = (0..6).all(|e| x[e] >= l[0][e].max(l[1][e]).max(l[2][e]));
+    Core {
+        squares: Some(x),
+        feasible,
+        realizable: gram3_is_psd(&x),
+    }
+}
+
+/// The Gram matrix of the edge vectors from point 0: Gᵢⱼ = (s₀ᵢ + s₀ⱼ − sᵢⱼ)/2, i, j ≥ 1.
+pub fn gram(squares: &[f64], p: usize) -> DMatrix<f64> {
+    let s = |i: usize, j: usize| {
+        if i == j {
+            0.0
+        } else {
+            squares[edge_index(i, j)]
+        }
+    };
+    DMatrix::from_fn(p - 1, p - 1, |i, j| {
+        0.5 * (s(0, i + 1) + s(0, j + 1) - s(i + 1, j + 1))
+    })
+}
+
+/// Whether the 3×3 Gram matrix of four points is positive semidefinite, by its principal
+/// minors (all of them: the leading ones alone do not decide semidefiniteness).
+fn gram3_is_psd(x: &[f64; 6]) -> bool {
+    let g = Matrix3::from_fn(|i, j| {
+        let s = |i: usize, j: usize| if i == j { 0.0 } else { x[edge_index(i, j)] };
+        0.5 * (s(0, i + 1) + s(0, j + 1) - s(i + 1, j + 1))
+    });
+    let tol = NEGLIGIBLE_ULPS * f64::EPSILON * (x.iter().map(|v| v.abs()).sum::<f64>()).powi(3);
+    let minor2 = |i: usize, j: usize| g[(i, i)] * g[(j, j)] - g[(i, j)] * g[(i, j)];
+    (0..3).all(|i| g[(i, i)] >= 0.0)
+        && minor2(0, 1) >= -tol
+        && minor2(0, 2) >= -tol
+        && minor2(1, 2) >= -tol
+        && g.determinant() >= -tol
+}
+
+/// The body behind squared edges: coordinates from the Gram matrix (classical
+/// multidimensional scaling about point 0).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Realization {
+    /// Points, the first at the origin (a 3-D frame of the body's own).
+    pub points: Vec<Vector3<f64>>,
+    /// Gram eigenvalues, descending.
+    pub eigenvalues: Vec<f64>,
+    /// Eigenvalues above the rounding floor.
+    pub rank: usize,
+    /// No eigenvalue below −floor and rank ≤ 3: the squares are distances in 3-D.
+    pub realizable: bool,
+    /// The rounding floor used: 64ε · (largest eigenvalue magnitude) · (p − 1).
+    pub floor: f64,
+}
+
+/// Realize squared edges of `p` points in 3-D.
+///
+/// # Example
+/// ```
+/// use orthocheck::derivations::p4f3::realize;
+/// // a regular tetrahedron of edge 1
+/// let r = realize(&[1.0; 6], 4);
+/// assert!(r.realizable && r.rank == 3);
+/// ```
+pub fn realize(squares: &[f64], p: usize) -> Realization {
+    let g = gram(squares, p);
+    let eig = SymmetricEigen::new(g);
+    let mut order: Vec<usize> = (0..p - 1).collect();
+    order.sort_by(|&a, &b| eig.eigenvalues[b].total_cmp(&eig.eigenvalues[a]));
+    let eigenvalues: Vec<f64> = order.iter().map(|&i| eig.eigenvalues[i]).collect();
+    let big = eigenvalues.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
+    let floor = NEGLIGIBLE_ULPS * f64::EPSILON * big * (p - 1) as f64;
+    let rank = eigenvalues.iter().filter(|v| **v > floor).count();
+    let realizable = eigenvalues.iter().all(|v| *v >= -floor) && rank <= 3;
+    let mut points = vec![Vector3::zeros()];
+    for i in 0..p - 1 {
+        let mut v = Vector3::zeros();
+        for (d, &k) in order.iter().take(3).enumerate() {
+            let lam = eig.eigenvalues[k].max(0.0);
+            v[d] = eig.eigenvectors[(i, k)] * lam.sqrt();
+        }
+        points.push(v);
+    }
+    Realization {
+        points,
+        eigenvalues,
+        rank,
+        realizable,
+        floor,
+    }
+}
+
+/// A body fitted to tracks: each frame's orthographic camera by orthogonal Procrustes.
+#[derive(Clone, Debug, PartialEq)]
+pub struct BodyFit {
+    /// The body in frame 1's camera coordinates, the first point at the origin.
+    pub points: Vec<Vector3<f64>>,
+    /// Per frame, the two rows of the rotation (orthonormal) taking those coordinates into
+    /// the image (frame 1's is the identity's, up to rounding).
+    pub cameras: Vec<Matrix2x3<f64>>,
+    /// Largest reprojection error over frames and points, relative to the body's size.
+    pub residual: f64,
+}
+
+/// Fit the body of `squares` to the tracks. Per frame, the affine camera A minimising
+/// ‖Y − A X‖ over the centred body X and image Y (A = Y Xᵀ (X Xᵀ)⁺), then its polar factor,
+/// the nearest 2×3 matrix with orthonormal rows: exact data give the rotation's first two
+/// rows exactly; noisy data an approximation whose residual is reported.
+pub fn fit(tracks: &Tracks, squares: &[f64]) -> BodyFit {
+    let p = tracks.points();
+    let body = realize(squares, p).points;
+    let centre = body.iter().sum::<Vector3<f64>>() / p as f64;
+    let size = body
+        .iter()
+        .map(|x| (x - centre).norm())
+        .fold(f64::MIN_POSITIVE, f64::max);
+    let xxt: Matrix3<f64> = body
+        .iter()
+        .map(|x| (x - centre) * (x - centre).transpose())
+        .sum();
+    let pinv = xxt
+        .pseudo_inverse(NEGLIGIBLE_ULPS * f64::EPSILON * xxt.norm())
+        .unwrap_or_else(|_| Matrix3::zeros());
+    let mut cameras = Vec::new();
+    let mut residual: f64 = 0.0;
+    for f in &tracks.frames {
+        let c2 = f.iter().sum::<nalgebra::Vector2<f64>>() / p as f64;
+        let mut yxt = Matrix2x3::zeros();
+        for (y, x) in f.iter().zip(&body) {
+            yxt += (y - c2) * (x - centre).transpose();
+        }
+        let svd = (yxt * pinv).svd(true, true);
+        let cam = match (svd.u, svd.v_t) {
+            (Some(u), Some(vt)) => u * vt,
+            _ => Matrix2x3::zeros(),
+        };
+        for (y, x) in f.iter().zip(&body) {
+            residual = residual.max((cam * (x - centre) - (y - c2)).norm() / size);
+        }
+        cameras.push(cam);
+    }
+    // the body in frame 1's camera coordinates (the third axis completes the first camera's
+    // rows to a rotation), first point at the origin
+    let r1 = cameras.first().map_or_else(Matrix3::identity, |c| {
+        let (a, b) = (c.row(0).transpose(), c.row(1).transpose());
+        Matrix3::from_rows(&[a.transpose(), b.transpose(), a.cross(&b).transpose()])
+    });
+    let points = body.iter().map(|x| r1 * (x - body[0])).collect();
+    let cameras = cameras.iter().map(|c| c * r1.transpose()).collect();
+    BodyFit {
+        points,
+        cameras,
+        residual,
+    }
+}
+
+/// Whether every frame could be an affine image of one plane: the ratios of the triangles'
+/// areas (area² = −K/16 from the projected squared lengths) are the same in every frame, up
+/// to rounding. A planar body forces this; so does a motion that only turns the image plane.
+fn planar_images(input: &SquaredLengths) -> bool {
+    let tris = all_triangles(input.names.len());
+    let k = |f: &[f64], t: &Triangle| FrameCoefficients::new([f[t[0]], f[t[1]], f[t[2]]]).k;
+    let first = &input.frames[0];
+    let Some(reference) = tris
+        .iter()
+        .max_by(|a, b| k(first, a).abs().total_cmp(&k(first, b).abs()))
+    else {
+        return false;
+    };
+    let scale = input
+        .frames
+        .iter()
+        .flatten()
+        .fold(0.0_f64, |m, v| m.max(*v));
+    // frames with the same lengths as the first: the motion, not the body, is at fault
+    let same_lengths = input.frames.iter().all(|f| {
+        f.iter()
+            .zip(first)
+            .all(|(a, b)| crate::algebra::negligible(a - b, a + b))
+    });
+    !same_lengths
+        && input.frames.iter().all(|f| {
+            tris.iter().all(|t| {
+                let cross = k(f, t) * k(first, reference) - k(first, t) * k(f, reference);
+                // each K is at most (3·scale)² in size
+                crate::algebra::negligible(cross, 2.0 * (9.0 * scale * scale).powi(2))
+            })
+        })
+}
+
+/// Bounds on the rounding noise of a system's entries (Frobenius norms of matrix and
+/// right-hand side), for the numerical rank.
+fn noise(input: &SquaredLengths, rows: usize) -> (f64, f64) {
+    let u = NEGLIGIBLE_ULPS * f64::EPSILON;
+    let scale = input
+        .frames
+        .iter()
+        .flat_map(|f| f.iter())
+        .fold(0.0_f64, |m, v| m.max(*v));
+    // entries 2(αᵢ − α₁) are sums of ±6 squares; constants Kᵢ − K₁ of ±12 products of squares
+    let n = (rows as f64).sqrt();
+    (n * 3.0 * u * 12.0 * scale, n * u * 24.0 * scale * scale)
+}
+
+/// The solver output from a solution `x` (absent when singular), the rank analysis and the
+/// largest equation residual |Ax + b|.
+#[allow(clippy::too_many_arguments)]
+fn finish(
+    input: &SquaredLengths,
+    method: &str,
+    unknowns: usize,
+    x: Option<DVector<f64>>,
+    residual: impl Fn(&DVector<f64>) -> f64,
+    rank: Rank,
+    noise_m: f64,
+    noise_b: f64,
+) -> SolverOutput {
+    let mut out = SolverOutput {
+        method: method.into(),
+        edges: input.edge_names(),
+        solutions: Vec::new(),
+        degenerate: None,
+        condition: rank.condition,
+    };
+    let (true, Some(x)) = (rank.rank == unknowns, x) else {
+        out.degenerate = Some(if planar_images(input) {
+            Degenerate::Coplanar
+        } else {
+            Degenerate::SpecialMotion {
+                rank: rank.rank,
+                unknowns,
+            }
+        });
+        return out;
+    };
+    let squares: Vec<f64> = x.iter().copied().collect();
+    let scale = squares
+        .iter()
+        .fold(f64::MIN_POSITIVE, |a, v| a.max(v.abs()));
+    let smin = rank.smin;
+    let real = realize(&squares, input.names.len());
+    let mut feas = feasibility(&squares, &vec![0.0; squares.len()], input);
+    if feas.is_feasible() && !real.realizable {
+        feas = Feasibility::NotRealizable {
+            eigenvalue: real.eigenvalues.last().copied().unwrap_or(0.0),
+        };
+    }
+    out.solutions.push(Solution {
+        feasibility: feas,
+        residual: residual(&x) / (scale * scale),
+        error_bound: Some((noise_m * x.norm() + noise_b) / smin),
+        imaginary: vec![0.0; squares.len()],
+        squared_edges: squares,
+    });
+    out
+}
+
+/// The paper's solver in the shared calling convention: four points, three frames.
+pub fn solve(input: &SquaredLengths) -> Result<SolverOutput> {
+    if input.names.len() != 4 || input.frames.len() != 3 {
+        return Err(Error::InvalidInput(format!(
+            "p4f3 needs 4 points in 3 frames, got {} points in {} frames",
+            input.names.len(),
+            input.frames.len()
+        )));
+    }
+    let l: [[f64; 6]; 3] = std::array::from_fn(|i| std::array::from_fn(|e| input.frames[i][e]));
+    let (a, b) = paper_system(&l);
+    let m = DMatrix::from_fn(6, 6, |i, j| a[(i, j)]);
+    let rhs = DVector::from_fn(6, |i, _| b[i]);
+    let (noise_m, noise_b) = noise(input, 6);
+    let rank = svd_rank_above(&m, noise_m);
+    let x = m.clone().lu().solve(&(-&rhs));
+    let residual = |x: &DVector<f64>| (&m * x + &rhs).amax();
+    Ok(finish(
+        input,
+        "p4f3",
+        6,
+        x,
+        residual,
+        rank.into(),
+        noise_m,
+        noise_b,
+    ))
+}
+
+/// The general system: every triangle of the body, every later frame against frame 1.
+pub fn general_system(input: &SquaredLengths) -> (DMatrix<f64>, DVector<f64>) {
+    let tris = all_triangles(input.names.len());
+    let rows = tris.len() * (input.frames.len() - 1);
+    let mut m = DMatrix::zeros(rows, input.edges.len());
+    let mut b = DVector::zeros(rows);
+    let mut r = 0;
+    for frame in 1..input.frames.len() {
+        for tri in &tris {
+            let (c, k) = triangle_row(&input.frames, *tri, frame);
+            for (col, v) in tri.iter().zip(c) {
+                m[(r, *col)] = v;
+            }
+            b[r] = k;
+            r += 1;
+        }
+    }
+    (m, b)
+}
+
+/// The least-squares solver for p ≥ 4 points in k ≥ 3 frames over every triangle and frame:
+/// the normal equations, assembled row by row (each row has three entries), solved by
+/// Cholesky; rank and condition from the eigenvalues of AᵀA (σᵢ = √λᵢ).
+pub fn solve_least_squares(input: &SquaredLengths) -> Result<SolverOutput> {
+    let (p, k) = (input.names.len(), input.frames.len());
+    if p < 4 || k < 3 {
+        return Err(Error::InvalidInput(format!(
+            "the least-squares form needs at least 4 points in 3 frames, got {p} points in {k} frames"
+        )));
+    }
+    let n = input.edges.len();
+    let tris = all_triangles(p);
+    let rows = tris.len() * (k - 1);
+    // every row once (three coefficients, a constant, the triangle), frame 1's equations
+    // computed once per triangle
+    let pick = |f: &[f64], t: &Triangle| FrameCoefficients::new([f[t[0]], f[t[1]], f[t[2]]]);
+    let base: Vec<FrameCoefficients> = tris.iter().map(|t| pick(&input.frames[0], t)).collect();
+    let all_rows: Vec<([f64; 3], f64, Triangle)> = (1..k)
+        .flat_map(|frame| {
+            tris.iter().zip(&base).map(move |(t, b0)| {
+                let (c, kc) = pick(&input.frames[frame], t).difference(b0);
+                (c, kc, *t)
+            })
+        })
+        .collect();
+    // AᵀA by rows of three entries: the upper triangle (column-major), then mirrored
+    let mut upper = vec![0.0; n * n];
+    let mut atb = DVector::<f64>::zeros(n);
+    for (c, kc, tri) in &all_rows {
+        for a in 0..3 {
+            for b in 0..3 {
+                let (i, j) = (tri[a], tri[b]);
+                if i <= j {
+                    upper[j * n + i] += c[a] * c[b];
+                }
+            }
+            atb[tri[a]] += c[a] * kc;
+        }
+    }
+    let ata = DMatrix::from_fn(n, n, |i, j| upper[i.max(j) * n + i.min(j)]);
+    let (noise_m, noise_b) = noise(input, rows);
+    let chol = ata.clone().cholesky();
+    // σ below the noise of the matrix, or below what squaring into AᵀA can resolve
+    let floor_for = |smax: f64| noise_m.max(smax * (n as f64 * f64::EPSILON).sqrt() * 8.0);
+    let rank = match &chol {
+        // positive definite: the extreme singular values by Lanczos on AᵀA and on its
+        // inverse (Cholesky solves), O(n²) per step instead of a full eigendecomposition
+        Some(c) => {
+            // 1e-10: the condition number is shown to six digits
+            let lmax = largest_eigenvalue(|v| &ata * v, n, 1e-10);
+            let lmin = 1.0 / largest_eigenvalue(|v| c.solve(v), n, 1e-10);
+            let (smax, smin) = (lmax.max(0.0).sqrt(), lmin.max(0.0).sqrt());
+            let full = smin > floor_for(smax);
+            Rank {
+                rank: if full {
+                    n
+                } else {
+                    rank_by_eigen(&ata, &floor_for)
+                },
+                condition: full.then(|| smax / smin),
+                smin,
+            }
+        }
+        None => Rank {
+            rank: rank_by_eigen(&ata, &floor_for),
+            condition: None,
+            smin: 0.0,
+        },
+    };
+    let x = chol.map(|c| c.solve(&(-&atb)));
+    // the residual row by row: the dense system is never built
+    let residual = |x: &DVector<f64>| {
+        all_rows
+            .iter()
+            .map(|(c, kc, t)| (c[0] * x[t[0]] + c[1] * x[t[1]] + c[2] * x[t[2]] + kc).abs())
+            .fold(0.0, f64::max)
+    };
+    Ok(finish(input, "lsq", n, x, residual, rank, noise_m, noise_b))
+}
+
+/// The rank analysis a solution needs.
+struct Rank {
+    rank: usize,
+    condition: Option<f64>,
+    smin: f64,
+}
+
+impl From<SvdRank> for Rank {
+    fn from(r: SvdRank) -> Self {
+        Rank {
+            rank: r.rank,
+            condition: r.condition,
+            smin: r.singular_values.last().copied().unwrap_or(0.0),
+        }
+    }
+}
+
+/// The rank of AᵀA's square root by a full eigendecomposition (the rank-deficient path).
+fn rank_by_eigen(ata: &DMatrix<f64>, floor_for: &dyn Fn(f64) -> f64) -> usize {
+    let eig = SymmetricEigen::new(ata.clone());
+    let sv: Vec<f64> = eig.eigenvalues.iter().map(|l| l.max(0.0).sqrt()).collect();
+    let floor = floor_for(sv.iter().fold(0.0, |a: f64, b| a.max(*b)));
+    sv.iter().filter(|s| **s > floor).count()
+}
+
+/// How a printed row of the paper's matrix arises from the figure: which triangle, which
+/// pair of frames (`first` − `second`), and the factor applied.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RowMatch {
+    /// The triangle (edge indices).
+    pub triangle: Triangle,
+    /// The frame whose equation comes first (1-based).
+    pub first: usize,
+    /// The frame subtracted (1-based).
+    pub second: usize,
+    /// The factor on F_first − F_second (±1, ±1/2 or ±2).
+    pub factor: f64,
+    /// Largest |printed − recomputed| over the row, at the printed coordinates.
+    pub deviation: f64,
+}
+
+/// The row `factor · (F_first − F_second)` of `triangle` from image points
+/// (`frames[f][point] = [x, y]`), as seven intervals (coefficients of x1 … x6 and the
+/// constant) enclosing every value over the rounding box `[x ± half]`. The constant uses
+/// K = −4 (2·area)², the squared cross product, which keeps the enclosure tight.
+pub fn row_enclosure(
+    frames: &[Vec<[f64; 2]>],
+    half: f64,
+    triangle: Triangle,
+    first: usize,
+    second: usize,
+    factor: f64,
+) -> [Interval; 7] {
+    let p = frames[0].len();
+    let all = edges_of(p);
+    let points = |f: usize| -> Vec<[Interval; 2]> {
+        frames[f]
+            .iter()
+            .map(|c| [Interval::around(c[0], half), Interval::around(c[1], half)])
+            .collect()
+    };
+    // coefficients 2α, 2β, 2γ and K of one frame's equation for the triangle
+    let frame_terms = |f: usize| -> ([Interval; 3], Interval) {
+        let pts = points(f);
+        let sq = |e: usize| {
+            let (i, j) = all[e];
+            (pts[i][0] - pts[j][0]).square() + (pts[i][1] - pts[j][1]).square()
+        };
+        let [u, v, w] = triangle.map(sq);
+        let lin = [
+            (v + w - u).scale(2.0),
+            (u + w - v).scale(2.0),
+            (u + v - w).scale(2.0),
+        ];
+        // the triangle's three points: the first edge's two, and the one it lacks
+        let (a, b) = all[triangle[0]];
+        let (c0, c1) = all[triangle[1]];
+        let c = if c0 == a || c0 == b { c1 } else { c0 };
+        let cross = (pts[b][0] - pts[a][0]) * (pts[c][1] - pts[a][1])
+            - (pts[c][0] - pts[a][0]) * (pts[b][1] - pts[a][1]);
+        (lin, cross.square().scale(-4.0))
+    };
+    let (l1, k1) = frame_terms(first - 1);
+    let (l2, k2) = frame_terms(second - 1);
+    let mut row = [Interval::point(0.0); 7];
+    for (i, e) in triangle.iter().enumerate() {
+        row[*e] = (l1[i] - l2[i]).scale(factor);
+    }
+    row[6] = (k1 - k2).scale(factor);
+    row
+}
+
+/// The edges of `p` points (as in [`edges`](super::solver::edges)).
+fn edges_of(p: usize) -> Vec<(usize, usize)> {
+    super::solver::edges(p)
+}
+
+/// Identify each printed row (seven numbers: x1 … x6 and the constant) among every triangle,
+/// ordered frame pair and factor ±1, ±1/2, ±2, by the smallest largest deviation at the
+/// printed coordinates.
+pub fn identify_rows(printed: &[[f64; 7]], frames: &[Vec<[f64; 2]>]) -> Vec<RowMatch> {
+    let k = frames.len();
+    let tris = all_triangles(frames[0].len());
+    printed
+        .iter()
+        .map(|row| {
+            let mut best: Option<RowMatch> = None;
+            // positive factors first: a tie between −(F₁ − F₂) and F₂ − F₁ names the latter
+            for factor in [1.0, 0.5, 2.0, -1.0, -0.5, -2.0] {
+                for &triangle in &tris {
+                    for first in 1..=k {
+                        for second in (1..=k).filter(|s| *s != first) {
+                            let r = row_enclosure(frames, 0.0, triangle, first, second, factor);
+                            let deviation = r
+                                .iter()
+                                .zip(row)
+                                .map(|(iv, x)| (iv.mid() - x).abs())
+                                .fold(0.0, f64::max);
+                            if best.is_none_or(|b| deviation < b.deviation) {
+                                best = Some(RowMatch {
+                                    triangle,
+                                    first,
+                                    second,
+                                    factor,
+                                    deviation,
+                                });
+                            }
+                        }
+                    }
+                }
+            }
+            best.unwrap_or(RowMatch {
+                triangle: [0, 1, 2],
+                first: 1,
+                second: 1,
+                factor: 0.0,
+                deviation: f64::INFINITY,
+            })
+        })
+        .collect()
+}
+
+/// Residuals that vanish exactly when `frame` (image points) is an orthographic view of
+/// `body`: the affine camera's misfit Y − A X (centred) and A Aᵀ − I (its rows orthonormal).
+pub fn view_residual(body: &[Vector3<f64>], frame: &[[f64; 2]]) -> Vec<f64> {
+    let p = body.len();
+    let centre = body.iter().sum::<Vector3<f64>>() / p as f64;
+    let c2 = frame.iter().fold([0.0, 0.0], |a, c| {
+        [a[0] + c[0] / p as f64, a[1] + c[1] / p as f64]
+    });
+    let xxt: Matrix3<f64> = body
+        .iter()
+        .map(|x| (x - centre) * (x - centre).transpose())
+        .sum();
+    let Some(inv) = xxt.try_inverse() else {
+        return vec![f64::NAN];
+    };
+    let mut yxt = Matrix2x3::zeros();
+    for (y, x) in frame.iter().zip(body) {
+        yxt += nalgebra::Vector2::new(y[0] - c2[0], y[1] - c2[1]) * (x - centre).transpose();
+    }
+    let a = yxt * inv;
+    let mut r = Vec::with_capacity(2 * p + 3);
+    for (y, x) in frame.iter().zip(body) {
+        let q = a * (x - centre);
+        r.push(q.x - (y[0] - c2[0]));
+        r.push(q.y - (y[1] - c2[1]));
+    }
+    let g = a * a.transpose();
+    r.extend([g[(0, 0)] - 1.0, g[(1, 1)] - 1.0, g[(0, 1)]]);
+    r
+}
+
+/// The paper's system solved from image points (`frames[f][point] = [x, y]`, 4 points in
+/// 3 frames); `None` when singular.
+pub fn solve_points(frames: &[Vec<[f64; 2]>]) -> Option<[f64; 6]> {
+    let all = edges_of(4);
+    let l: [[f64; 6]; 3] = std::array::from_fn(|f| {
+        std::array::from_fn(|e| {
+            let (i, j) = all[e];
+            let (a, b) = (frames[f][i], frames[f][j]);
+            (a[0] - b[0]).powi(2) + (a[1] - b[1]).powi(2)
+        })
+    });
+    solve_core(&l).squares
+}
+
+/// First-order prediction of the spread of each squared edge when every image coordinate c
+/// becomes c·(1 + u·ε), u uniform in [−1, 1] (variance 1/3): the relative standard deviation
+/// ε·√(Σₖ (∂xⱼ/∂cₖ · cₖ)² / 3) / xⱼ, the derivatives by central differences. `None` when the
+/// system is singular.
+pub fn first_order_spread(frames: &[Vec<[f64; 2]>], eps: f64) -> Option<[f64; 6]> {
+    let x0 = solve_points(frames)?;
+    let mut acc = [0.0; 6];
+    for f in 0..frames.len() {
+        for pt in 0..frames[f].len() {
+            for d in 0..2 {
+                let c = frames[f][pt][d];
+                if c == 0.0 {
+                    continue;
+                }
+                let h = 1e-6 * c.abs();
+                let mut plus = frames.to_vec();
+                plus[f][pt][d] = c + h;
+                let mut minus = frames.to_vec();
+                minus[f][pt][d] = c - h;
+                let (xp, xm) = (solve_points(&plus)?, solve_points(&minus)?);
+                for j in 0..6 {
+                    acc[j] += ((xp[j] - xm[j]) / (2.0 * h) * c).powi(2);
+                }
+            }
+        }
+    }
+    Some(std::array::from_fn(|j| {
+        eps * (acc[j] / 3.0).sqrt() / x0[j].abs()
+    }))
+}
+
+/// Uniqueness of the paper's system over seeded generic scenes, and its degenerate cases.
+#[derive(Clone, Debug, serde::Serialize)]
+pub struct Census {
+    /// Scenes.
+    pub trials: usize,
+    /// Seed.
+    pub seed: u64,
+    /// Scenes with a unique feasible, realizable solution.
+    pub unique: usize,
+    /// Scenes whose solution is the truth within its rounding bound.
+    pub truth_found: usize,
+    /// Largest relative error against the truth.
+    pub max_truth_error: f64,
+    /// Median condition number.
+    pub median_condition: f64,
+    /// Planar bodies tried, and the ranks of the paper's system found for them.
+    pub planar_trials: usize,
+    /// Distinct ranks of the paper's 6×6 system for planar bodies.
+    pub planar_ranks: Vec<usize>,
+    /// Distinct ranks of the system over all four triangles for planar bodies.
+    pub planar_ranks_all_triangles: Vec<usize>,
+    /// The outcome the solver names for planar bodies.
+    pub planar_outcome: Option<Degenerate>,
+    /// Rank for motions about the viewing axis only.
+    pub viewing_axis_rank: usize,
+}
+
+/// Solve `trials` seeded generic scenes of four points in three frames, then planar bodies
+/// and motions about the viewing axis.
+pub fn census(trials: usize, seed: u64) -> Census {
+    use crate::model::{Motion, Scene};
+    let mut c = Census {
+        trials,
+        seed,
+        unique: 0,
+        truth_found: 0,
+        max_truth_error: 0.0,
+        median_condition: f64::INFINITY,
+        planar_trials: 0,
+        planar_ranks: Vec::new(),
+        planar_ranks_all_triangles: Vec::new(),
+        planar_outcome: None,
+        viewing_axis_rank: 0,
+    };
+    let truth = |s: &Scene| -> Vec<f64> {
+        edges_of(4)
+            .iter()
+            .map(|&(i, j)| s.body.squared_distance(i, j))
+            .collect()
+    };
+    let mut conds = Vec::new();
+    for t in 0..trials {
+        let scene = Scene::random(4, 3, seed.wrapping_add(t as u64));
+        let Ok(out) = solve(&SquaredLengths::from_tracks(&scene.tracks())) else {
+            continue;
+        };
+        conds.extend(out.condition);
+        let Some(s) = out.solutions.first() else {
+            continue;
+        };
+        if s.feasibility.is_feasible() {
+            c.unique += 1;
+        }
+        let tr = truth(&scene);
+        let abs = s
+            .squared_edges
+            .iter()
+            .zip(&tr)
+            .map(|(a, b)| (a - b).abs())
+            .fold(0.0, f64::max);
+        if abs <= s.error_bound.unwrap_or(0.0) {
+            c.truth_found += 1;
+        }
+        let scale = tr.iter().fold(0.0_f64, |a, b| a.max(*b));
+        c.max_truth_error = c.max_truth_error.max(abs / scale);
+    }
+    conds.sort_by(f64::total_cmp);
+    c.median_condition = conds.get(conds.len() / 2).copied().unwrap_or(f64::INFINITY);
+    // planar bodies: z an affine function of x and y
+    c.planar_trials = trials.clamp(1, 200);
+    for t in 0..c.planar_trials {
+        let mut scene = Scene::random(4, 3, seed.wrapping_add(t as u64));
+        for x in &mut scene.body.points {
+            x.z = 0.4 * x.x - 0.7 * x.y + 0.1;
+        }
+        let l = SquaredLengths::from_tracks(&scene.tracks());
+        let (noise_m, _) = noise(&l, 6);
+        let lf: [[f64; 6]; 3] = std::array::from_fn(|i| std::array::from_fn(|e| l.frames[i][e]));
+        let (a, _) = paper_system(&lf);
+        let m = DMatrix::from_fn(6, 6, |i, j| a[(i, j)]);
+        let r = svd_rank_above(&m, noise_m).rank;
+        if !c.planar_ranks.contains(&r) {
+            c.planar_ranks.push(r);
+        }
+        let (g, _) = general_system(&l);
+        let r = svd_rank_above(&g, noise_m).rank;
+        if !c.planar_ranks_all_triangles.contains(&r) {
+            c.planar_ranks_all_triangles.push(r);
+        }
+        if t == 0 {
+            c.planar_outcome = solve(&l).ok().and_then(|o| o.degenerate);
+        }
+    }
+    let mut turn = Scene::random(4, 3, seed);
+    for i in 1..3 {
+        turn.motions[i] = Motion {
+            rotation: nalgebra::Rotation3::from_axis_angle(&Vector3::z_axis(), 0.6 * i as f64),
+            translation: nalgebra::Vector2::new(0.2, -0.1),
+        };
+    }
+    let l = SquaredLengths::from_tracks(&turn.tracks());
+    let (noise_m, _) = noise(&l, 6);
+    let (g, _) = general_system(&l);
+    c.viewing_axis_rank = svd_rank_above(&g, noise_m).rank;
+    c
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::derivations::solver::edges;
+    use crate::model::{Body, Motion, Scene};
+    use nalgebra::{Rotation3, Vector2};
+
+    fn truth(scene: &Scene) -> Vec<f64> {
+        edges(scene.body.points.len())
+            .iter()
+            .map(|&(i, j)| scene.body.squared_distance(i, j))
+            .collect()
+    }
+
+    fn max_rel(a: &[f64], b: &[f64]) -> f64 {
+        a.iter()
+            .zip(b)
+            .map(|(x, y)| (x - y).abs() / y)
+            .fold(0.0, f64::max)
+    }
+
+    #[test]
+    fn edge_index_follows_the_edge_order() {
+        for (k, &(i, j)) in edges(9).iter().enumerate() {
+            assert_eq!(edge_index(i, j), k);
+            assert_eq!(edge_index(j, i), k);
+        }
+    }
+
+    #[test]
+    fn both_forms_recover_generic_scenes_and_fit_them() {
+        let scene = Scene::random(4, 3, 31);
+        let l = SquaredLengths::from_tracks(&scene.tracks());
+        let out = solve(&l).unwrap();
+        let s = &out.solutions[0];
+        assert!(s.feasibility.is_feasible(), "{out:?}");
+        assert!(max_rel(&s.squared_edges, &truth(&scene)) < 1e-9);
+        let fit = fit(&scene.tracks(), &s.squared_edges);
+        assert!(fit.residual < 1e-9, "{}", fit.residual);
+        let scene = Scene::random(7, 5, 32);
+        let out = solve_least_squares(&SquaredLengths::from_tracks(&scene.tracks())).unwrap();
+        assert!(out.solutions[0].feasibility.is_feasible(), "{out:?}");
+        assert!(max_rel(&out.solutions[0].squared_edges, &truth(&scene)) < 1e-9);
+        assert!(out.condition.is_some());
+    }
+
+    #[test]
+    fn a_planar_body_and_special_motions_are_typed_outcomes() {
+        let mut scene = Scene::random(4, 3, 33);
+        for x in &mut scene.body.points {
+            x.z = 0.3 * x.x - 0.2 * x.y;
+        }
+        scene.body = Body::new(scene.body.points.clone());
+        let out = solve(&SquaredLengths::from_tracks(&scene.tracks())).unwrap();
+        assert_eq!(out.degenerate, Some(Degenerate::Coplanar), "{out:?}");
+        let mut turn = Scene::random(4, 3, 34);
+        for i in 1..3 {
+            turn.motions[i] = Motion {
+                rotation: Rotation3::from_axis_angle(&Vector3::z_axis(), 0.5 * i as f64),
+                translation: Vector2::new(0.1, 0.2),
+            };
+        }
+        let out = solve(&SquaredLengths::from_tracks(&turn.tracks())).unwrap();
+        assert!(
+            matches!(
+                out.degenerate,
+                Some(Degenerate::SpecialMotion { unknowns: 6, .. })
+            ),
+            "{out:?}"
+        );
+        assert!(out.solutions.is_empty());
+    }
+
+    #[test]
+    fn realization_rejects_impossible_distances() {
+        // PQ = QR = 1 but RP = 3: the triangle inequality fails
+        let r = realize(&[1.0, 1.0, 9.0, 1.0, 1.0, 1.0], 4);
+        assert!(!r.realizable);
+    }
+}
