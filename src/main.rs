@@ -58,16 +58,24 @@ enum Command {
         #[arg(long)]
         json: bool,
     },
-    /// Machine-check a printed formula of the paper.
+    /// Machine-check the paper's printed formulas: one item, a claim's items, or all.
     Audit {
-        /// Which formula.
-        id: AuditId,
-        /// Folder of case files (the printed formula is read from there).
+        /// An item id (p3f3sqr, appA-coefficients/f_cb, …) or a claim id (all its items);
+        /// `twofold-squared` shows eq. p3f3sqr in full.
+        #[arg(required_unless_present = "all")]
+        id: Option<String>,
+        /// Every item.
+        #[arg(long, conflicts_with = "id")]
+        all: bool,
+        /// Folder of case files (the printed formulas are read from there).
         #[arg(long, default_value = "paper_cases")]
         cases: PathBuf,
         /// JSON output.
         #[arg(long)]
         json: bool,
+        /// The errata list of the whole report as Markdown (what docs/errata.md holds).
+        #[arg(long, conflicts_with_all = ["json", "id"])]
+        markdown: bool,
     },
     /// Recover the squared edges (and the body) from a tracks file.
     Solve {
@@ -128,12 +136,6 @@ enum Command {
         #[arg(long)]
         out: Option<PathBuf>,
     },
-}
-
-#[derive(Clone, Copy, ValueEnum)]
-enum AuditId {
-    /// Eq. p3f3sqr: the twofold squaring of the signed relations.
-    TwofoldSquared,
 }
 
 #[derive(Clone, Copy, ValueEnum)]
@@ -208,9 +210,16 @@ fn run(cli: Cli) -> Result<(), Error> {
                 }
             }
         }
-        Command::Audit { id, cases, json } => match id {
-            AuditId::TwofoldSquared => {
-                let case = cases::load_all(&cases)?
+        Command::Audit {
+            id,
+            all,
+            cases,
+            json,
+            markdown,
+        } => {
+            let loaded = cases::load_all(&cases)?;
+            if id.as_deref() == Some("twofold-squared") && !markdown {
+                let case = loaded
                     .into_iter()
                     .find_map(|c| match c.check {
                         cases::CaseCheck::TwofoldSquared(t) => Some(t),
@@ -228,8 +237,33 @@ fn run(cli: Cli) -> Result<(), Error> {
                 } else {
                     print!("{}", report::twofold_text(&a));
                 }
+                return Ok(());
             }
-        },
+            if markdown {
+                let r = report::Report::from_cases(&loaded)?;
+                print!("{}", report::errata_markdown(&r.claims));
+                return Ok(());
+            }
+            let mut items = check::audit_all(&loaded)?;
+            if let Some(id) = &id {
+                let id = if id == "twofold-squared" {
+                    "p3f3sqr"
+                } else {
+                    id
+                };
+                items.retain(|it| it.id == id || it.claim == id);
+                if items.is_empty() {
+                    return Err(Error::InvalidInput(format!(
+                        "no audit item or claim `{id}` (try `orthocheck audit --all`)"
+                    )));
+                }
+            }
+            if json {
+                println!("{}", to_json(&items));
+            } else {
+                print!("{}", report::audit_text(&items, !all));
+            }
+        }
         Command::Solve {
             input,
             method,

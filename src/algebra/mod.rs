@@ -6,6 +6,7 @@ mod lanczos;
 mod newton;
 mod poly;
 mod rank;
+mod ratfn;
 mod sturm;
 
 pub use float_roots::{
@@ -17,6 +18,7 @@ pub use lanczos::largest_eigenvalue;
 pub use newton::min_norm_newton;
 pub use poly::{parse_decimal, Monomial, Poly};
 pub use rank::{exact_rank, exact_solve, svd_rank, svd_rank_above, ExactRankMethod, SvdRank};
+pub use ratfn::{agree_at_random_points, solve_linear, PointEvaluation, RatFn};
 pub use sturm::{RealRoot, UPoly};
 
 use num_rational::BigRational;

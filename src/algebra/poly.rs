@@ -11,6 +11,7 @@ use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{One, Signed, ToPrimitive, Zero};
 
+use super::RatFn;
 use crate::error::ParseError;
 
 /// A monomial: variables with positive exponents, sorted by variable name.
@@ -121,6 +122,13 @@ impl Poly {
     pub fn var(name: &str) -> Self {
         let mut p = Poly::zero();
         p.add_term(Monomial::var(name), BigRational::one());
+        p
+    }
+
+    /// The monomial `m` with coefficient 1.
+    pub fn from_monomial(m: Monomial) -> Self {
+        let mut p = Poly::zero();
+        p.add_term(m, BigRational::one());
         p
     }
 
@@ -272,6 +280,62 @@ impl Poly {
         Some(sum)
     }
 
+    /// The leading term in graded lexicographic order (total degree, then the exponents of
+    /// the variables in alphabetical order): a monomial order, so division terminates.
+    fn leading(&self) -> Option<(&Monomial, &BigRational)> {
+        self.terms.iter().max_by(|(a, _), (b, _)| {
+            a.degree().cmp(&b.degree()).then_with(|| {
+                // the first variable (alphabetically) whose exponents differ decides
+                let mut vars: Vec<&String> = a.0.iter().chain(&b.0).map(|(v, _)| v).collect();
+                vars.sort();
+                vars.dedup();
+                vars.iter()
+                    .map(|v| a.exponent(v).cmp(&b.exponent(v)))
+                    .find(|o| o.is_ne())
+                    .unwrap_or(std::cmp::Ordering::Equal)
+            })
+        })
+    }
+
+    /// `self / d` when `d` divides `self` exactly (multivariate division with remainder
+    /// zero), else `None`.
+    ///
+    /// # Example
+    /// ```
+    /// use orthocheck::algebra::Poly;
+    /// let p = Poly::parse("x^2 - y^2").unwrap();
+    /// assert_eq!(p.div_exact(&Poly::parse("x - y").unwrap()), Some(Poly::parse("x + y").unwrap()));
+    /// assert_eq!(p.div_exact(&Poly::parse("x - 2y").unwrap()), None);
+    /// ```
+    pub fn div_exact(&self, d: &Poly) -> Option<Poly> {
+        let (dm, dc) = d.leading()?;
+        let (dm, dc) = (dm.clone(), dc.clone());
+        let mut r = self.clone();
+        let mut q = Poly::zero();
+        while let Some((rm, rc)) = r.leading() {
+            // the quotient of the leading monomials, if it is a monomial
+            let mut t = Vec::new();
+            for (v, e) in &rm.0 {
+                let de = dm.exponent(v);
+                if de > *e {
+                    return None;
+                }
+                if *e > de {
+                    t.push((v.clone(), e - de));
+                }
+            }
+            if dm.0.iter().any(|(v, _)| rm.exponent(v) == 0) {
+                return None;
+            }
+            let term = Poly {
+                terms: BTreeMap::from([(Monomial(t), rc / &dc)]),
+            };
+            r = &r - &(&term * d);
+            q = &q + &term;
+        }
+        Some(q)
+    }
+
     /// If `self = k · other` for a non-zero rational `k`, return `k`.
     pub fn ratio_to(&self, other: &Poly) -> Option<BigRational> {
         let (m0, c0) = other.terms.iter().next()?;
@@ -283,14 +347,30 @@ impl Poly {
     /// through division by a number) and identifiers (`a`, `a_1`, `A_Cst`). Juxtaposition
     /// multiplies, as in printed formulas: `2(a^2 - b^2)c^2`.
     pub fn parse(text: &str) -> Result<Poly, ParseError> {
-        let tokens = tokenize(text)?;
-        let mut parser = Parser { tokens, pos: 0 };
-        let p = parser.sum()?;
-        if parser.pos != parser.tokens.len() {
-            return Err(parser.error("unexpected input after the expression"));
-        }
-        Ok(p)
+        let r = parse_rational(text, &BTreeMap::new())?;
+        r.to_poly().ok_or(ParseError {
+            position: 0,
+            message: "only division by a non-zero number".into(),
+        })
     }
+}
+
+/// Parse into a rational function; identifiers with a definition stand for it.
+pub(crate) fn parse_rational(
+    text: &str,
+    defs: &BTreeMap<String, RatFn>,
+) -> Result<RatFn, ParseError> {
+    let tokens = tokenize(text)?;
+    let mut parser = Parser {
+        tokens,
+        pos: 0,
+        defs,
+    };
+    let p = parser.sum()?;
+    if parser.pos != parser.tokens.len() {
+        return Err(parser.error("unexpected input after the expression"));
+    }
+    Ok(p)
 }
 
 impl Add for &Poly {
@@ -442,12 +522,13 @@ pub fn parse_decimal(s: &str) -> Option<BigRational> {
     Some(if neg { -v } else { v })
 }
 
-struct Parser {
+struct Parser<'a> {
     tokens: Vec<(usize, Token)>,
     pos: usize,
+    defs: &'a BTreeMap<String, RatFn>,
 }
 
-impl Parser {
+impl Parser<'_> {
     fn peek(&self) -> Option<&Token> {
         self.tokens.get(self.pos).map(|(_, t)| t)
     }
@@ -463,7 +544,7 @@ impl Parser {
         }
     }
 
-    fn sum(&mut self) -> Result<Poly, ParseError> {
+    fn sum(&mut self) -> Result<RatFn, ParseError> {
         let mut acc = match self.peek() {
             Some(Token::Op('-')) => {
                 self.pos += 1;
@@ -490,7 +571,7 @@ impl Parser {
         }
     }
 
-    fn product(&mut self) -> Result<Poly, ParseError> {
+    fn product(&mut self) -> Result<RatFn, ParseError> {
         let mut acc = self.power()?;
         loop {
             match self.peek() {
@@ -501,11 +582,7 @@ impl Parser {
                 Some(Token::Op('/')) => {
                     self.pos += 1;
                     let d = self.power()?;
-                    let c = match d.terms.iter().next() {
-                        Some((m, c)) if d.len() == 1 && m.0.is_empty() => c.clone(),
-                        _ => return Err(self.error("only division by a non-zero number")),
-                    };
-                    acc = acc.scale(&c.recip());
+                    acc = (&acc / &d).ok_or_else(|| self.error("division by zero"))?;
                 }
                 Some(Token::Num(_)) | Some(Token::Ident(_)) | Some(Token::Op('(')) => {
                     acc = &acc * &self.power()?;
@@ -515,7 +592,7 @@ impl Parser {
         }
     }
 
-    fn power(&mut self) -> Result<Poly, ParseError> {
+    fn power(&mut self) -> Result<RatFn, ParseError> {
         let base = self.primary()?;
         if let Some(Token::Op('^')) = self.peek() {
             self.pos += 1;
@@ -534,15 +611,18 @@ impl Parser {
         Ok(base)
     }
 
-    fn primary(&mut self) -> Result<Poly, ParseError> {
+    fn primary(&mut self) -> Result<RatFn, ParseError> {
         match self.peek().cloned() {
             Some(Token::Num(n)) => {
                 self.pos += 1;
-                Ok(Poly::constant(n))
+                Ok(Poly::constant(n).into())
             }
             Some(Token::Ident(name)) => {
                 self.pos += 1;
-                Ok(Poly::var(&name))
+                Ok(match self.defs.get(&name) {
+                    Some(d) => d.clone(),
+                    None => RatFn::var(&name),
+                })
             }
             Some(Token::Op('(')) => {
                 self.pos += 1;

@@ -1,12 +1,14 @@
 //! Judgement: a case runs into claim results, each a comparison of what the paper printed
 //! with what the derivations compute, ending in a [`Verdict`].
 
+mod audit;
 mod dof;
 mod noise;
 mod p3f3;
 mod p4f3;
 mod twofold;
 
+pub use audit::{audit as audit_formulas, audit_all, counts as audit_counts, AuditItem};
 pub use noise::{run_study, study_of};
 pub use twofold::{audit as audit_twofold, TwofoldAudit};
 
@@ -198,6 +200,7 @@ pub fn run_case(case: &Case) -> Result<Vec<ClaimResult>> {
         CaseCheck::P3f3Census(c) => p3f3::check_census(&b, c),
         CaseCheck::P3f4Census(c) => p3f3::check_p3f4_census(&b, c),
         CaseCheck::NoiseStudy(c) => noise::check(&b, c),
+        CaseCheck::FormulaAudit(c) => audit::check(&b, c),
         CaseCheck::NotReproducible(c) => Ok(c
             .claims
             .iter()

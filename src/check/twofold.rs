@@ -3,11 +3,9 @@
 use num_traits::One;
 
 use super::{ClaimResult, Evidence, ResultBuilder, Tolerance, Verdict};
-use crate::algebra::Poly;
+use crate::algebra::{agree_at_random_points, Poly};
 use crate::cases::{parse_signs, TwofoldCase};
-use crate::derivations::twofold::{
-    evaluate_at_random_points, relation_census, sign_class_product, twofold_squared,
-};
+use crate::derivations::twofold::{relation_census, sign_class_product, twofold_squared};
 use crate::error::{Error, Result};
 use crate::numfmt::below;
 
@@ -53,9 +51,9 @@ pub fn audit(case: &TwofoldCase) -> Result<TwofoldAudit> {
     });
     let first = derived.first().cloned().unwrap_or_default();
     let ratio = ratios.first().cloned().flatten();
-    let evaluation = evaluate_at_random_points(
-        &first,
-        &printed,
+    let evaluation = agree_at_random_points(
+        &first.clone().into(),
+        &printed.clone().into(),
         &ratio.clone().unwrap_or_else(num_rational::BigRational::one),
         case.evaluation_points,
         case.seed,

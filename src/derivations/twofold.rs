@@ -5,8 +5,6 @@
 //! Here the squaring is carried out symbolically, with √A, √B, √C as variables reduced by
 //! (√X)² = X, so the printed polynomial is compared with a derivation, not a hand expansion.
 
-use std::collections::BTreeMap;
-
 use nalgebra::Vector3;
 use num_rational::BigRational;
 use rand::Rng;
@@ -73,6 +71,45 @@ pub fn twofold_squared(signs: [i64; 3]) -> Poly {
     square_out(&once, "rA", &rads)
 }
 
+/// Eq. p3f3sqr for a triangle with edges named `edges` (lengths `u`, `v`, `w`) in frame
+/// `frame`: the projections are `u_frame`, `v_frame`, `w_frame`.
+///
+/// # Example
+/// ```
+/// use orthocheck::{algebra::Poly, derivations::twofold::frame_equation};
+/// let f = frame_equation(["a", "g", "f"], "2");
+/// assert!(f.variables().contains(&"g_2".to_string()));
+/// ```
+pub fn frame_equation(edges: [&str; 3], frame: &str) -> Poly {
+    let p = relation_squared(edges, [1, 1, -1]);
+    if frame == "i" {
+        return p;
+    }
+    edges.iter().fold(p, |q, e| {
+        q.substitute(&format!("{e}_i"), &Poly::var(&format!("{e}_{frame}")))
+    })
+}
+
+/// `s₀√(e₀² − e₀ᵢ²) + s₁√(e₁² − e₁ᵢ²) + s₂√(e₂² − e₂ᵢ²) = 0` squared twice, in the edge
+/// letters `edges` and frame `i`.
+pub fn relation_squared(edges: [&str; 3], signs: [i64; 3]) -> Poly {
+    let mut p = twofold_squared(signs);
+    for (k, (from, from_i)) in [("a", "a_i"), ("b", "b_i"), ("c", "c_i")]
+        .iter()
+        .enumerate()
+    {
+        p = p
+            .substitute(from, &Poly::var(&format!("#e{k}")))
+            .substitute(from_i, &Poly::var(&format!("#p{k}")));
+    }
+    for (k, e) in edges.iter().enumerate() {
+        p = p
+            .substitute(&format!("#e{k}"), &Poly::var(e))
+            .substitute(&format!("#p{k}"), &Poly::var(&format!("{e}_i")));
+    }
+    p
+}
+
 /// The product of `√A ± √B ± √C` over the four sign classes, reduced: the radical-free norm
 /// whose vanishing is equivalent to "one of the signed relations holds".
 pub fn sign_class_product() -> Poly {
@@ -84,54 +121,6 @@ pub fn sign_class_product() -> Poly {
         prod = reduce(&(&prod * &f), &rads);
     }
     prod
-}
-
-/// Outcome of evaluating two polynomials at seeded random rational points.
-#[derive(Clone, Debug, serde::Serialize)]
-pub struct PointEvaluation {
-    /// Number of points.
-    pub points: usize,
-    /// Seed of the points.
-    pub seed: u64,
-    /// Points where `left == ratio · right` held exactly.
-    pub agreeing: usize,
-}
-
-/// Schwartz–Zippel check: evaluate `left` and `ratio·right` at random rational points with
-/// numerators in [−10⁶, 10⁶] and denominators in [1, 10³].
-pub fn evaluate_at_random_points(
-    left: &Poly,
-    right: &Poly,
-    ratio: &BigRational,
-    points: usize,
-    seed: u64,
-) -> PointEvaluation {
-    let mut g = rng(seed);
-    let mut vars = left.variables();
-    vars.extend(right.variables());
-    vars.sort();
-    vars.dedup();
-    let mut agreeing = 0;
-    for _ in 0..points {
-        let values: BTreeMap<String, BigRational> = vars
-            .iter()
-            .map(|v| {
-                let n: i64 = g.random_range(-1_000_000..=1_000_000);
-                let d: i64 = g.random_range(1..=1000);
-                (v.clone(), BigRational::new(n.into(), d.into()))
-            })
-            .collect();
-        if let (Some(l), Some(r)) = (left.eval(&values), right.eval(&values)) {
-            if l == r * ratio {
-                agreeing += 1;
-            }
-        }
-    }
-    PointEvaluation {
-        points,
-        seed,
-        agreeing,
-    }
 }
 
 /// How often each signed relation holds for random triangles under random rotations.

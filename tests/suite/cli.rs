@@ -326,3 +326,56 @@ fn noise_is_seeded_and_agrees_with_itself() {
         Some(2)
     );
 }
+
+#[test]
+fn audit_lists_every_item_and_finds_the_errata() {
+    let out = orthocheck(&["audit", "--all", "--json"]);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let v = json(&out);
+    let items = v.as_array().unwrap();
+    assert!(items.len() >= 40, "{} items", items.len());
+    for it in items {
+        for key in [
+            "id",
+            "where",
+            "printed",
+            "should_be",
+            "method",
+            "finding",
+            "verdict",
+        ] {
+            assert!(it.get(key).is_some(), "missing {key}");
+        }
+    }
+    let verdict = |id: &str| {
+        items
+            .iter()
+            .find(|i| i["id"] == id)
+            .map(|i| i["verdict"].as_str().unwrap().to_string())
+    };
+    assert_eq!(verdict("p3f3sqr").as_deref(), Some("identity-verified"));
+    assert_eq!(
+        verdict("p3f3-differences/equation-2").as_deref(),
+        Some("erratum")
+    );
+    assert_eq!(
+        verdict("appA-coefficients/f_cb").as_deref(),
+        Some("identity-verified")
+    );
+    let one = orthocheck(&["audit", "appA-quartic"]);
+    let text = String::from_utf8_lossy(&one.stdout);
+    assert!(
+        text.contains("appA-quartic/b-formula — identity-verified"),
+        "{text}"
+    );
+    assert_eq!(
+        orthocheck(&["audit", "no-such-item"]).status.code(),
+        Some(2)
+    );
+    assert_eq!(orthocheck(&["audit"]).status.code(), Some(2));
+}

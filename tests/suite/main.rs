@@ -4,6 +4,8 @@
 mod algebra_props;
 /// The command line: exit codes, JSON shapes, determinism.
 mod cli;
+/// docs/errata.md is what `orthocheck audit --all --markdown` prints.
+mod errata;
 /// The paper cases cover the claims this tool must decide.
 mod inventory;
 /// Property tests of the solvers on seeded random scenes, generic and degenerate.

@@ -1,0 +1,329 @@
+//! Rational functions over ℚ: a numerator and a denominator polynomial, compared by
+//! cross-multiplication (no cancellation needed to decide equality).
+
+use std::collections::BTreeMap;
+use std::ops::{Add, Div, Mul, Neg, Sub};
+
+use num_rational::BigRational;
+use num_traits::{One, Zero};
+
+use super::Poly;
+use crate::error::ParseError;
+
+/// `num / den` with `den ≠ 0`.
+///
+/// # Example
+/// ```
+/// use orthocheck::algebra::RatFn;
+/// let f = RatFn::parse("(x^2 - y^2)/(x - y)").unwrap();
+/// assert!(f.equals(&RatFn::parse("x + y").unwrap()));
+/// ```
+#[derive(Clone, Debug)]
+pub struct RatFn {
+    /// Numerator.
+    pub num: Poly,
+    /// Denominator (never the zero polynomial).
+    pub den: Poly,
+}
+
+impl From<Poly> for RatFn {
+    fn from(p: Poly) -> Self {
+        RatFn {
+            num: p,
+            den: Poly::int(1),
+        }
+    }
+}
+
+impl RatFn {
+    /// The variable `name`.
+    pub fn var(name: &str) -> Self {
+        Poly::var(name).into()
+    }
+
+    /// An integer constant.
+    pub fn int(c: i64) -> Self {
+        Poly::int(c).into()
+    }
+
+    /// Parse an expression like [`Poly::parse`], with division by any non-zero expression.
+    pub fn parse(text: &str) -> Result<RatFn, ParseError> {
+        super::poly::parse_rational(text, &BTreeMap::new())
+    }
+
+    /// Parse with named definitions: an identifier that has a definition stands for it
+    /// (the paper's abbreviations, such as `d_a1` or `f_cb`).
+    pub fn parse_with(text: &str, defs: &BTreeMap<String, RatFn>) -> Result<RatFn, ParseError> {
+        super::poly::parse_rational(text, defs)
+    }
+
+    /// Whether the two are the same rational function: n₁d₂ = n₂d₁ exactly.
+    pub fn equals(&self, other: &RatFn) -> bool {
+        &self.num * &other.den == &other.num * &self.den
+    }
+
+    /// If `self = k · other` for a non-zero rational `k`, return `k`.
+    pub fn ratio_to(&self, other: &RatFn) -> Option<BigRational> {
+        (&self.num * &other.den).ratio_to(&(&other.num * &self.den))
+    }
+
+    /// Whether this is zero.
+    pub fn is_zero(&self) -> bool {
+        self.num.is_zero()
+    }
+
+    /// The polynomial, when the denominator is a constant.
+    pub fn to_poly(&self) -> Option<Poly> {
+        let mut t = self.den.terms();
+        match (t.next(), t.next()) {
+            (Some((m, c)), None) if m.degree() == 0 => Some(self.num.scale(&c.recip())),
+            _ => None,
+        }
+    }
+
+    /// Integer power.
+    pub fn pow(&self, e: u32) -> RatFn {
+        RatFn {
+            num: self.num.pow(e),
+            den: self.den.pow(e),
+        }
+    }
+
+    /// Substitute `value` for the variable `name`.
+    pub fn substitute(&self, name: &str, value: &RatFn) -> RatFn {
+        // P(N/D) = Σ cₑ Nᵉ D^(d−e) / D^d for each of numerator and denominator
+        let homogenise = |p: &Poly| -> (Poly, u32) {
+            let c = p.coefficients_in(name);
+            let d = c.len().saturating_sub(1) as u32;
+            let mut out = Poly::zero();
+            for (e, ce) in c.iter().enumerate() {
+                let term = &(ce * &value.num.pow(e as u32)) * &value.den.pow(d - e as u32);
+                out = &out + &term;
+            }
+            (out, d)
+        };
+        let (n, dn) = homogenise(&self.num);
+        let (m, dm) = homogenise(&self.den);
+        // (n / D^dn) / (m / D^dm)
+        let (num, den) = if dn >= dm {
+            (n, &m * &value.den.pow(dn - dm))
+        } else {
+            (&n * &value.den.pow(dm - dn), m)
+        };
+        RatFn { num, den }
+    }
+
+    /// Evaluate at a rational point; `None` if a variable has no value or the denominator
+    /// vanishes there.
+    pub fn eval(&self, values: &BTreeMap<String, BigRational>) -> Option<BigRational> {
+        let d = self.den.eval(values)?;
+        if d.is_zero() {
+            return None;
+        }
+        Some(self.num.eval(values)? / d)
+    }
+
+    /// All variable names, sorted.
+    pub fn variables(&self) -> Vec<String> {
+        let mut v = self.num.variables();
+        v.extend(self.den.variables());
+        v.sort();
+        v.dedup();
+        v
+    }
+}
+
+impl Add for &RatFn {
+    type Output = RatFn;
+    fn add(self, o: &RatFn) -> RatFn {
+        if self.den == o.den {
+            return RatFn {
+                num: &self.num + &o.num,
+                den: self.den.clone(),
+            };
+        }
+        // one denominator a multiple of the other (D and D², …): the larger one serves both,
+        // which keeps repeated abbreviations from multiplying out
+        if let Some(k) = o.den.div_exact(&self.den) {
+            return RatFn {
+                num: &(&self.num * &k) + &o.num,
+                den: o.den.clone(),
+            };
+        }
+        if let Some(k) = self.den.div_exact(&o.den) {
+            return RatFn {
+                num: &self.num + &(&o.num * &k),
+                den: self.den.clone(),
+            };
+        }
+        RatFn {
+            num: &(&self.num * &o.den) + &(&o.num * &self.den),
+            den: &self.den * &o.den,
+        }
+    }
+}
+
+impl Sub for &RatFn {
+    type Output = RatFn;
+    fn sub(self, o: &RatFn) -> RatFn {
+        self + &(-o)
+    }
+}
+
+impl Mul for &RatFn {
+    type Output = RatFn;
+    fn mul(self, o: &RatFn) -> RatFn {
+        RatFn {
+            num: &self.num * &o.num,
+            den: &self.den * &o.den,
+        }
+    }
+}
+
+impl Div for &RatFn {
+    type Output = Option<RatFn>;
+    #[allow(clippy::suspicious_arithmetic_impl)] // a/b ÷ c/d = ad / bc
+    /// `None` when dividing by zero.
+    fn div(self, o: &RatFn) -> Option<RatFn> {
+        (!o.num.is_zero()).then(|| RatFn {
+            num: &self.num * &o.den,
+            den: &self.den * &o.num,
+        })
+    }
+}
+
+impl Neg for &RatFn {
+    type Output = RatFn;
+    fn neg(self) -> RatFn {
+        RatFn {
+            num: -&self.num,
+            den: self.den.clone(),
+        }
+    }
+}
+
+impl Default for RatFn {
+    fn default() -> Self {
+        Poly::zero().into()
+    }
+}
+
+/// Solve the square linear system `m · x = rhs` over rational functions by Gaussian
+/// elimination (pivots: the first non-zero entry); `None` when singular.
+pub fn solve_linear(m: &[Vec<RatFn>], rhs: &[RatFn]) -> Option<Vec<RatFn>> {
+    let n = m.len();
+    let mut a: Vec<Vec<RatFn>> = m
+        .iter()
+        .zip(rhs)
+        .map(|(r, b)| {
+            r.iter()
+                .cloned()
+                .chain(std::iter::once(b.clone()))
+                .collect()
+        })
+        .collect();
+    for c in 0..n {
+        let p = (c..n).find(|&r| !a[r][c].is_zero())?;
+        a.swap(c, p);
+        let pivot = a[c][c].clone();
+        for v in a[c].iter_mut().skip(c) {
+            *v = (&*v / &pivot)?;
+        }
+        for r in 0..n {
+            if r != c && !a[r][c].is_zero() {
+                let f = a[r][c].clone();
+                let row = a[c].clone();
+                for (v, p) in a[r].iter_mut().zip(&row).skip(c) {
+                    *v = &*v - &(&f * p);
+                }
+            }
+        }
+    }
+    Some(a.into_iter().map(|r| r[n].clone()).collect())
+}
+
+/// Outcome of evaluating two rational functions at seeded random rational points.
+#[derive(Clone, Debug, PartialEq, serde::Serialize)]
+pub struct PointEvaluation {
+    /// Number of points.
+    pub points: usize,
+    /// Seed of the points.
+    pub seed: u64,
+    /// Points where `left == ratio · right` held exactly.
+    pub agreeing: usize,
+}
+
+/// Schwartz–Zippel check, independent of the expansion: evaluate `left` and `ratio · right`
+/// exactly at seeded random rational points (numerators in [−10⁶, 10⁶], denominators in
+/// [1, 10³]). Two different rational functions agree at such a point with negligible
+/// probability; a point where a denominator vanishes counts as disagreement.
+///
+/// # Example
+/// ```
+/// use orthocheck::algebra::{agree_at_random_points, rat, RatFn};
+/// let l = RatFn::parse("(a + b)^2").unwrap();
+/// let r = RatFn::parse("a^2 + 2a b + b^2").unwrap();
+/// assert_eq!(agree_at_random_points(&l, &r, &rat(1, 1), 16, 3).agreeing, 16);
+/// ```
+pub fn agree_at_random_points(
+    left: &RatFn,
+    right: &RatFn,
+    ratio: &BigRational,
+    points: usize,
+    seed: u64,
+) -> PointEvaluation {
+    use rand::Rng;
+    let mut g = crate::model::rng(seed);
+    let mut vars = left.variables();
+    vars.extend(right.variables());
+    vars.sort();
+    vars.dedup();
+    let mut agreeing = 0;
+    for _ in 0..points {
+        let values: BTreeMap<String, BigRational> = vars
+            .iter()
+            .map(|v| {
+                let n: i64 = g.random_range(-1_000_000..=1_000_000);
+                let d: i64 = g.random_range(1..=1000);
+                (v.clone(), BigRational::new(n.into(), d.into()))
+            })
+            .collect();
+        if let (Some(l), Some(r)) = (left.eval(&values), right.eval(&values)) {
+            if l == r * ratio {
+                agreeing += 1;
+            }
+        }
+    }
+    PointEvaluation {
+        points,
+        seed,
+        agreeing,
+    }
+}
+
+impl RatFn {
+    /// One.
+    pub fn one() -> Self {
+        Poly::constant(BigRational::one()).into()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn substitution_and_linear_solve() {
+        let f = RatFn::parse("x^2 / (y + 1)").unwrap();
+        let g = f.substitute("x", &RatFn::parse("1/(y - 1)").unwrap());
+        assert!(g.equals(&RatFn::parse("1 / ((y - 1)^2 (y + 1))").unwrap()));
+        // [u 1; 1 v] x = [1; 0]
+        let m = vec![
+            vec![RatFn::var("u"), RatFn::int(1)],
+            vec![RatFn::int(1), RatFn::var("v")],
+        ];
+        let x = solve_linear(&m, &[RatFn::int(1), RatFn::int(0)]).unwrap();
+        assert!(x[0].equals(&RatFn::parse("v / (u v - 1)").unwrap()));
+        assert!(RatFn::parse("1/(a - a)").is_err());
+    }
+}

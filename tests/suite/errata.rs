@@ -1,0 +1,25 @@
+use std::path::Path;
+
+use orthocheck::{cases, check};
+
+#[test]
+fn docs_errata_is_up_to_date() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let all = cases::load_all(&root.join("paper_cases")).unwrap();
+    let report = orthocheck::report::Report::from_cases(&all).unwrap();
+    let fresh = orthocheck::report::errata_markdown(&report.claims);
+    let committed = std::fs::read_to_string(root.join("docs/errata.md")).unwrap_or_default();
+    assert!(
+        fresh == committed,
+        "docs/errata.md is out of date: run `cargo run --release -- audit --all --markdown > docs/errata.md`"
+    );
+    // the audit's errata stay found
+    let items = check::audit_all(&all).unwrap();
+    assert!(
+        items
+            .iter()
+            .filter(|i| i.verdict == check::Verdict::Erratum)
+            .count()
+            >= 11
+    );
+}
