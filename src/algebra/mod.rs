@@ -32,6 +32,13 @@ pub fn rat(n: i64, d: i64) -> BigRational {
 /// tested this way come from a few dozen additions and products of the inputs.
 pub const NEGLIGIBLE_ULPS: f64 = 64.0;
 
+/// The relative rounding level of a square root of a difference of squares, √(e² − eᵢ²):
+/// cancellation leaves an absolute error near √(64ε)·e, far above 64ε. Quantities built from
+/// such depths (the two-frame constructions) are compared at this level.
+pub fn sqrt_rounding() -> f64 {
+    (NEGLIGIBLE_ULPS * f64::EPSILON).sqrt()
+}
+
 /// Whether `value`, computed from terms whose absolute values sum to `magnitude`, is zero
 /// up to rounding (|value| ≤ 64·ε·magnitude). Used to detect exactly degenerate input, never
 /// to accept a noisy result.

@@ -175,6 +175,10 @@ pub enum CaseCheck {
     NotReproducible(NotReproducibleCase),
     /// Every displayed formula and derivation step, machine-checked.
     FormulaAudit(FormulaAuditCase),
+    /// §5.1 and §5.4: two frames are not enough; the counterexample; curves.
+    TwoFrames(TwoFramesCase),
+    /// §5.2 and §5.3 over seeded random scenes: the identity tests.
+    IdentityCensus(IdentityCensusCase),
     /// A noise study (§2, §3).
     NoiseStudy(NoiseStudyCase),
 }
@@ -369,6 +373,62 @@ pub struct TextItem {
     pub corrected: String,
     /// Why it matters to a reader reproducing the result.
     pub effect: String,
+}
+
+/// §5.1's printed construction and the general two-frame claims.
+#[derive(Clone, Debug, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct TwoFramesCase {
+    /// The printed points P, Q, R, Q′, R′.
+    pub counterexample: PrintedPoints,
+    /// The construction as the text describes it.
+    pub construction: ClaimRef,
+    /// "no possibility of recovery … from two images" (the family, at random scenes).
+    pub family: ClaimRef,
+    /// "the forth point T2 does carry only one piece of information".
+    pub fourth_point: ClaimRef,
+    /// §5.4: curves.
+    pub curves: ClaimRef,
+    /// Points of the random scenes (≥ 4).
+    pub points: usize,
+    /// Random scenes.
+    pub trials: usize,
+    /// Samples of the curve.
+    pub curve_samples: usize,
+    /// Seed.
+    pub seed: u64,
+}
+
+/// Printed 3-D points.
+#[derive(Clone, Debug, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct PrintedPoints {
+    /// The claim.
+    pub claim: ClaimRef,
+    /// Names, as printed.
+    pub names: Vec<String>,
+    /// Coordinates, as printed.
+    pub points: Vec<[Printed; 3]>,
+}
+
+/// The identity tests over seeded random scenes.
+#[derive(Clone, Debug, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct IdentityCensusCase {
+    /// "Three traced points ensure that … we can identify the line".
+    pub line: ClaimRef,
+    /// The procedure (c, b, a, T_a, T_b) and its c.
+    pub procedure: ClaimRef,
+    /// §5.3: five points.
+    pub five_points: ClaimRef,
+    /// The abstract's and the conclusions' identification claim.
+    pub tracing: ClaimRef,
+    /// Random scenes.
+    pub trials: usize,
+    /// Values of c per scene, as multiples of the smallest allowed c.
+    pub c_factors: Vec<f64>,
+    /// Seed.
+    pub seed: u64,
 }
 
 /// Claims without data.
@@ -937,6 +997,28 @@ fn validate(case: &Case, text: &str, path: &Path) -> Result<()> {
                         format!("needs solutions of {edges} values"),
                     );
                 }
+            }
+        }
+        CaseCheck::TwoFrames(c) => {
+            if c.counterexample.points.len() != 5 || c.counterexample.names.len() != 5 {
+                return err(
+                    "check.two_frames.counterexample.points",
+                    "needs the five points P, Q, R, Q′, R′".into(),
+                );
+            }
+            if c.points < 4 || c.trials == 0 || c.curve_samples < 4 {
+                return err(
+                    "check.two_frames.points",
+                    "needs at least 4 points, 1 trial and 4 curve samples".into(),
+                );
+            }
+        }
+        CaseCheck::IdentityCensus(c) => {
+            if c.trials == 0 || c.c_factors.iter().any(|f| f.is_nan() || *f < 1.0) {
+                return err(
+                    "check.identity_census.c_factors",
+                    "needs trials and factors of at least 1".into(),
+                );
             }
         }
         CaseCheck::P4f3Census(c) => {

@@ -3,9 +3,11 @@
 
 mod audit;
 mod dof;
+mod identity;
 mod noise;
 mod p3f3;
 mod p4f3;
+mod two_frames;
 mod twofold;
 
 pub use audit::{audit as audit_formulas, audit_all, counts as audit_counts, AuditItem};
@@ -201,6 +203,8 @@ pub fn run_case(case: &Case) -> Result<Vec<ClaimResult>> {
         CaseCheck::P3f4Census(c) => p3f3::check_p3f4_census(&b, c),
         CaseCheck::NoiseStudy(c) => noise::check(&b, c),
         CaseCheck::FormulaAudit(c) => audit::check(&b, c),
+        CaseCheck::TwoFrames(c) => two_frames::check(&b, c),
+        CaseCheck::IdentityCensus(c) => identity::check(&b, c),
         CaseCheck::NotReproducible(c) => Ok(c
             .claims
             .iter()

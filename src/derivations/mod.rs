@@ -4,6 +4,8 @@
 pub mod appendix_a;
 pub mod dof;
 pub mod formulas;
+pub mod identity;
+pub mod identity5;
 pub mod noise;
 pub mod p3f3;
 pub mod p3f4;

@@ -369,7 +369,7 @@ pub fn reconstructions(tracks: &Tracks, squares: &[f64; 3]) -> Result<Vec<Recons
 }
 
 /// The proper rotation that best maps `from` onto `to` (both with the first point at the origin).
-fn kabsch(from: &[Vector3<f64>; 3], to: &[Vector3<f64>; 3]) -> Rotation3<f64> {
+pub(crate) fn kabsch(from: &[Vector3<f64>; 3], to: &[Vector3<f64>; 3]) -> Rotation3<f64> {
     let h: Matrix3<f64> = (0..3).map(|j| to[j] * from[j].transpose()).sum();
     let svd = h.svd(true, true);
     let (Some(u), Some(vt)) = (svd.u, svd.v_t) else {

@@ -1,0 +1,404 @@
+//! §5.2: point identity and rigid-body membership from two frames of four points.
+//!
+//! The paper's test: choose the length c of RP, get b² from the Appendix A quadratic (both
+//! signs) and a² from the frame difference, build the triangle PQR in 3-D, intersect the
+//! first frame's viewing ray through T with the plane RPQ (T_a) and with that plane shifted
+//! along RP × RQ (T_b), project both into the second frame and measure the distance of T₂
+//! from the line T₂ₐT₂_b. That line is T's epipolar line; the independent check is the affine
+//! epipolar constraint with the equal scale of orthographic views (module `two_frames`).
+
+use nalgebra::{Matrix3, Vector2, Vector3};
+
+use super::p3f3::kabsch;
+use super::twofold::FrameCoefficients;
+use crate::derivations::two_frames::epipolar;
+
+/// The paper's test for one value of c and one choice of signs.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PaperTest {
+    /// c (the chosen length of RP).
+    pub c: f64,
+    /// The sign in the formula for b² (+1 or −1).
+    pub sign_b: f64,
+    /// The relative depth sign of the triangle in frame 2 (+1 or −1).
+    pub sign_frame2: f64,
+    /// b² and a² that follow.
+    pub b2: f64,
+    /// a².
+    pub a2: f64,
+    /// T_a and T_b in the triangle's coordinates (R; RP, RQ, RP × RQ), the debug output's
+    /// "PaK" and "PbK".
+    pub ta_coords: Vector3<f64>,
+    /// T_b's.
+    pub tb_coords: Vector3<f64>,
+    /// T_a and T_b in frame 2's camera coordinates (image x, y and depth): "Pa", "Pb".
+    pub ta2: Vector3<f64>,
+    /// T_b in frame 2.
+    pub tb2: Vector3<f64>,
+    /// The distance of the observed T₂ from the line T₂ₐT₂_b.
+    pub distance: f64,
+}
+
+/// The depths of a triangle P, Q, R in one frame (P at depth 0) from its squared edges and
+/// projections: the sign pattern whose signed sum of √(e² − eᵢ²) is closest to zero, times
+/// `sign`. `None` if an edge is shorter than its projection.
+fn depths(sq: [f64; 3], proj: [f64; 3], sign: f64) -> Option<[f64; 3]> {
+    let r: Vec<f64> = (0..3)
+        .map(|e| {
+            let d = sq[e] - proj[e];
+            // rounding may leave −ε for an edge parallel to the image
+            (d >= -1e-9 * sq[e]).then(|| d.max(0.0).sqrt())
+        })
+        .collect::<Option<_>>()?;
+    let patterns = [[1.0, 1.0, -1.0], [1.0, -1.0, 1.0], [-1.0, 1.0, 1.0]];
+    let best = patterns.iter().min_by(|a, b| {
+        let s = |p: &[f64; 3]| (p[0] * r[0] + p[1] * r[1] + p[2] * r[2]).abs();
+        s(a).total_cmp(&s(b))
+    })?;
+    let zq = sign * best[0] * r[0];
+    Some([0.0, zq, zq + sign * best[1] * r[1]])
+}
+
+fn squared(f: &[Vector2<f64>; 4]) -> [f64; 3] {
+    [
+        (f[0] - f[1]).norm_squared(),
+        (f[1] - f[2]).norm_squared(),
+        (f[2] - f[0]).norm_squared(),
+    ]
+}
+
+/// b² from the Appendix A quadratic at a given c² (both roots when real) and the a² that go
+/// with them: F₁ − F₂ gives a² = p b² + q c² + r; substituted into F₁, A b⁴ + B b² + C = 0.
+pub fn b_squared(
+    f1: &[Vector2<f64>; 4],
+    f2: &[Vector2<f64>; 4],
+    c2: f64,
+) -> Option<[(f64, f64); 2]> {
+    let (g1, g2) = (
+        FrameCoefficients::new(squared(f1)),
+        FrameCoefficients::new(squared(f2)),
+    );
+    let (d, k) = g1.difference(&g2);
+    if d[0] == 0.0 {
+        return None;
+    }
+    let (p, s) = (-d[1] / d[0], (-d[2] * c2 - k) / d[0]);
+    let a = p * p - 2.0 * p + 1.0;
+    let b = 2.0 * p * s - 2.0 * s - 2.0 * c2 - 2.0 * p * c2 + 2.0 * g1.alpha * p + 2.0 * g1.beta;
+    let c = s * s + c2 * c2 - 2.0 * s * c2 + g1.k + 2.0 * g1.alpha * s + 2.0 * g1.gamma * c2;
+    let disc = b * b - 4.0 * a * c;
+    if disc < 0.0 || a == 0.0 {
+        return None;
+    }
+    let root = |sign: f64| {
+        let y = (-b + sign * disc.sqrt()) / (2.0 * a);
+        (y, p * y + s)
+    };
+    Some([root(-1.0), root(1.0)])
+}
+
+/// The paper's test for frames of P, Q, R, T (in that order) at one c, for each sign of b
+/// and each relative depth sign of frame 2: the tests that are geometrically possible.
+pub fn paper_tests(f1: &[Vector2<f64>; 4], f2: &[Vector2<f64>; 4], c: f64) -> Vec<PaperTest> {
+    let mut out = Vec::new();
+    let Some(roots) = b_squared(f1, f2, c * c) else {
+        return out;
+    };
+    let (p1, p2) = (squared(f1), squared(f2));
+    for (k, &(b2, a2)) in roots.iter().enumerate() {
+        let sq = [a2, b2, c * c];
+        for sign_frame2 in [1.0, -1.0] {
+            let (Some(mut z1), Some(z2)) = (depths(sq, p1, 1.0), depths(sq, p2, sign_frame2))
+            else {
+                continue;
+            };
+            // frame 1's mirror convention: P not below R (the two mirror images give the same
+            // set of lines over the frame-2 signs; this one matches the author's printout)
+            if z1[0] < z1[2] {
+                z1 = z1.map(|z| -z);
+            }
+            let x1: [Vector3<f64>; 3] =
+                std::array::from_fn(|i| Vector3::new(f1[i].x, f1[i].y, z1[i]));
+            let x2: [Vector3<f64>; 3] =
+                std::array::from_fn(|i| Vector3::new(f2[i].x, f2[i].y, z2[i]));
+            let o1: [Vector3<f64>; 3] = std::array::from_fn(|i| x1[i] - x1[0]);
+            let o2: [Vector3<f64>; 3] = std::array::from_fn(|i| x2[i] - x2[0]);
+            let rot = kabsch(&o1, &o2);
+            // the triangle's frame at R: RP, RQ, RP × RQ
+            let (rp, rq) = (x1[0] - x1[2], x1[1] - x1[2]);
+            let basis = Matrix3::from_columns(&[rp, rq, rp.cross(&rq)]);
+            let Some(inv) = basis.try_inverse() else {
+                continue;
+            };
+            // T(z) = (T₁, z): coordinates affine in z; solve γ = 0 and γ = 1
+            let at = |z: f64| inv * (Vector3::new(f1[3].x, f1[3].y, z) - x1[2]);
+            let (g0, g1) = (at(0.0), at(1.0) - at(0.0));
+            if g1.z == 0.0 {
+                continue;
+            }
+            let za = -g0.z / g1.z;
+            let zb = (1.0 - g0.z) / g1.z;
+            let (ta, tb) = (
+                Vector3::new(f1[3].x, f1[3].y, za),
+                Vector3::new(f1[3].x, f1[3].y, zb),
+            );
+            let to2 = |x: Vector3<f64>| rot * (x - x1[0]) + x2[0];
+            let (ta2, tb2) = (to2(ta), to2(tb));
+            let dir = Vector2::new(tb2.x - ta2.x, tb2.y - ta2.y);
+            let off = f2[3] - Vector2::new(ta2.x, ta2.y);
+            let distance = if dir.norm() == 0.0 {
+                off.norm()
+            } else {
+                (dir.x * off.y - dir.y * off.x).abs() / dir.norm()
+            };
+            out.push(PaperTest {
+                c,
+                sign_b: if k == 0 { -1.0 } else { 1.0 },
+                sign_frame2,
+                b2,
+                a2,
+                ta_coords: at(za),
+                tb_coords: at(zb),
+                ta2,
+                tb2,
+                distance,
+            });
+        }
+    }
+    out
+}
+
+/// The smallest c the paper allows, to a relative step of 10⁻³: RP at least its longest
+/// projection, then the first c on the grid start·1.001ⁱ for which some b is real with a and b
+/// at least their longest projections. `None` if none up to 100 times the projection.
+pub fn smallest_c(f1: &[Vector2<f64>; 4], f2: &[Vector2<f64>; 4]) -> Option<f64> {
+    let (p1, p2) = (squared(f1), squared(f2));
+    let start = p1[2].max(p2[2]).sqrt();
+    (0..4610).map(|i| start * 1.001_f64.powi(i)).find(|&c| {
+        b_squared(f1, f2, c * c).is_some_and(|roots| {
+            roots
+                .iter()
+                .any(|&(b2, a2)| b2 >= p1[1].max(p2[1]) && a2 >= p1[0].max(p2[0]))
+        })
+    })
+}
+
+/// The equal-scale residual |a² + b² − c² − d²| of the affine epipolar constraint of four
+/// correspondences: zero for two views of one rigid body (the four correspondences always
+/// satisfy the affine constraint alone).
+pub fn epipolar_residual(f1: &[Vector2<f64>], f2: &[Vector2<f64>]) -> f64 {
+    epipolar(f1, f2).scale_residual.abs()
+}
+
+/// One assignment of frame-2 points to frame-1 points, with its residual.
+#[derive(Clone, Debug, PartialEq, serde::Serialize)]
+pub struct Assignment {
+    /// `frame2_indices[i]` is the frame-2 index of frame-1 point i.
+    pub frame2_indices: Vec<usize>,
+    /// The residual (smaller is better).
+    pub residual: f64,
+}
+
+/// Every ordered choice of four frame-2 points for frame-1 points 0‥3, n(n−1)(n−2)(n−3) of
+/// them, ranked by `residual` (best first, ties by indices).
+pub fn rank_quadruples(
+    f1: &[Vector2<f64>],
+    f2: &[Vector2<f64>],
+    residual: impl Fn(&[Vector2<f64>; 4], &[Vector2<f64>; 4]) -> f64 + Sync,
+) -> Vec<Assignment> {
+    use rayon::prelude::*;
+    let n = f2.len();
+    let first: [Vector2<f64>; 4] = std::array::from_fn(|i| f1[i]);
+    let mut all: Vec<Assignment> = (0..n)
+        .into_par_iter()
+        .flat_map_iter(|a| {
+            let first = &first;
+            let residual = &residual;
+            (0..n).filter(move |b| *b != a).flat_map(move |b| {
+                (0..n)
+                    .filter(move |c| *c != a && *c != b)
+                    .flat_map(move |c| {
+                        (0..n)
+                            .filter(move |d| *d != a && *d != b && *d != c)
+                            .map(move |d| {
+                                let g = [f2[a], f2[b], f2[c], f2[d]];
+                                Assignment {
+                                    frame2_indices: vec![a, b, c, d],
+                                    residual: residual(first, &g),
+                                }
+                            })
+                    })
+            })
+        })
+        .collect();
+    all.sort_by(|x, y| {
+        x.residual
+            .total_cmp(&y.residual)
+            .then_with(|| x.frame2_indices.cmp(&y.frame2_indices))
+    });
+    all
+}
+
+/// The best full correspondence: the best four-point assignment fixes the epipolar geometry;
+/// every other frame-1 point takes the frame-2 point nearest its epipolar line (an optimal
+/// assignment of the rest by those distances). The score is the RMS epipolar distance over
+/// all points, relative to the image size.
+pub fn full_correspondence(f1: &[Vector2<f64>], f2: &[Vector2<f64>]) -> Option<Assignment> {
+    let n = f1.len();
+    if n < 4 || f2.len() != n {
+        return None;
+    }
+    let best = rank_quadruples(f1, f2, |a, b| epipolar_residual(a, b))
+        .into_iter()
+        .next()?;
+    let chosen = &best.frame2_indices;
+    let g1: Vec<Vector2<f64>> = (0..4).map(|i| f1[i]).collect();
+    let g2: Vec<Vector2<f64>> = chosen.iter().map(|&j| f2[j]).collect();
+    let e = epipolar(&g1, &g2);
+    let [a, b, c, d] = e.coefficients;
+    let m1 = g1.iter().sum::<Vector2<f64>>() / 4.0;
+    let m2 = g2.iter().sum::<Vector2<f64>>() / 4.0;
+    let norm = (c * c + d * d).sqrt().max(f64::MIN_POSITIVE);
+    // distance of frame-2 point q from the epipolar line of frame-1 point p
+    let dist = |p: &Vector2<f64>, q: &Vector2<f64>| {
+        (a * (p.x - m1.x) + b * (p.y - m1.y) + c * (q.x - m2.x) + d * (q.y - m2.y)).abs() / norm
+    };
+    let rest1: Vec<usize> = (4..n).collect();
+    let rest2: Vec<usize> = (0..n).filter(|j| !chosen.contains(j)).collect();
+    let cost: Vec<Vec<f64>> = rest1
+        .iter()
+        .map(|&i| {
+            rest2
+                .iter()
+                .map(|&j| dist(&f1[i], &f2[j]).powi(2))
+                .collect()
+        })
+        .collect();
+    let matched = hungarian(&cost);
+    let mut indices = chosen.clone();
+    indices.extend(matched.iter().map(|&k| rest2[k]));
+    let size = f2
+        .iter()
+        .map(|q| (q - m2).norm())
+        .fold(f64::MIN_POSITIVE, f64::max);
+    let rms = ((0..n)
+        .map(|i| dist(&f1[i], &f2[indices[i]]).powi(2))
+        .sum::<f64>()
+        / n as f64)
+        .sqrt();
+    Some(Assignment {
+        frame2_indices: indices,
+        residual: rms / size,
+    })
+}
+
+/// Minimum-cost perfect assignment of a square cost matrix (Hungarian method, O(n³)):
+/// `result[i]` is the column of row i.
+pub fn hungarian(cost: &[Vec<f64>]) -> Vec<usize> {
+    let n = cost.len();
+    if n == 0 {
+        return Vec::new();
+    }
+    // potentials u (rows), v (columns); p[j] = row matched to column j (1-based, 0 = none)
+    let inf = f64::INFINITY;
+    let (mut u, mut v) = (vec![0.0; n + 1], vec![0.0; n + 1]);
+    let (mut p, mut way) = (vec![0usize; n + 1], vec![0usize; n + 1]);
+    for i in 1..=n {
+        p[0] = i;
+        let mut j0 = 0;
+        let mut minv = vec![inf; n + 1];
+        let mut used = vec![false; n + 1];
+        loop {
+            used[j0] = true;
+            let i0 = p[j0];
+            let mut delta = inf;
+            let mut j1 = 0;
+            for j in 1..=n {
+                if !used[j] {
+                    let cur = cost[i0 - 1][j - 1] - u[i0] - v[j];
+                    if cur < minv[j] {
+                        minv[j] = cur;
+                        way[j] = j0;
+                    }
+                    if minv[j] < delta {
+                        delta = minv[j];
+                        j1 = j;
+                    }
+                }
+            }
+            for j in 0..=n {
+                if used[j] {
+                    u[p[j]] += delta;
+                    v[j] -= delta;
+                } else {
+                    minv[j] -= delta;
+                }
+            }
+            j0 = j1;
+            if p[j0] == 0 {
+                break;
+            }
+        }
+        loop {
+            let j1 = way[j0];
+            p[j0] = p[j1];
+            j0 = j1;
+            if j0 == 0 {
+                break;
+            }
+        }
+    }
+    let mut row = vec![0; n];
+    for j in 1..=n {
+        if p[j] > 0 {
+            row[p[j] - 1] = j - 1;
+        }
+    }
+    row
+}
+
+/// Rigid-body membership with known correspondences: the epipolar geometry fitted to all
+/// points, then, while the worst point's epipolar distance exceeds `tolerance` (relative to
+/// the image size), that point is taken out and the fit repeated (at least four stay).
+/// Returns each point's membership and its final distance.
+pub fn membership(f1: &[Vector2<f64>], f2: &[Vector2<f64>], tolerance: f64) -> Vec<(bool, f64)> {
+    let n = f1.len();
+    let mut inside: Vec<bool> = vec![true; n];
+    loop {
+        let idx: Vec<usize> = (0..n).filter(|&i| inside[i]).collect();
+        let g1: Vec<Vector2<f64>> = idx.iter().map(|&i| f1[i]).collect();
+        let g2: Vec<Vector2<f64>> = idx.iter().map(|&i| f2[i]).collect();
+        let e = epipolar(&g1, &g2);
+        let [a, b, c, d] = e.coefficients;
+        let m1 = g1.iter().sum::<Vector2<f64>>() / g1.len() as f64;
+        let m2 = g2.iter().sum::<Vector2<f64>>() / g2.len() as f64;
+        let size = f2
+            .iter()
+            .map(|q| (q - m2).norm())
+            .fold(f64::MIN_POSITIVE, f64::max);
+        let norm = (c * c + d * d).sqrt().max(f64::MIN_POSITIVE);
+        let dist: Vec<f64> = (0..n)
+            .map(|i| {
+                (a * (f1[i].x - m1.x)
+                    + b * (f1[i].y - m1.y)
+                    + c * (f2[i].x - m2.x)
+                    + d * (f2[i].y - m2.y))
+                    .abs()
+                    / norm
+                    / size
+            })
+            .collect();
+        let worst = idx
+            .iter()
+            .copied()
+            .max_by(|&i, &j| dist[i].total_cmp(&dist[j]));
+        match worst {
+            Some(w) if dist[w] > tolerance && idx.len() > 4 => inside[w] = false,
+            _ => {
+                return (0..n)
+                    .map(|i| (inside[i] && dist[i] <= tolerance, dist[i]))
+                    .collect()
+            }
+        }
+    }
+}
