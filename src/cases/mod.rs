@@ -31,16 +31,28 @@ pub struct Printed {
     pub text: String,
     /// The exact value of those digits.
     pub value: BigRational,
-    /// Digits after the decimal point.
-    pub decimals: u32,
+    /// Digits after the decimal point, less the printed exponent (`"2.5e-3"` has 4).
+    pub decimals: i32,
 }
 
 impl Printed {
-    /// Parse printed digits (`"16.2189"`, `"-0.833333"`, `"18"`, `".68697"`).
+    /// Parse printed digits (`"16.2189"`, `"-0.833333"`, `"18"`, `".68697"`, `"2.29726e-14"`).
     pub fn parse(text: &str) -> Option<Printed> {
         let t = text.trim();
-        let value = parse_decimal(t)?;
-        let decimals = t.split_once('.').map_or(0, |(_, f)| f.len() as u32);
+        let (mantissa, exponent) = match t.split_once(['e', 'E']) {
+            Some((m, e)) => (m, e.parse::<i32>().ok()?),
+            None => (t, 0),
+        };
+        let mut value = parse_decimal(mantissa)?;
+        let ten = BigRational::from_integer(BigInt::from(10));
+        for _ in 0..exponent.unsigned_abs() {
+            value = if exponent > 0 {
+                &value * &ten
+            } else {
+                &value / &ten
+            };
+        }
+        let decimals = mantissa.split_once('.').map_or(0, |(_, f)| f.len() as i32) - exponent;
         Some(Printed {
             text: t.to_string(),
             value,
@@ -50,7 +62,7 @@ impl Printed {
 
     /// Half a unit in the last printed digit: the rounding bound of the printed value.
     pub fn half_unit(&self) -> f64 {
-        0.5 * 10f64.powi(-(self.decimals as i32))
+        0.5 * 10f64.powi(-self.decimals)
     }
 
     /// Half a unit in the `digits`-th significant digit: the precision of a number printed
@@ -179,6 +191,10 @@ pub enum CaseCheck {
     TwoFrames(TwoFramesCase),
     /// §5.2 and §5.3 over seeded random scenes: the identity tests.
     IdentityCensus(IdentityCensusCase),
+    /// §5.2's example: the frames, the hidden table, the debug printouts, the panels.
+    IdentityExample(IdentityExampleCase),
+    /// Restatements (discussion, conclusions): each decided by the claims it restates.
+    Restatements(RestatementsCase),
     /// A noise study (§2, §3).
     NoiseStudy(NoiseStudyCase),
 }
@@ -411,6 +427,152 @@ pub struct PrintedPoints {
     pub points: Vec<[Printed; 3]>,
 }
 
+/// §5.2's example.
+#[derive(Clone, Debug, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct IdentityExampleCase {
+    /// The two printed frames.
+    pub frames: ExampleFrames,
+    /// The hidden distance table.
+    pub table: DistanceTable,
+    /// "The first two attempts are the correct ones".
+    pub correct: ClaimRef,
+    /// The debug printouts.
+    pub debug: DebugBlocks,
+    /// The figure panels.
+    pub panels: Panels,
+    /// Random generic scenes for the comparison with the example.
+    pub census_trials: usize,
+    /// Seed.
+    pub seed: u64,
+}
+
+/// Two frames of four points, as printed.
+#[derive(Clone, Debug, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct ExampleFrames {
+    /// The claim.
+    pub claim: ClaimRef,
+    /// Frame 1.
+    pub frame1: Vec<[Printed; 2]>,
+    /// Frame 2.
+    pub frame2: Vec<[Printed; 2]>,
+    /// The figure macro's labels of its arguments, in order.
+    pub figure_labels: Vec<String>,
+}
+
+/// A printed table of real and projected distances.
+#[derive(Clone, Debug, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct DistanceTable {
+    /// The claim.
+    pub claim: ClaimRef,
+    /// Column headers as printed (two point letters each).
+    pub columns: Vec<String>,
+    /// Row "real".
+    pub real: Vec<Printed>,
+    /// Row "real2".
+    pub real2: Vec<Printed>,
+    /// Row "squared".
+    pub squared: Vec<Printed>,
+    /// Row "projected 1".
+    pub projected1: Vec<Printed>,
+    /// Row "projected 2".
+    pub projected2: Vec<Printed>,
+    /// Significant digits printed.
+    pub significant_digits: u32,
+}
+
+/// The debug printouts.
+#[derive(Clone, Debug, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct DebugBlocks {
+    /// The claim.
+    pub claim: ClaimRef,
+    /// Significant digits printed.
+    pub significant_digits: u32,
+    /// One block per attempt.
+    pub attempts: Vec<DebugAttempt>,
+    /// The blocks of error lines.
+    pub errors: Vec<DebugError>,
+}
+
+/// One attempt as the program printed it (its names: P is the tested point).
+#[derive(Clone, Debug, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct DebugAttempt {
+    /// Lines of the block.
+    pub lines: String,
+    /// "b=": b².
+    pub b2: Printed,
+    /// "b0=": b.
+    pub b: Printed,
+    /// "d=": the chosen d².
+    pub d2: Printed,
+    /// "d0=": d.
+    pub d: Printed,
+    /// T₁ as printed.
+    pub t1: [Printed; 2],
+    /// Q₁.
+    pub q1: [Printed; 2],
+    /// T₂ (frame 2 shifted so that the assigned R is at the origin).
+    pub t2: [Printed; 2],
+    /// Q₂.
+    pub q2: [Printed; 2],
+    /// The signs printed after T₁, Q₁, T₂, Q₂.
+    pub signs: [i8; 4],
+    /// "PaK".
+    pub pak: [Printed; 3],
+    /// "PbK".
+    pub pbk: [Printed; 3],
+    /// "Pa".
+    pub pa: [Printed; 3],
+    /// "Pb".
+    pub pb: [Printed; 3],
+    /// "P2".
+    pub p2: [Printed; 2],
+    /// "P1".
+    pub p1: [Printed; 2],
+    /// "(Linie) x = y (diff z)".
+    pub line: [Printed; 3],
+    /// "(version v)".
+    pub version: i8,
+}
+
+/// A block of error lines.
+#[derive(Clone, Debug, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct DebugError {
+    /// Lines.
+    pub lines: String,
+    /// "ERROR: Fdg_dg / Fdg_g2 = r", in order.
+    pub ratios: Vec<Printed>,
+    /// "ERROR: Root of deltab negative", how often.
+    pub delta_b_negative: usize,
+}
+
+/// The figure panels.
+#[derive(Clone, Debug, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct Panels {
+    /// The claim.
+    pub claim: ClaimRef,
+    /// One per `\DreieckMitGerade`.
+    pub items: Vec<Panel>,
+}
+
+/// One panel.
+#[derive(Clone, Debug, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct Panel {
+    /// Its line in the source.
+    pub line: u32,
+    /// The four frame-2 points (#1 … #4).
+    pub points: Vec<[Printed; 2]>,
+    /// The segment drawn (#5, #6).
+    pub segment: Vec<[Printed; 2]>,
+}
+
 /// The identity tests over seeded random scenes.
 #[derive(Clone, Debug, Deserialize, PartialEq)]
 #[serde(deny_unknown_fields)]
@@ -429,6 +591,31 @@ pub struct IdentityCensusCase {
     pub c_factors: Vec<f64>,
     /// Seed.
     pub seed: u64,
+}
+
+/// Restatements of earlier claims.
+#[derive(Clone, Debug, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct RestatementsCase {
+    /// One per restated sentence or bullet.
+    pub items: Vec<Restatement>,
+}
+
+/// One restatement.
+#[derive(Clone, Debug, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct Restatement {
+    /// The claim.
+    pub claim: ClaimRef,
+    /// The result id's suffix.
+    pub id: String,
+    /// The CLAIMS.md ids it restates (every result of each counts); empty for a statement
+    /// outside the paper's scope.
+    #[serde(default)]
+    pub restates: Vec<String>,
+    /// Why it is outside the scope, when `restates` is empty.
+    #[serde(default)]
+    pub out_of_scope: Option<String>,
 }
 
 /// Claims without data.
@@ -1010,6 +1197,51 @@ fn validate(case: &Case, text: &str, path: &Path) -> Result<()> {
                 return err(
                     "check.two_frames.points",
                     "needs at least 4 points, 1 trial and 4 curve samples".into(),
+                );
+            }
+        }
+        CaseCheck::IdentityExample(c) => {
+            let f = &c.frames;
+            if f.frame1.len() != 4 || f.frame2.len() != 4 || f.figure_labels.len() != 4 {
+                return err(
+                    "check.identity_example.frames.frame1",
+                    "needs two frames of 4 points and 4 figure labels".into(),
+                );
+            }
+            let t = &c.table;
+            let n = t.columns.len();
+            if n != 6
+                || [&t.real, &t.real2, &t.squared, &t.projected1, &t.projected2]
+                    .iter()
+                    .any(|r| r.len() != n)
+                || t.columns.iter().any(|h| h.chars().count() != 2)
+            {
+                return err(
+                    "check.identity_example.table.columns",
+                    "needs 6 two-letter columns and 6 values per row".into(),
+                );
+            }
+            if let Some(i) = c
+                .panels
+                .items
+                .iter()
+                .position(|p| p.points.len() != 4 || p.segment.len() != 2)
+            {
+                return err(
+                    &format!("check.identity_example.panels.items[{i}].points"),
+                    "needs 4 points and a segment of 2".into(),
+                );
+            }
+        }
+        CaseCheck::Restatements(c) => {
+            if let Some(i) = c
+                .items
+                .iter()
+                .position(|r| r.restates.is_empty() == r.out_of_scope.is_none())
+            {
+                return err(
+                    &format!("check.restatements.items[{i}].restates"),
+                    "give either the claims it restates or why it is out of scope".into(),
                 );
             }
         }

@@ -4,6 +4,7 @@
 mod audit;
 mod dof;
 mod identity;
+mod identity_example;
 mod noise;
 mod p3f3;
 mod p4f3;
@@ -205,6 +206,11 @@ pub fn run_case(case: &Case) -> Result<Vec<ClaimResult>> {
         CaseCheck::FormulaAudit(c) => audit::check(&b, c),
         CaseCheck::TwoFrames(c) => two_frames::check(&b, c),
         CaseCheck::IdentityCensus(c) => identity::check(&b, c),
+        CaseCheck::IdentityExample(c) => identity_example::check(&b, c),
+        CaseCheck::Restatements(_) => Err(crate::error::Error::InvalidInput(format!(
+            "case {}: restatements are decided from the other cases' results (run_all)",
+            case.id
+        ))),
         CaseCheck::NotReproducible(c) => Ok(c
             .claims
             .iter()
@@ -221,4 +227,94 @@ pub fn run_case(case: &Case) -> Result<Vec<ClaimResult>> {
             })
             .collect()),
     }
+}
+
+/// Run every case: first all the others, then the restatements, decided from their results.
+pub fn run_all(cases: &[Case]) -> Result<Vec<ClaimResult>> {
+    let mut out = Vec::new();
+    for case in cases {
+        if !matches!(case.check, CaseCheck::Restatements(_)) {
+            out.extend(run_case(case)?);
+        }
+    }
+    let mut restated = Vec::new();
+    for case in cases {
+        if let CaseCheck::Restatements(r) = &case.check {
+            restated.extend(restatements(&ResultBuilder::new(case), r, &out));
+        }
+    }
+    out.extend(restated);
+    Ok(out)
+}
+
+/// A restatement is contradicted when a result of a claim it restates is; reproduced when all
+/// of them hold; not reproducible when it lies outside the paper's scope.
+fn restatements(
+    b: &ResultBuilder,
+    case: &crate::cases::RestatementsCase,
+    results: &[ClaimResult],
+) -> Vec<ClaimResult> {
+    case.items
+        .iter()
+        .map(|item| {
+            if let Some(why) = &item.out_of_scope {
+                return b.result(
+                    &item.claim,
+                    Some(&item.id),
+                    Verdict::NotReproducible,
+                    item.claim.quote.clone(),
+                    format!("outside the paper's scope: {why}"),
+                    None,
+                    Evidence::new("no computation: the statement concerns another model"),
+                );
+            }
+            let mapped: Vec<&ClaimResult> = results
+                .iter()
+                .filter(|r| item.restates.contains(&r.claim))
+                .collect();
+            let against: Vec<String> = mapped
+                .iter()
+                .filter(|r| r.verdict == Verdict::Contradicted)
+                .map(|r| r.id.clone())
+                .collect();
+            let missing: Vec<&String> = item
+                .restates
+                .iter()
+                .filter(|id| !mapped.iter().any(|r| &r.claim == *id))
+                .collect();
+            let verdict = if !against.is_empty() {
+                Verdict::Contradicted
+            } else if missing.is_empty() {
+                Verdict::Reproduced
+            } else {
+                Verdict::NotReproducible
+            };
+            let mut ev = Evidence::new("the verdicts of the results of the claims restated");
+            for r in &mapped {
+                ev = ev.with(&r.id, r.verdict.name());
+            }
+            b.result(
+                &item.claim,
+                Some(&item.id),
+                verdict,
+                item.claim.quote.clone(),
+                if !against.is_empty() {
+                    format!("contradicted by {}", against.join(", "))
+                } else if missing.is_empty() {
+                    format!("holds: {}", item.restates.join(", "))
+                } else {
+                    format!(
+                        "missing results for {}",
+                        missing
+                            .iter()
+                            .map(|s| s.as_str())
+                            .collect::<Vec<_>>()
+                            .join(", ")
+                    )
+                },
+                None,
+                ev,
+            )
+        })
+        .collect()
 }

@@ -37,6 +37,8 @@ pub struct PaperTest {
     pub tb2: Vector3<f64>,
     /// The distance of the observed T₂ from the line T₂ₐT₂_b.
     pub distance: f64,
+    /// The depths of P, Q, R in frame 2 (P at 0).
+    pub depths2: [f64; 3],
 }
 
 /// The depths of a triangle P, Q, R in one frame (P at depth 0) from its squared edges and
@@ -162,6 +164,7 @@ pub fn paper_tests(f1: &[Vector2<f64>; 4], f2: &[Vector2<f64>; 4], c: f64) -> Ve
                 ta2,
                 tb2,
                 distance,
+                depths2: z2,
             });
         }
     }

@@ -118,6 +118,32 @@ pub fn witness(
     })
 }
 
+/// First-order bound of how far each output of `f` can move over the box `x ± half`:
+/// Σₖ |f(x + hₖeₖ) − f(x − hₖeₖ)| / 2 per output (central differences at the box's own
+/// half-widths, so curvature over the box is included to second order). `None` if `f` is
+/// undefined at a probed point.
+pub fn first_order_bound(
+    f: &dyn Fn(&[f64]) -> Option<Vec<f64>>,
+    x: &[f64],
+    half: &[f64],
+) -> Option<Vec<f64>> {
+    let base = f(x)?;
+    let mut bound = vec![0.0; base.len()];
+    for (k, h) in half.iter().enumerate() {
+        if *h == 0.0 {
+            continue;
+        }
+        let (mut up, mut down) = (x.to_vec(), x.to_vec());
+        up[k] += h;
+        down[k] -= h;
+        let (fu, fd) = (f(&up)?, f(&down)?);
+        for (b, (u, d)) in bound.iter_mut().zip(fu.iter().zip(&fd)) {
+            *b += (u - d).abs() / 2.0;
+        }
+    }
+    Some(bound)
+}
+
 /// The `q`-quantile (0 ≤ q ≤ 1) of sorted finite data, by nearest rank.
 pub fn quantile(sorted: &[f64], q: f64) -> Option<f64> {
     if sorted.is_empty() {

@@ -49,6 +49,24 @@ fn centred(f: &[Vector2<f64>]) -> Vec<Vector2<f64>> {
 /// assert!(e.scale_residual.abs() < 1e-9);
 /// ```
 pub fn epipolar(f1: &[Vector2<f64>], f2: &[Vector2<f64>]) -> Epipolar {
+    let size = centred(f1)
+        .iter()
+        .chain(&centred(f2))
+        .map(|p| p.norm())
+        .fold(f64::MIN_POSITIVE, f64::max);
+    epipolar_with_rounding(
+        f1,
+        f2,
+        crate::algebra::NEGLIGIBLE_ULPS * f64::EPSILON * size,
+    )
+}
+
+/// [`epipolar`] for coordinates known to ±`rounding`. Eigenvalues up to 4n·rounding² (what
+/// the rounding of n rows can leave in the null direction) count as zero. A two-dimensional
+/// null space (four or more points of a planar body, related by an affine map) leaves the
+/// epipolar geometry undetermined: the vector kept is the one of that space closest to equal
+/// scale, and the residual is the smallest |a² + b² − c² − d²| there.
+pub fn epipolar_with_rounding(f1: &[Vector2<f64>], f2: &[Vector2<f64>], rounding: f64) -> Epipolar {
     let (c1, c2) = (centred(f1), centred(f2));
     let mut g = Matrix4::zeros();
     for (p, q) in c1.iter().zip(&c2) {
@@ -58,13 +76,43 @@ pub fn epipolar(f1: &[Vector2<f64>], f2: &[Vector2<f64>]) -> Epipolar {
     let eig = SymmetricEigen::new(g);
     let mut order = [0usize, 1, 2, 3];
     order.sort_by(|&i, &j| eig.eigenvalues[i].total_cmp(&eig.eigenvalues[j]));
-    let v = eig.eigenvectors.column(order[0]);
-    let coefficients = [v[0], v[1], v[2], v[3]];
     let eigenvalues = order.map(|i| eig.eigenvalues[i].max(0.0));
+    let q = |v: &nalgebra::Vector4<f64>| (v[0] * v[0] + v[1] * v[1]) - (v[2] * v[2] + v[3] * v[3]);
+    let v1: nalgebra::Vector4<f64> = eig.eigenvectors.column(order[0]).into();
+    let zero = 4.0 * f1.len() as f64 * rounding * rounding;
+    let v = if eigenvalues[1] <= zero {
+        // q on span{v1, v2}: [q11 q12; q12 q22]; an indefinite form vanishes somewhere
+        let v2: nalgebra::Vector4<f64> = eig.eigenvectors.column(order[1]).into();
+        let bil = |a: &nalgebra::Vector4<f64>, b: &nalgebra::Vector4<f64>| {
+            a[0] * b[0] + a[1] * b[1] - a[2] * b[2] - a[3] * b[3]
+        };
+        let (q11, q12, q22) = (bil(&v1, &v1), bil(&v1, &v2), bil(&v2, &v2));
+        // the unit vector cos t·v1 + sin t·v2 minimising |q|: the eigenvector of the 2×2 form
+        // for the eigenvalue of smallest modulus, or a zero of q when it is indefinite
+        let m = nalgebra::Matrix2::new(q11, q12, q12, q22);
+        let e2 = m.symmetric_eigen();
+        let (l0, l1) = (e2.eigenvalues[0], e2.eigenvalues[1]);
+        let (w0, w1) = (
+            e2.eigenvectors.column(0).into_owned(),
+            e2.eigenvectors.column(1).into_owned(),
+        );
+        let u = if l0 * l1 < 0.0 {
+            // q = l0 x² + l1 y² = 0 at x/y = √(−l1/l0)
+            let (x, y) = ((l1.abs()).sqrt(), (l0.abs()).sqrt());
+            (w0 * x + w1 * y).normalize()
+        } else if l0.abs() <= l1.abs() {
+            w0
+        } else {
+            w1
+        };
+        v1 * u[0] + v2 * u[1]
+    } else {
+        v1
+    };
     Epipolar {
-        coefficients,
+        coefficients: [v[0], v[1], v[2], v[3]],
         eigenvalues,
-        scale_residual: (v[0] * v[0] + v[1] * v[1]) - (v[2] * v[2] + v[3] * v[3]),
+        scale_residual: q(&v),
         affine_residual: (eigenvalues[0] / eigenvalues[3].max(f64::MIN_POSITIVE)).sqrt(),
     }
 }

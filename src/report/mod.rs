@@ -7,7 +7,7 @@ use std::path::Path;
 use serde::Serialize;
 
 use crate::cases::Case;
-use crate::check::{run_case, ClaimResult, Verdict};
+use crate::check::{ClaimResult, Verdict};
 use crate::error::Result;
 
 /// The paper under audit.
@@ -58,11 +58,7 @@ impl Report {
 
     /// Run every case.
     pub fn from_cases(cases: &[Case]) -> Result<Report> {
-        let mut claims = Vec::new();
-        for case in cases {
-            claims.extend(run_case(case)?);
-        }
-        Ok(Report::new(claims))
+        Ok(Report::new(crate::check::run_all(cases)?))
     }
 
     /// Pretty JSON.
