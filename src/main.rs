@@ -6,6 +6,7 @@ use std::process::ExitCode;
 use std::sync::atomic::{AtomicUsize, Ordering};
 
 use clap::{Parser, Subcommand, ValueEnum};
+use orthocheck::derivations::identity;
 use orthocheck::derivations::noise::LevelSummary;
 use orthocheck::derivations::solver::{solve_tracks, Method};
 use orthocheck::input::{load_tracks, tracks_to_csv, tracks_to_yaml, PointOrder};
@@ -115,6 +116,46 @@ enum Command {
         #[arg(long)]
         json: bool,
     },
+    /// Find which frame-2 point is which frame-1 point (two frames; frame 2's order unknown).
+    Identify {
+        /// Tracks file with two frames (frame 2's points in any order).
+        #[arg(long)]
+        input: PathBuf,
+        /// Test: the equal-scale epipolar residual of four points, the paper's four-point
+        /// test, or the five-point line.
+        #[arg(long, value_enum, default_value = "epipolar")]
+        method: IdentifyMethod,
+        /// Assignments listed.
+        #[arg(long, default_value_t = 10)]
+        top: usize,
+        /// JSON output.
+        #[arg(long)]
+        json: bool,
+    },
+    /// Decide which points belong to one rigid body (two frames, correspondences known).
+    Membership {
+        /// Tracks file with two frames.
+        #[arg(long)]
+        input: PathBuf,
+        /// Largest epipolar distance of a member, relative to the image size.
+        #[arg(long, default_value_t = 1e-6)]
+        tolerance: f64,
+        /// JSON output.
+        #[arg(long)]
+        json: bool,
+    },
+    /// Print members of the one-parameter family of bodies two frames allow.
+    Family {
+        /// Tracks file with two frames.
+        #[arg(long)]
+        input: PathBuf,
+        /// Members, at angles evenly spread in (0, π).
+        #[arg(long, default_value_t = 5)]
+        samples: usize,
+        /// JSON output.
+        #[arg(long)]
+        json: bool,
+    },
     /// Write a tracks file of a seeded random scene, to try the solvers on.
     Synth {
         /// Number of points.
@@ -145,6 +186,13 @@ enum MethodArg {
     P3f4,
     P4f3,
     Lsq,
+}
+
+#[derive(Clone, Copy, ValueEnum)]
+enum IdentifyMethod {
+    Epipolar,
+    Four,
+    Five,
 }
 
 #[derive(Clone, Copy, ValueEnum)]
@@ -300,6 +348,86 @@ fn run(cli: Cli) -> Result<(), Error> {
                 print!("{}", report::noise_text(&case, &summaries));
             }
         }
+        Command::Identify {
+            input,
+            method,
+            top,
+            json,
+        } => {
+            let t = two_frames(&input, PointOrder::AsListed)?;
+            let m = match method {
+                IdentifyMethod::Epipolar => identity::IdentifyMethod::Epipolar,
+                IdentifyMethod::Four => identity::IdentifyMethod::Four,
+                IdentifyMethod::Five => identity::IdentifyMethod::Five,
+            };
+            let r = identity::identify(&t.frames[0], &t.frames[1], m, top)
+                .map_err(|e| in_file(&input, e))?;
+            if json {
+                println!("{}", to_json(&r));
+            } else {
+                print!("{}", report::identify_text(&r));
+            }
+        }
+        Command::Membership {
+            input,
+            tolerance,
+            json,
+        } => {
+            if !(tolerance.is_finite() && tolerance >= 0.0) {
+                return Err(Error::InvalidInput(format!(
+                    "--tolerance {tolerance}: must be a finite number ≥ 0"
+                )));
+            }
+            let t = two_frames(&input, PointOrder::ByName)?;
+            if let Some(d) = identity::degeneracy(&t.frames[0], &t.frames[1]) {
+                return Err(in_file(&input, Error::InvalidInput(d.to_string())));
+            }
+            let m = identity::membership(&t.frames[0], &t.frames[1], tolerance);
+            let rows: Vec<report::MemberRow> = t
+                .names
+                .iter()
+                .zip(&m)
+                .map(|(n, (inside, d))| report::MemberRow {
+                    point: n.clone(),
+                    member: *inside,
+                    distance: *d,
+                })
+                .collect();
+            if json {
+                println!("{}", to_json(&rows));
+            } else {
+                print!("{}", report::membership_text(&rows, tolerance));
+            }
+        }
+        Command::Family {
+            input,
+            samples,
+            json,
+        } => {
+            let t = two_frames(&input, PointOrder::ByName)?;
+            if samples == 0 {
+                return Err(Error::InvalidInput("--samples must be at least 1".into()));
+            }
+            if let Some(d) = identity::degeneracy(&t.frames[0], &t.frames[1]) {
+                return Err(in_file(&input, Error::InvalidInput(d.to_string())));
+            }
+            let betas: Vec<f64> = (1..=samples)
+                .map(|i| std::f64::consts::PI * i as f64 / (samples + 1) as f64)
+                .collect();
+            let members = derivations::two_frames::family(&t.frames[0], &t.frames[1], &betas)
+                .ok_or_else(|| {
+                    in_file(
+                        &input,
+                        Error::InvalidInput("the epipolar geometry is undetermined".into()),
+                    )
+                })?;
+            let view = report::family_view(&t.names, &members);
+            if json {
+                println!("{}", to_json(&view));
+            } else {
+                print!("{}", report::family_text(&view));
+            }
+        }
         Command::Synth {
             points,
             frames,
@@ -398,6 +526,21 @@ fn noise(
         eprintln!();
     }
     Ok(out)
+}
+
+/// A tracks file that must hold exactly two frames.
+fn two_frames(path: &Path, order: PointOrder) -> Result<orthocheck::model::Tracks, Error> {
+    let t = load_tracks(path, order)?;
+    if t.frames.len() != 2 {
+        return Err(in_file(
+            path,
+            Error::InvalidInput(format!(
+                "{} frames: this command takes exactly two",
+                t.frames.len()
+            )),
+        ));
+    }
+    Ok(t)
 }
 
 /// An input that parsed but cannot be used is still the user's file's fault: name it.

@@ -405,3 +405,255 @@ pub fn membership(f1: &[Vector2<f64>], f2: &[Vector2<f64>], tolerance: f64) -> V
         }
     }
 }
+
+/// The test `identify` ranks assignments by.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum IdentifyMethod {
+    /// The equal-scale residual of the affine epipolar constraint of four points.
+    Epipolar,
+    /// The paper's four-point test (Appendix A quadratic, T_a, T_b).
+    Four,
+    /// The five-point line (§5.3).
+    Five,
+}
+
+/// What `identify` reports.
+#[derive(Clone, Debug, PartialEq, serde::Serialize)]
+pub struct Identified {
+    /// The test used.
+    pub method: IdentifyMethod,
+    /// The best assignments of frame-1 points 0‥3 (0‥4 for five), best first.
+    pub assignments: Vec<Assignment>,
+    /// How many assignments were tried.
+    pub tried: usize,
+    /// The best full correspondence of all points, with its RMS epipolar distance.
+    pub full: Option<Assignment>,
+    /// A degenerate case, if any (judged for the best full correspondence).
+    pub degenerate: Option<TwoFrameDegenerate>,
+}
+
+/// Rank the assignments of frame-2 points to frame-1 points by `method`, keep the `top`
+/// best, and extend the best to a full correspondence.
+pub fn identify(
+    f1: &[Vector2<f64>],
+    f2: &[Vector2<f64>],
+    method: IdentifyMethod,
+    top: usize,
+) -> crate::error::Result<Identified> {
+    let need = if method == IdentifyMethod::Five { 5 } else { 4 };
+    if f1.len() < need || f2.len() != f1.len() {
+        return Err(crate::error::Error::InvalidInput(format!(
+            "{} points: the {} test needs at least {need} in each frame, the same number in both",
+            f1.len(),
+            match method {
+                IdentifyMethod::Five => "five-point",
+                _ => "four-point",
+            }
+        )));
+    }
+    if let Some(d @ (TwoFrameDegenerate::CoincidentPoints | TwoFrameDegenerate::TooFewPoints)) =
+        degeneracy(f1, f2)
+    {
+        return Err(crate::error::Error::InvalidInput(d.to_string()));
+    }
+    let size = f2
+        .iter()
+        .map(|p| p.norm())
+        .fold(f64::MIN_POSITIVE, f64::max);
+    let ranked = match method {
+        IdentifyMethod::Epipolar => rank_quadruples(f1, f2, |a, b| epipolar_residual(a, b)),
+        IdentifyMethod::Four => rank_quadruples(f1, f2, |a, b| {
+            smallest_c(a, b).map_or(f64::INFINITY, |c| {
+                paper_tests(a, b, c)
+                    .iter()
+                    .map(|t| t.distance / size)
+                    .fold(f64::INFINITY, f64::min)
+            })
+        }),
+        IdentifyMethod::Five => rank_quintuples(f1, f2),
+    };
+    let tried = ranked.len();
+    let full = full_correspondence(f1, f2);
+    let degenerate = full.as_ref().and_then(|a| {
+        let g2: Vec<Vector2<f64>> = a.frame2_indices.iter().map(|&j| f2[j]).collect();
+        degeneracy(f1, &g2)
+    });
+    Ok(Identified {
+        method,
+        assignments: ranked.into_iter().take(top).collect(),
+        tried,
+        full,
+        degenerate,
+    })
+}
+
+/// Every ordered choice of five frame-2 points for frame-1 points 0‥4, by the five-point
+/// line distance (relative to the image size).
+fn rank_quintuples(f1: &[Vector2<f64>], f2: &[Vector2<f64>]) -> Vec<Assignment> {
+    let n = f2.len();
+    let first: [Vector2<f64>; 5] = std::array::from_fn(|i| f1[i]);
+    let size = f2
+        .iter()
+        .map(|p| p.norm())
+        .fold(f64::MIN_POSITIVE, f64::max);
+    let mut all = Vec::new();
+    let mut idx = [0usize; 5];
+    fn rec(k: usize, n: usize, idx: &mut [usize; 5], visit: &mut dyn FnMut(&[usize; 5])) {
+        if k == 5 {
+            visit(idx);
+            return;
+        }
+        for j in 0..n {
+            if !idx[..k].contains(&j) {
+                idx[k] = j;
+                rec(k + 1, n, idx, visit);
+            }
+        }
+    }
+    rec(0, n, &mut idx, &mut |c| {
+        let g: [Vector2<f64>; 5] = std::array::from_fn(|i| f2[c[i]]);
+        all.push(Assignment {
+            frame2_indices: c.to_vec(),
+            residual: super::identity5::line_distance(&first, &g)
+                .map_or(f64::INFINITY, |d| d / size),
+        });
+    });
+    all.sort_by(|x, y| {
+        x.residual
+            .total_cmp(&y.residual)
+            .then_with(|| x.frame2_indices.cmp(&y.frame2_indices))
+    });
+    all
+}
+
+/// Two frames the identity and membership tests cannot use as they are.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum TwoFrameDegenerate {
+    /// Fewer than four points: three correspondences fix no epipolar line.
+    TooFewPoints,
+    /// Two points of a frame coincide.
+    CoincidentPoints,
+    /// The frames differ by an in-plane motion only: every distance is kept, the views are
+    /// the same, and every point is on its epipolar line whatever the assignment.
+    IdenticalFrames,
+    /// The best assignment leaves the epipolar geometry undetermined (a planar body).
+    Planar,
+}
+
+impl std::fmt::Display for TwoFrameDegenerate {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(match self {
+            TwoFrameDegenerate::TooFewPoints => "fewer than four points",
+            TwoFrameDegenerate::CoincidentPoints => "two points of a frame coincide",
+            TwoFrameDegenerate::IdenticalFrames => {
+                "the frames differ by an in-plane motion only: the two views are the same"
+            }
+            TwoFrameDegenerate::Planar => {
+                "the body is planar: the epipolar geometry is undetermined and several assignments may fit"
+            }
+        })
+    }
+}
+
+/// What makes two frames unusable (or weaker) for the tests, if anything; `planar` is
+/// judged for the correspondence given.
+pub fn degeneracy(f1: &[Vector2<f64>], f2: &[Vector2<f64>]) -> Option<TwoFrameDegenerate> {
+    let n = f1.len();
+    if n < 4 || f2.len() != n {
+        return Some(TwoFrameDegenerate::TooFewPoints);
+    }
+    let size = f1
+        .iter()
+        .chain(f2)
+        .map(|p| p.norm())
+        .fold(f64::MIN_POSITIVE, f64::max);
+    let tiny = crate::algebra::NEGLIGIBLE_ULPS * f64::EPSILON * size;
+    for f in [f1, f2] {
+        for i in 0..n {
+            for j in i + 1..n {
+                if (f[i] - f[j]).norm() <= tiny {
+                    return Some(TwoFrameDegenerate::CoincidentPoints);
+                }
+            }
+        }
+    }
+    let same = (0..n).all(|i| {
+        (i + 1..n).all(|j| {
+            let (a, b) = (
+                (f1[i] - f1[j]).norm_squared(),
+                (f2[i] - f2[j]).norm_squared(),
+            );
+            crate::algebra::negligible(a - b, a + b)
+        })
+    });
+    if same {
+        return Some(TwoFrameDegenerate::IdenticalFrames);
+    }
+    (!epipolar(f1, f2).determined).then_some(TwoFrameDegenerate::Planar)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::Scene;
+
+    #[test]
+    fn degenerate_frames_are_named() {
+        let t = Scene::random(3, 2, 1).tracks();
+        assert_eq!(
+            degeneracy(&t.frames[0], &t.frames[1]),
+            Some(TwoFrameDegenerate::TooFewPoints)
+        );
+        let mut s = Scene::random(5, 2, 2);
+        s.motions[1].rotation = nalgebra::Rotation3::from_axis_angle(&Vector3::z_axis(), 0.4);
+        let t = s.tracks();
+        assert_eq!(
+            degeneracy(&t.frames[0], &t.frames[1]),
+            Some(TwoFrameDegenerate::IdenticalFrames)
+        );
+        let mut s = Scene::random(5, 2, 3);
+        for x in &mut s.body.points {
+            x.z = 0.5 * x.x - 0.3 * x.y;
+        }
+        let t = s.tracks();
+        assert_eq!(
+            degeneracy(&t.frames[0], &t.frames[1]),
+            Some(TwoFrameDegenerate::Planar)
+        );
+        let mut s = Scene::random(5, 2, 4);
+        s.body.points[4] = s.body.points[1];
+        let t = s.tracks();
+        assert_eq!(
+            degeneracy(&t.frames[0], &t.frames[1]),
+            Some(TwoFrameDegenerate::CoincidentPoints)
+        );
+        let t = Scene::random(6, 2, 5).tracks();
+        assert_eq!(degeneracy(&t.frames[0], &t.frames[1]), None);
+    }
+
+    #[test]
+    fn the_full_correspondence_and_membership() {
+        let s = Scene::random(7, 2, 9);
+        let t = s.tracks();
+        let perm = [3, 0, 6, 1, 5, 2, 4];
+        let shuffled: Vec<Vector2<f64>> = (0..7)
+            .map(|j| t.frames[1][perm.iter().position(|p| *p == j).unwrap_or(0)])
+            .collect();
+        let best = full_correspondence(&t.frames[0], &shuffled).unwrap();
+        let found: Vec<usize> = best.frame2_indices.clone();
+        for (i, &j) in found.iter().enumerate() {
+            assert_eq!(shuffled[j], t.frames[1][i]);
+        }
+        // an outsider: move one point of frame 2 off its epipolar line
+        let mut f2 = t.frames[1].clone();
+        f2[5] += Vector2::new(0.3, -0.2);
+        let m = membership(&t.frames[0], &f2, 1e-9);
+        assert!(!m[5].0);
+        assert!(m
+            .iter()
+            .enumerate()
+            .all(|(i, (inside, _))| *inside == (i != 5)));
+    }
+}

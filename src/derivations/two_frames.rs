@@ -21,6 +21,8 @@ use crate::model::RationalScene;
 /// The affine epipolar geometry of two orthographic views, from point correspondences.
 #[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
 pub struct Epipolar {
+    /// Whether the null space is one-dimensional (the epipolar geometry is determined).
+    pub determined: bool,
     /// (a, b, c, d) of a·x₁ + b·y₁ + c·x₂ + d·y₂ + e = 0, unit length, for centred points.
     pub coefficients: [f64; 4],
     /// The eigenvalues of the centred design's Gram matrix, ascending: the first is the
@@ -62,7 +64,8 @@ pub fn epipolar(f1: &[Vector2<f64>], f2: &[Vector2<f64>]) -> Epipolar {
 }
 
 /// [`epipolar`] for coordinates known to ±`rounding`. Eigenvalues up to 4n·rounding² (what
-/// the rounding of n rows can leave in the null direction) count as zero. A two-dimensional
+/// the rounding of n rows can leave in the null direction), or 64ε of the largest, count as
+/// zero. A two-dimensional
 /// null space (four or more points of a planar body, related by an affine map) leaves the
 /// epipolar geometry undetermined: the vector kept is the one of that space closest to equal
 /// scale, and the residual is the smallest |a² + b² − c² − d²| there.
@@ -79,7 +82,10 @@ pub fn epipolar_with_rounding(f1: &[Vector2<f64>], f2: &[Vector2<f64>], rounding
     let eigenvalues = order.map(|i| eig.eigenvalues[i].max(0.0));
     let q = |v: &nalgebra::Vector4<f64>| (v[0] * v[0] + v[1] * v[1]) - (v[2] * v[2] + v[3] * v[3]);
     let v1: nalgebra::Vector4<f64> = eig.eigenvectors.column(order[0]).into();
-    let zero = 4.0 * f1.len() as f64 * rounding * rounding;
+    // what the data's rounding, or the floating-point eigensolver (64ε of the largest),
+    // can leave in a null direction
+    let zero = (4.0 * f1.len() as f64 * rounding * rounding)
+        .max(crate::algebra::NEGLIGIBLE_ULPS * f64::EPSILON * eigenvalues[3]);
     let v = if eigenvalues[1] <= zero {
         // q on span{v1, v2}: [q11 q12; q12 q22]; an indefinite form vanishes somewhere
         let v2: nalgebra::Vector4<f64> = eig.eigenvectors.column(order[1]).into();
@@ -110,6 +116,7 @@ pub fn epipolar_with_rounding(f1: &[Vector2<f64>], f2: &[Vector2<f64>], rounding
         v1
     };
     Epipolar {
+        determined: eigenvalues[1] > zero,
         coefficients: [v[0], v[1], v[2], v[3]],
         eigenvalues,
         scale_residual: q(&v),
@@ -132,11 +139,11 @@ pub struct Member {
 
 /// Members of the family of bodies that two frames of corresponding points allow, one per
 /// angle in `betas` (each in (0, π)); `None` when the epipolar geometry is undetermined
-/// (fewer than four points in general position) or the two views do not have equal scale.
+/// (fewer than four points, or a planar body).
 pub fn family(f1: &[Vector2<f64>], f2: &[Vector2<f64>], betas: &[f64]) -> Option<Vec<Member>> {
     let e = epipolar(f1, f2);
-    let scale = e.eigenvalues[3].max(f64::MIN_POSITIVE);
-    if f1.len() < 4 || e.eigenvalues[1] <= 1e-12 * scale || e.scale_residual.abs() > 1e-6 {
+    // noisy views still give members; their reprojection error tells how well they fit
+    if f1.len() < 4 || !e.determined {
         return None;
     }
     let [a, b, c, d] = e.coefficients;

@@ -462,3 +462,110 @@ pub fn errata_markdown(claims: &[ClaimResult]) -> String {
     }
     s
 }
+
+/// `orthocheck identify` as text.
+pub fn identify_text(r: &crate::derivations::identity::Identified) -> String {
+    use crate::numfmt::sig;
+    let mut s = format!("method: {:?} ({} assignments tried)\n", r.method, r.tried);
+    if let Some(d) = &r.degenerate {
+        let _ = writeln!(s, "degenerate: {d}");
+    }
+    for (i, a) in r.assignments.iter().enumerate() {
+        let _ = writeln!(
+            s,
+            "{:>3}. frame-2 indices {:?}  residual {}",
+            i + 1,
+            a.frame2_indices,
+            sig(a.residual)
+        );
+    }
+    if let Some(f) = &r.full {
+        let _ = writeln!(
+            s,
+            "best full correspondence: {:?}  (RMS epipolar distance {} of the image size)",
+            f.frame2_indices,
+            sig(f.residual)
+        );
+    }
+    s
+}
+
+/// One point of `orthocheck membership`.
+#[derive(Clone, Debug, Serialize)]
+pub struct MemberRow {
+    /// The point's name.
+    pub point: String,
+    /// Whether it belongs to the body.
+    pub member: bool,
+    /// Its epipolar distance, relative to the image size.
+    pub distance: f64,
+}
+
+/// `orthocheck membership` as text.
+pub fn membership_text(rows: &[MemberRow], tolerance: f64) -> String {
+    use crate::numfmt::sig;
+    let mut s = format!(
+        "members: epipolar distance at most {} of the image size\n",
+        sig(tolerance)
+    );
+    for r in rows {
+        let _ = writeln!(
+            s,
+            "{:<6} {:<9} {}",
+            r.point,
+            if r.member { "member" } else { "outside" },
+            sig(r.distance)
+        );
+    }
+    s
+}
+
+/// One member of the two-frame family, for display.
+#[derive(Clone, Debug, Serialize)]
+pub struct FamilyMember {
+    /// The angle between the views.
+    pub beta: f64,
+    /// The points, named.
+    pub points: Vec<(String, [f64; 3])>,
+    /// Largest reprojection error (relative).
+    pub reprojection: f64,
+}
+
+/// The family as shown: names with coordinates.
+pub fn family_view(
+    names: &[String],
+    members: &[crate::derivations::two_frames::Member],
+) -> Vec<FamilyMember> {
+    members
+        .iter()
+        .map(|m| FamilyMember {
+            beta: m.beta,
+            points: names
+                .iter()
+                .zip(&m.points)
+                .map(|(n, p)| (n.clone(), [p.x, p.y, p.z]))
+                .collect(),
+            reprojection: m.reprojection,
+        })
+        .collect()
+}
+
+/// `orthocheck family` as text.
+pub fn family_text(members: &[FamilyMember]) -> String {
+    use crate::numfmt::{below, sig, sig_list};
+    let mut s = String::from(
+        "members of the family of bodies both frames allow (frame 1's camera coordinates; the depth is fixed up to a shift)\n",
+    );
+    for m in members {
+        let _ = writeln!(
+            s,
+            "β = {} rad (reprojection {}):",
+            sig(m.beta),
+            below(m.reprojection)
+        );
+        for (n, p) in &m.points {
+            let _ = writeln!(s, "  {n:<6} {}", sig_list(p));
+        }
+    }
+    s
+}

@@ -379,3 +379,72 @@ fn audit_lists_every_item_and_finds_the_errata() {
     );
     assert_eq!(orthocheck(&["audit"]).status.code(), Some(2));
 }
+
+#[test]
+fn identify_membership_and_family_on_two_frames() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("two.csv");
+    // five points in two frames; frame 2 listed in another order
+    let t = orthocheck::model::Scene::random(5, 2, 21).tracks();
+    let order = [3, 0, 4, 2, 1];
+    let mut csv = String::from("frame,point,x,y\n");
+    for (i, p) in t.frames[0].iter().enumerate() {
+        csv.push_str(&format!("1,{},{:?},{:?}\n", t.names[i], p.x, p.y));
+    }
+    for (k, &j) in order.iter().enumerate() {
+        let p = t.frames[1][j];
+        csv.push_str(&format!("2,X{k},{:?},{:?}\n", p.x, p.y));
+    }
+    std::fs::write(&file, csv).unwrap();
+    let out = orthocheck(&["identify", "--input", file.to_str().unwrap(), "--json"]);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let v = json(&out);
+    let best: Vec<usize> = v["assignments"][0]["frame2_indices"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|x| x.as_u64().unwrap() as usize)
+        .collect();
+    // frame-1 point i is frame-2 index k with order[k] == i
+    let truth: Vec<usize> = (0..4)
+        .map(|i| order.iter().position(|j| *j == i).unwrap())
+        .collect();
+    assert_eq!(best, truth);
+    assert!(v["full"]["frame2_indices"].as_array().unwrap().len() == 5);
+
+    let same = dir.path().join("same.yaml");
+    std::fs::write(&same, orthocheck::input::tracks_to_yaml(&t)).unwrap();
+    let out = orthocheck(&["membership", "--input", same.to_str().unwrap(), "--json"]);
+    assert_eq!(out.status.code(), Some(0));
+    assert!(json(&out)
+        .as_array()
+        .unwrap()
+        .iter()
+        .all(|r| r["member"] == true));
+    let out = orthocheck(&[
+        "family",
+        "--input",
+        same.to_str().unwrap(),
+        "--samples",
+        "3",
+        "--json",
+    ]);
+    assert_eq!(json(&out).as_array().unwrap().len(), 3);
+    // three points are too few; three frames are not two
+    let three = dir.path().join("three.yaml");
+    let t3 = orthocheck::model::Scene::random(3, 2, 1).tracks();
+    std::fs::write(&three, orthocheck::input::tracks_to_yaml(&t3)).unwrap();
+    assert_eq!(
+        orthocheck(&["identify", "--input", three.to_str().unwrap()])
+            .status
+            .code(),
+        Some(2)
+    );
+    let out = orthocheck(&["family", "--input", "tests/bad_tracks/two_frames.yaml"]);
+    assert_eq!(out.status.code(), Some(2));
+}

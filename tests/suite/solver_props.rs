@@ -103,3 +103,27 @@ fn all_edges_within(scene: &Scene, squares: &[f64], tol: f64) -> bool {
             (s - t).abs() <= tol * t
         })
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 64, rng_seed: proptest::test_runner::RngSeed::Fixed(13), ..ProptestConfig::default() })]
+
+    #[test]
+    fn the_true_assignment_ranks_first_with_a_margin(seed in any::<u64>(), shift in 0usize..6) {
+        use orthocheck::derivations::identity::{rank_quadruples, epipolar_residual};
+        let t = Scene::random(6, 2, seed).tracks();
+        // frame 2 rotated in order by `shift`
+        let f2: Vec<_> = (0..6).map(|k| t.frames[1][(k + shift) % 6]).collect();
+        let ranked = rank_quadruples(&t.frames[0], &f2, |a, b| epipolar_residual(a, b));
+        let truth: Vec<usize> = (0..4).map(|i| (i + 6 - shift) % 6).collect();
+        prop_assert_eq!(&ranked[0].frame2_indices, &truth);
+        // a clear margin: the runner-up is worse by orders of magnitude
+        prop_assert!(ranked[1].residual > 1e3 * ranked[0].residual.max(1e-15), "{:?}", &ranked[..2]);
+    }
+
+    #[test]
+    fn every_member_of_the_two_frame_family_reprojects(seed in any::<u64>(), points in 4usize..12, beta in 0.05f64..3.09) {
+        let t = Scene::random(points, 2, seed).tracks();
+        let m = orthocheck::derivations::two_frames::family(&t.frames[0], &t.frames[1], &[beta]).unwrap();
+        prop_assert!(m[0].reprojection < 1e-9, "{}", m[0].reprojection);
+    }
+}
