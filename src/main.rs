@@ -26,7 +26,7 @@ struct Cli {
 
 #[derive(Subcommand)]
 enum Command {
-    /// Reproduce the paper: run every case and write report.md and report.json.
+    /// Reproduce the paper: run every case and write report.md, report.json and report.html.
     Report {
         /// Output folder.
         #[arg(long, default_value = "target/orthocheck-report")]
@@ -218,13 +218,44 @@ fn run(cli: Cli) -> Result<(), Error> {
     match cli.command {
         Command::Report { out, cases } => {
             let all = cases::load_all(&cases)?;
-            let r = report::Report::from_cases(&all)?;
+            let started = std::time::Instant::now();
+            let show = std::io::stderr().is_terminal();
+            let progress = |i: usize, id: &str| {
+                // only for a run that takes long enough to wonder about
+                if show && started.elapsed().as_secs_f64() > 1.0 {
+                    eprint!("\r{}/{} cases ({id})            ", i + 1, all.len());
+                    let _ = std::io::stderr().flush();
+                }
+            };
+            let provenance = report::Provenance {
+                revision: git(&["rev-parse", "--short=12", "HEAD"]).map(|r| {
+                    let dirty = git(&["status", "--porcelain", "--untracked-files=no"])
+                        .is_some_and(|s| !s.is_empty());
+                    if dirty {
+                        format!("{r}+changes")
+                    } else {
+                        r
+                    }
+                }),
+                date: std::env::var("SOURCE_DATE_EPOCH")
+                    .ok()
+                    .map(|e| format!("{e} (SOURCE_DATE_EPOCH)"))
+                    .or_else(|| git(&["show", "-s", "--format=%cs", "HEAD"])),
+                command: "cargo run --release -- report".into(),
+                seeds: Vec::new(),
+            };
+            let r = report::Report::run(&all, provenance, &progress)?;
+            if show && started.elapsed().as_secs_f64() > 1.0 {
+                eprintln!();
+            }
             r.write(&out)?;
             println!(
-                "wrote {} and {} ({} claims)",
+                "wrote {}, {} and {} ({} claims, {} figures)",
                 out.join("report.md").display(),
                 out.join("report.json").display(),
-                r.claims.len()
+                out.join("report.html").display(),
+                r.claims.len(),
+                r.figures.len()
             );
             for (verdict, n) in &r.summary {
                 if *n > 0 {
@@ -526,6 +557,18 @@ fn noise(
         eprintln!();
     }
     Ok(out)
+}
+
+/// A git query's trimmed output, when git answers (the source revision of the report).
+fn git(args: &[&str]) -> Option<String> {
+    let out = std::process::Command::new("git")
+        .args(args)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .ok()?;
+    out.status
+        .success()
+        .then(|| String::from_utf8_lossy(&out.stdout).trim().to_string())
 }
 
 /// A tracks file that must hold exactly two frames.

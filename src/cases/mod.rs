@@ -161,6 +161,9 @@ pub struct Case {
     pub source: Source,
     /// What to check, by kind.
     pub check: CaseCheck,
+    /// The file it was read from (set by [`load_case`]).
+    #[serde(skip)]
+    pub file: Option<PathBuf>,
 }
 
 /// The kinds of case; each kind has its runner in `check`.
@@ -981,13 +984,37 @@ pub struct PrintedSolutions {
     pub values: Vec<Vec<Printed>>,
 }
 
+impl Case {
+    /// Every seed the case sets (the report lists them, so that a run can be repeated).
+    pub fn seeds(&self) -> Vec<u64> {
+        match &self.check {
+            CaseCheck::DofCount(c) => vec![c.seed],
+            CaseCheck::DofIdentifiability(c) => vec![c.seed],
+            CaseCheck::TwofoldSquared(c) => vec![c.relations.seed, c.seed],
+            CaseCheck::P3f3Example(c) => vec![c.seed],
+            CaseCheck::P4f3Example(c) => vec![c.seed],
+            CaseCheck::P4f3Census(c) | CaseCheck::P3f3Census(c) | CaseCheck::P3f4Census(c) => {
+                vec![c.seed]
+            }
+            CaseCheck::FormulaAudit(c) => vec![c.seed],
+            CaseCheck::TwoFrames(c) => vec![c.seed],
+            CaseCheck::IdentityCensus(c) => vec![c.seed],
+            CaseCheck::IdentityExample(c) => vec![c.seed],
+            CaseCheck::NoiseStudy(c) => vec![c.seed],
+            CaseCheck::NotReproducible(_) | CaseCheck::Restatements(_) => Vec::new(),
+        }
+    }
+}
+
 /// Read and validate one case file.
 pub fn load_case(path: &Path) -> Result<Case> {
     let text = std::fs::read_to_string(path).map_err(|source| Error::Io {
         path: path.to_path_buf(),
         source,
     })?;
-    parse_case(&text, path)
+    let mut case = parse_case(&text, path)?;
+    case.file = Some(path.to_path_buf());
+    Ok(case)
 }
 
 /// Parse and validate case text; `path` names the file in errors.

@@ -104,6 +104,30 @@ pub(super) fn check_identifiability(
         case.max_points, case.max_frames, case.seed
     );
     let mut out = Vec::new();
+    let cat = |pred: &dyn Fn(&crate::derivations::dof::Identifiability) -> bool| -> Vec<[f64; 2]> {
+        grid.iter()
+            .filter(|r| pred(r))
+            .map(|r| [r.count.points as f64, r.count.frames as f64])
+            .collect()
+    };
+    b.figure(super::figure::Figure {
+        id: "fig-dof-grid".into(),
+        claim: case.formula.claim.claim.clone(),
+        title: "§2.1: the count against the Jacobian rank".into(),
+        caption: format!("Every p and k of the grid ({grid_desc}): what the paper's count says, and what the exact rank of the Jacobian decides."),
+        panels: vec![super::figure::Plot {
+            title: "points and frames".into(),
+            x_label: "points p".into(),
+            y_label: "frames k".into(),
+            equal_aspect: false,
+            log_x: false,
+            layers: vec![
+                super::figure::Layer::new("count: too few", super::figure::Shape::Points, super::figure::Style::Other, cat(&|r| r.count.balance < 0)),
+                super::figure::Layer::new("count: enough, rank: ambiguous", super::figure::Shape::Points, super::figure::Style::Mark, cat(&|r| r.count.balance >= 0 && r.deficiency > 0)),
+                super::figure::Layer::new("count: enough, rank: identifiable", super::figure::Shape::Points, super::figure::Style::Computed, cat(&|r| r.count.balance >= 0 && r.deficiency == 0)),
+            ],
+        }],
+    });
 
     // The printed formula against the parametrisation's size, and balance as a necessary
     // (not sufficient) condition.

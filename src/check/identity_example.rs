@@ -7,6 +7,7 @@
 
 use nalgebra::Vector2;
 
+use super::figure::{clip_line, Figure, Layer, Plot, Shape, Style};
 use super::{ClaimResult, Evidence, ResultBuilder, Tolerance, Verdict};
 use crate::algebra::{exact_rank, sqrt_rounding};
 use crate::cases::{DebugAttempt, IdentityExampleCase, Printed};
@@ -282,6 +283,9 @@ pub(super) fn check(b: &ResultBuilder, case: &IdentityExampleCase) -> Result<Vec
     let mut per_quantity = vec![(0usize, 0usize); NAMES.len()];
     let mut depth_ev = Vec::new();
     let mut depth_count = (0usize, 0usize);
+    // (assignment, version, T₂ₐ, T₂_b) of every recomputed attempt
+    type Line = ([usize; 4], i8, [f64; 2], [f64; 2]);
+    let mut our_lines: Vec<Line> = Vec::new();
     let mut c_choice = Vec::new();
     let mut assignments = Vec::new();
     for a in &case.debug.attempts {
@@ -335,6 +339,12 @@ pub(super) fn check(b: &ResultBuilder, case: &IdentityExampleCase) -> Result<Vec
                 misses.push(format!("{} {} vs {}", NAMES[k], p.text, sig(values[k])));
             }
         }
+        our_lines.push((
+            asg,
+            a.version,
+            [test.ta2.x, test.ta2.y],
+            [test.tb2.x, test.tb2.y],
+        ));
         // depths: the printed third coordinates of Pa, Pb against ours with R at depth 0
         let zr = test.depths2[2];
         let zf = |y: &[f64]| {
@@ -699,6 +709,88 @@ pub(super) fn check(b: &ResultBuilder, case: &IdentityExampleCase) -> Result<Vec
             )),
         }
     }
+    // the panels redrawn: the printed points and segment, and our line at the block's d0
+    let mut plots = Vec::new();
+    for p in &case.panels.items {
+        let pts: Vec<[f64; 2]> = p
+            .points
+            .iter()
+            .map(|q| [q[0].to_f64(), q[1].to_f64()])
+            .collect();
+        let seg: Vec<[f64; 2]> = p
+            .segment
+            .iter()
+            .map(|q| [q[0].to_f64(), q[1].to_f64()])
+            .collect();
+        let asg = perms4().into_iter().find(|asg| {
+            let o = f2[asg[2]];
+            (0..4).all(|k| {
+                ((f2[asg[k]] - o).x - pts[k][0]).abs() <= 4.0 * coord_half
+                    && ((f2[asg[k]] - o).y - pts[k][1]).abs() <= 4.0 * coord_half
+            })
+        });
+        // the version whose printed line the segment lies on, as found above
+        let mut layers = vec![
+            Layer::new(
+                "triangle (printed)",
+                Shape::Polygon,
+                Style::Printed,
+                vec![pts[3], pts[1], pts[2]],
+            )
+            .labelled(&["P", "Q", "R"]),
+            Layer::new(
+                "tested point (printed)",
+                Shape::Points,
+                Style::Mark,
+                vec![pts[0]],
+            )
+            .labelled(&["T"]),
+            Layer::new(
+                "segment (printed)",
+                Shape::Line,
+                Style::Printed,
+                seg.clone(),
+            ),
+        ];
+        let ours: Vec<_> = our_lines.iter().filter(|l| Some(l.0) == asg).collect();
+        let best = ours.iter().min_by(|x, y| {
+            let off = |l: &&Line| {
+                seg.iter()
+                    .map(|q| {
+                        let d = [l.3[0] - l.2[0], l.3[1] - l.2[1]];
+                        ((q[0] - l.2[0]) * d[1] - (q[1] - l.2[1]) * d[0]).abs()
+                            / (d[0].hypot(d[1])).max(f64::MIN_POSITIVE)
+                    })
+                    .sum::<f64>()
+            };
+            off(x).total_cmp(&off(y))
+        });
+        let mut title = format!("line {}", p.line);
+        if let Some(l) = best {
+            if let Some(c) = clip_line(l.2, l.3, 5.0) {
+                layers.push(Layer::new(
+                    "T₂ₐT₂_b (recomputed)",
+                    Shape::Line,
+                    Style::Computed,
+                    c.to_vec(),
+                ));
+            }
+            title = format!(
+                "line {}: {}{}",
+                p.line,
+                if l.0 == best_perm { "correct, " } else { "" },
+                if l.1 < 0 { "b −" } else { "b +" }
+            );
+        }
+        plots.push(Plot::image(&title, layers));
+    }
+    b.figure(Figure {
+        id: "fig-ex5-panels".into(),
+        claim: case.panels.claim.claim.clone(),
+        title: "§5.2: the panels, redrawn".into(),
+        caption: "Every \\DreieckMitGerade panel: frame 2 re-centred at the assigned R, the tested point, the segment the paper draws, and the line T₂ₐT₂_b recomputed at the printed d0 (clipped to the panel's box).".into(),
+        panels: plots,
+    });
     let mut ev = Evidence::new(
         "each panel's four points matched to an assignment of frame 2 (re-centred at its R); its segment against the \
          lines through the printed Pa, Pb of the blocks with that assignment",

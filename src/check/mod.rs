@@ -3,6 +3,7 @@
 
 mod audit;
 mod dof;
+pub mod figure;
 mod identity;
 mod identity_example;
 mod noise;
@@ -149,14 +150,23 @@ pub struct ClaimResult {
     pub evidence: Evidence,
 }
 
-/// Builds results for one case.
+/// Builds results (and figures) for one case.
 pub(crate) struct ResultBuilder<'a> {
     case: &'a Case,
+    figures: std::cell::RefCell<Vec<figure::Figure>>,
 }
 
 impl<'a> ResultBuilder<'a> {
     pub(crate) fn new(case: &'a Case) -> Self {
-        ResultBuilder { case }
+        ResultBuilder {
+            case,
+            figures: std::cell::RefCell::new(Vec::new()),
+        }
+    }
+
+    /// Keep a figure for the report.
+    pub(crate) fn figure(&self, f: figure::Figure) {
+        self.figures.borrow_mut().push(f);
     }
 
     /// A result for `claim`, with `suffix` making the id unique when needed.
@@ -192,21 +202,31 @@ impl<'a> ResultBuilder<'a> {
 
 /// Run one case into its claim results.
 pub fn run_case(case: &Case) -> Result<Vec<ClaimResult>> {
+    Ok(run_case_full(case)?.0)
+}
+
+/// Run one case into its claim results and the figures its checks drew.
+pub fn run_case_full(case: &Case) -> Result<(Vec<ClaimResult>, Vec<figure::Figure>)> {
     let b = ResultBuilder::new(case);
+    let results = dispatch(&b, case)?;
+    Ok((results, b.figures.into_inner()))
+}
+
+fn dispatch(b: &ResultBuilder, case: &Case) -> Result<Vec<ClaimResult>> {
     match &case.check {
-        CaseCheck::DofCount(c) => dof::check_count(&b, c),
-        CaseCheck::DofIdentifiability(c) => dof::check_identifiability(&b, c),
-        CaseCheck::TwofoldSquared(c) => twofold::check(&b, c),
-        CaseCheck::P3f3Example(c) => p3f3::check_example(&b, c),
-        CaseCheck::P4f3Example(c) => p4f3::check_example(&b, c),
-        CaseCheck::P4f3Census(c) => p4f3::check_census(&b, c),
-        CaseCheck::P3f3Census(c) => p3f3::check_census(&b, c),
-        CaseCheck::P3f4Census(c) => p3f3::check_p3f4_census(&b, c),
-        CaseCheck::NoiseStudy(c) => noise::check(&b, c),
-        CaseCheck::FormulaAudit(c) => audit::check(&b, c),
-        CaseCheck::TwoFrames(c) => two_frames::check(&b, c),
-        CaseCheck::IdentityCensus(c) => identity::check(&b, c),
-        CaseCheck::IdentityExample(c) => identity_example::check(&b, c),
+        CaseCheck::DofCount(c) => dof::check_count(b, c),
+        CaseCheck::DofIdentifiability(c) => dof::check_identifiability(b, c),
+        CaseCheck::TwofoldSquared(c) => twofold::check(b, c),
+        CaseCheck::P3f3Example(c) => p3f3::check_example(b, c),
+        CaseCheck::P4f3Example(c) => p4f3::check_example(b, c),
+        CaseCheck::P4f3Census(c) => p4f3::check_census(b, c),
+        CaseCheck::P3f3Census(c) => p3f3::check_census(b, c),
+        CaseCheck::P3f4Census(c) => p3f3::check_p3f4_census(b, c),
+        CaseCheck::NoiseStudy(c) => noise::check(b, c),
+        CaseCheck::FormulaAudit(c) => audit::check(b, c),
+        CaseCheck::TwoFrames(c) => two_frames::check(b, c),
+        CaseCheck::IdentityCensus(c) => identity::check(b, c),
+        CaseCheck::IdentityExample(c) => identity_example::check(b, c),
         CaseCheck::Restatements(_) => Err(crate::error::Error::InvalidInput(format!(
             "case {}: restatements are decided from the other cases' results (run_all)",
             case.id
@@ -231,11 +251,23 @@ pub fn run_case(case: &Case) -> Result<Vec<ClaimResult>> {
 
 /// Run every case: first all the others, then the restatements, decided from their results.
 pub fn run_all(cases: &[Case]) -> Result<Vec<ClaimResult>> {
+    Ok(run_all_full(cases, &|_, _| {})?.0)
+}
+
+/// [`run_all`] with the figures; `progress` hears of each case as it finishes (index, id).
+pub fn run_all_full(
+    cases: &[Case],
+    progress: &dyn Fn(usize, &str),
+) -> Result<(Vec<ClaimResult>, Vec<figure::Figure>)> {
     let mut out = Vec::new();
-    for case in cases {
+    let mut figures = Vec::new();
+    for (i, case) in cases.iter().enumerate() {
         if !matches!(case.check, CaseCheck::Restatements(_)) {
-            out.extend(run_case(case)?);
+            let (r, f) = run_case_full(case)?;
+            out.extend(r);
+            figures.extend(f);
         }
+        progress(i, &case.id);
     }
     let mut restated = Vec::new();
     for case in cases {
@@ -244,7 +276,7 @@ pub fn run_all(cases: &[Case]) -> Result<Vec<ClaimResult>> {
         }
     }
     out.extend(restated);
-    Ok(out)
+    Ok((out, figures))
 }
 
 /// A restatement is contradicted when a result of a claim it restates is; reproduced when all

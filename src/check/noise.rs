@@ -1,5 +1,6 @@
 //! Claims of the noise studies (§2, §3): where the paper's runs fall in seeded distributions.
 
+use super::figure::{ecdf, Figure, Layer, Plot, Shape, Style};
 use super::{ClaimResult, Evidence, ResultBuilder, Tolerance, Verdict};
 use crate::cases::{Direction, NoiseLevel, NoiseStudyCase, OverEdges, Quantity, StatementSubject};
 use crate::derivations::noise::{models, run_level, stream, LevelResult, Study, TrialError};
@@ -430,7 +431,7 @@ impl Judge<'_> {
                 "cannot be checked: the paper does not print the noisy projections of its runs",
             );
         }
-        out.push(b.result(
+        let result = b.result(
             &lv.claim,
             suffix(None).as_deref(),
             Verdict::Statistical,
@@ -438,7 +439,54 @@ impl Judge<'_> {
             summary.join("; "),
             None,
             ev,
-        ));
+        );
+        // the distributions, with the printed run marked
+        let panel = |m: usize, what: &str| {
+            let mut layers: Vec<Layer> = res
+                .iter()
+                .enumerate()
+                .map(|(k, r)| {
+                    let style = if k == 0 {
+                        Style::Computed
+                    } else {
+                        Style::Other
+                    };
+                    Layer::new(
+                        &format!("{} model", r.model),
+                        Shape::Line,
+                        style,
+                        ecdf(&r.sorted[m], 200),
+                    )
+                })
+                .collect();
+            if let Some(e) = example {
+                layers.push(Layer::new(
+                    "the paper's run",
+                    Shape::Verticals,
+                    Style::Mark,
+                    vec![[e.metrics()[m], 0.5]],
+                ));
+            }
+            Plot {
+                title: format!("largest relative error in {what}"),
+                x_label: format!("relative error in {what} (log)"),
+                y_label: "fraction of trials".into(),
+                equal_aspect: false,
+                log_x: true,
+                layers,
+            }
+        };
+        b.figure(Figure {
+            id: format!("fig-{}", result.id.replace('/', "-")),
+            claim: result.id.clone(),
+            title: format!("Noise {}: error distributions", lv.level.text),
+            caption: format!(
+                "Empirical distributions of the worst edge's relative error over {} seeded trials per model (seed {}), and the paper's printed run.",
+                case.trials, case.seed
+            ),
+            panels: vec![panel(0, "squares"), panel(2, "lengths")],
+        });
+        out.push(result);
         out
     }
 }

@@ -2,6 +2,7 @@
 
 use num_rational::BigRational;
 
+use super::figure::{thin, Figure, Layer, Plot, Shape, Style};
 use super::{ClaimResult, Evidence, ResultBuilder, Tolerance, Verdict};
 use crate::cases::{P3f3ExampleCase, Printed};
 use crate::derivations::p3f3::{match_solutions, real_solutions_from_coordinates, validate};
@@ -310,6 +311,93 @@ pub(super) fn check_example(b: &ResultBuilder, case: &P3f3ExampleCase) -> Result
                 body_wit.as_ref().map_or("-".into(), |w| sig(w.shift_ratio)),
             ),
     ));
+
+    // Figures: the printed projections against exact views of the body inside the rounding
+    // box; the roots over the rounding box.
+    let frame_points = |x: &[f64], i: usize| -> Vec<[f64; 2]> {
+        (0..3)
+            .map(|j| [x[6 * i + 2 * j], x[6 * i + 2 * j + 1]])
+            .collect()
+    };
+    let panels = (0..3)
+        .map(|i| {
+            let mut layers = vec![Layer::new(
+                "printed",
+                Shape::Polygon,
+                Style::Printed,
+                frame_points(&bx.center, i),
+            )
+            .labelled(&["P", "Q", "R"])];
+            if let Some(w) = body_wit.as_ref().filter(|_| fits) {
+                layers.push(Layer::new(
+                    "exact view inside the rounding box",
+                    Shape::Polygon,
+                    Style::Computed,
+                    frame_points(&w.point, i),
+                ));
+            }
+            Plot::image(&format!("frame {}", i + 1), layers)
+        })
+        .collect();
+    b.figure(Figure {
+        id: "fig-ex2-figure".into(),
+        claim: case.figure.claim.claim.clone(),
+        title: "§2: the three projections of the triangle".into(),
+        caption: "The printed figure coordinates (two decimals) and the nearest exact projections of the body (2, 3, 4) within their rounding.".into(),
+        panels,
+    });
+    let root = |k: usize| -> Vec<[f64; 2]> {
+        thin(
+            &with_roots
+                .iter()
+                .map(|m| [m[k][0], m[k][2]])
+                .collect::<Vec<_>>(),
+            1500,
+        )
+    };
+    let mut layers = vec![Layer::new(
+        "root near the first printed solution",
+        Shape::Points,
+        Style::Computed,
+        root(0),
+    )];
+    if targets.len() > 1 {
+        layers.push(Layer::new(
+            "root near the second",
+            Shape::Points,
+            Style::Other,
+            root(1),
+        ));
+    }
+    layers.push(Layer::new(
+        "at the printed coordinates",
+        Shape::Points,
+        Style::Printed,
+        at_printed.iter().map(|s| [s[0], s[2]]).collect(),
+    ));
+    layers.push(Layer::new(
+        "the paper's solutions",
+        Shape::Points,
+        Style::Mark,
+        targets.iter().map(|t| [t[0], t[2]]).collect(),
+    ));
+    b.figure(Figure {
+        id: "fig-ex2-rounding".into(),
+        claim: case.solutions.claim.claim.clone(),
+        title: "§2: where the roots go within the rounding of the figure".into(),
+        caption: format!(
+            "(a², c²) of both real roots for {} seeded points of the ±0.005 box around the printed coordinates (seed {}), the roots at the printed coordinates, and the paper's two solutions.",
+            case.rounding_trials, case.seed
+        ),
+        panels: vec![Plot {
+            title: "roots over the rounding box".into(),
+            x_label: "a²".into(),
+            y_label: "c²".into(),
+            equal_aspect: false,
+            log_x: false,
+            layers,
+        }],
+    });
 
     // Feasibility of the printed solutions against the printed projections.
     let printed_checks: Vec<(String, Option<String>)> = targets

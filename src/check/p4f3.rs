@@ -5,6 +5,7 @@ use nalgebra::{DMatrix, Vector3};
 use num_rational::BigRational;
 use num_traits::ToPrimitive;
 
+use super::figure::{Figure, Layer, Plot, Shape, Style};
 use super::noise::Judge;
 use super::{ClaimResult, Evidence, ResultBuilder, Tolerance, Verdict};
 use crate::algebra::{exact_solve, svd_rank};
@@ -166,6 +167,40 @@ pub(super) fn check_example(b: &ResultBuilder, case: &P4f3ExampleCase) -> Result
             wit.as_ref().map_or("-".into(), |w| below(w.residual)),
         ),
     ));
+
+    let tetra = |fr: &[[f64; 2]], name: &str, style: Style| -> Vec<Layer> {
+        let p = |i: usize| fr[i];
+        vec![
+            Layer::new(
+                name,
+                Shape::Line,
+                style,
+                vec![p(0), p(1), p(2), p(0), p(3), p(1)],
+            )
+            .labelled(&["P", "Q", "R", "", "T", ""]),
+            Layer::new(name, Shape::Line, style, vec![p(2), p(3)]),
+        ]
+    };
+    let panels = (0..3)
+        .map(|i| {
+            let mut layers = tetra(&frames[i], "printed", Style::Printed);
+            if let Some(w) = wit.as_ref().filter(|_| fits) {
+                layers.extend(tetra(
+                    &unflat(&w.point)[i],
+                    "exact view inside the rounding box",
+                    Style::Computed,
+                ));
+            }
+            Plot::image(&format!("frame {}", i + 1), layers)
+        })
+        .collect();
+    b.figure(Figure {
+        id: "fig-ex4-figure".into(),
+        claim: case.figure.claim.claim.clone(),
+        title: "§4: the three projections of the tetrahedron".into(),
+        caption: "The printed figure coordinates (two decimals) and the nearest exact orthographic views of the body of the edge table within their rounding.".into(),
+        panels,
+    });
 
     // 3. The printed matrix, recomputed from the figure row by row.
     let mdig = case.matrix.significant_digits;

@@ -3,10 +3,13 @@
 
 use nalgebra::Vector3;
 
+use super::figure::{Figure, Layer, Plot, Shape, Style};
 use super::{ClaimResult, Evidence, ResultBuilder, Tolerance, Verdict};
 use crate::cases::{Printed, TwoFramesCase};
 use crate::derivations::dof::identifiability;
-use crate::derivations::two_frames::{counterexample, family, shape_difference, trefoil};
+use crate::derivations::two_frames::{
+    align, counterexample, family, shape_difference, trefoil, view,
+};
 use crate::error::Result;
 use crate::model::{random_rotation, rng, Body, Motion, Scene};
 use crate::numfmt::{below, sig, sig_list};
@@ -81,6 +84,40 @@ pub(super) fn check(b: &ResultBuilder, case: &TwoFramesCase) -> Result<Vec<Claim
             Evidence::new("minimum-norm Newton from a fixed grid of starts"),
         ),
     };
+    if let Some(c) = &c {
+        let tri = |q: Vector3<f64>, r: Vector3<f64>| [pts[0], q, r];
+        let first = tri(pts[1], pts[2]);
+        let second = tri(pts[3], pts[4]);
+        let v1 = (view(&first, &c.u1), view(&second, &c.u1));
+        let v2 = view(&first, &c.u2);
+        let v2p = align(&v2, &view(&second, &c.u2_prime));
+        let layer = |name: &str, style: Style, pts: Vec<[f64; 2]>, primed: bool| {
+            Layer::new(name, Shape::Polygon, style, pts).labelled(if primed {
+                &["P", "Q′", "R′"]
+            } else {
+                &["P", "Q", "R"]
+            })
+        };
+        b.figure(Figure {
+            id: "fig-two-frames".into(),
+            claim: case.counterexample.claim.claim.clone(),
+            title: "§5.1: two triangles, the same two views".into(),
+            caption: "PQR and PQ′R′ (the printed coordinates) seen along u₁ (Q′ − Q), and PQR along u₂ with PQ′R′ along u₂′ (moved onto it by a rotation in the image plane): congruent images of triangles that are not congruent.".into(),
+            panels: vec![
+                Plot::image(
+                    "view 1 (u₁)",
+                    vec![layer("PQR", Style::Computed, v1.0, false), layer("PQ′R′", Style::Other, v1.1, true)],
+                ),
+                Plot::image(
+                    "view 2 (u₂ and u₂′)",
+                    vec![
+                        layer("PQR along u₂", Style::Computed, v2, false),
+                        layer("PQ′R′ along u₂′", Style::Other, v2p, true),
+                    ],
+                ),
+            ],
+        });
+    }
     out.push(
         b.result(
             &case.counterexample.claim,

@@ -361,6 +361,45 @@ pub fn counterexample(pts: [Vector3<f64>; 5]) -> Option<Counterexample> {
     })
 }
 
+/// The orthographic image of `points` along the unit direction `u`, in a basis of the plane
+/// orthogonal to it.
+pub fn view(points: &[Vector3<f64>], u: &Vector3<f64>) -> Vec<[f64; 2]> {
+    let e1 = u
+        .cross(&Vector3::z())
+        .try_normalize(1e-9)
+        .unwrap_or_else(|| u.cross(&Vector3::x()).normalize());
+    let e2 = u.cross(&e1);
+    points.iter().map(|p| [p.dot(&e1), p.dot(&e2)]).collect()
+}
+
+/// `b` moved onto `a` by the proper plane rotation and translation that fit best (2-D
+/// Procrustes): congruent images then coincide.
+pub fn align(a: &[[f64; 2]], b: &[[f64; 2]]) -> Vec<[f64; 2]> {
+    let n = a.len().max(1) as f64;
+    let ca = a
+        .iter()
+        .fold([0.0, 0.0], |s, p| [s[0] + p[0] / n, s[1] + p[1] / n]);
+    let cb = b
+        .iter()
+        .fold([0.0, 0.0], |s, p| [s[0] + p[0] / n, s[1] + p[1] / n]);
+    // the angle maximising Σ (R(bᵢ − cb))·(aᵢ − ca)
+    let (mut sc, mut ss) = (0.0, 0.0);
+    for (p, q) in a.iter().zip(b) {
+        let (x, y) = (p[0] - ca[0], p[1] - ca[1]);
+        let (u, v) = (q[0] - cb[0], q[1] - cb[1]);
+        sc += u * x + v * y;
+        ss += u * y - v * x;
+    }
+    let t = ss.atan2(sc);
+    let (st, ct) = t.sin_cos();
+    b.iter()
+        .map(|q| {
+            let (u, v) = (q[0] - cb[0], q[1] - cb[1]);
+            [ca[0] + ct * u - st * v, ca[1] + st * u + ct * v]
+        })
+        .collect()
+}
+
 /// A smooth closed 3-D curve (a trefoil knot, scaled), sampled at `n` points.
 pub fn trefoil(n: usize) -> Vec<Vector3<f64>> {
     (0..n)

@@ -1,5 +1,10 @@
 //! Presentation: renderers of claim results. No computation happens here.
 
+pub mod html;
+pub mod svg;
+
+pub use svg::plot_svg;
+
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
 use std::path::Path;
@@ -25,6 +30,31 @@ pub const PAPER: Paper = Paper {
     author: "Mieczyslaw A. Kłopotek",
 };
 
+/// Where a report comes from, so that it can be made again.
+#[derive(Clone, Debug, Default, Serialize)]
+pub struct Provenance {
+    /// The source revision (git), when known, with "+changes" for uncommitted edits.
+    pub revision: Option<String>,
+    /// The date of that revision (or `SOURCE_DATE_EPOCH`), when known: the report itself is
+    /// the same on every day.
+    pub date: Option<String>,
+    /// The command that makes this report.
+    pub command: String,
+    /// The seeds each case sets.
+    pub seeds: Vec<CaseSeeds>,
+}
+
+/// One case's seeds.
+#[derive(Clone, Debug, Serialize)]
+pub struct CaseSeeds {
+    /// The case id.
+    pub case: String,
+    /// Its file.
+    pub file: String,
+    /// Its seeds.
+    pub seeds: Vec<u64>,
+}
+
 /// The whole report: what `report.json` holds.
 #[derive(Clone, Debug, Serialize)]
 pub struct Report {
@@ -32,8 +62,12 @@ pub struct Report {
     pub paper: Paper,
     /// Tool name and version.
     pub tool: String,
+    /// Revision, date, command, seeds.
+    pub provenance: Provenance,
     /// Every claim result, in case order.
     pub claims: Vec<ClaimResult>,
+    /// The figures the checks drew, as data.
+    pub figures: Vec<crate::check::figure::Figure>,
     /// Count per verdict (every verdict listed, zeros included).
     pub summary: BTreeMap<String, usize>,
 }
@@ -41,6 +75,15 @@ pub struct Report {
 impl Report {
     /// Build a report from claim results.
     pub fn new(claims: Vec<ClaimResult>) -> Report {
+        Report::with(claims, Vec::new(), Provenance::default())
+    }
+
+    /// Build a report from claim results, figures and provenance.
+    pub fn with(
+        claims: Vec<ClaimResult>,
+        figures: Vec<crate::check::figure::Figure>,
+        provenance: Provenance,
+    ) -> Report {
         let mut summary: BTreeMap<String, usize> = Verdict::ALL
             .iter()
             .map(|v| (v.name().to_string(), 0))
@@ -51,14 +94,43 @@ impl Report {
         Report {
             paper: PAPER,
             tool: format!("orthocheck {}", env!("CARGO_PKG_VERSION")),
+            provenance,
             claims,
+            figures,
             summary,
         }
     }
 
     /// Run every case.
     pub fn from_cases(cases: &[Case]) -> Result<Report> {
-        Ok(Report::new(crate::check::run_all(cases)?))
+        Report::run(cases, Provenance::default(), &|_, _| {})
+    }
+
+    /// Run every case with the provenance to show; `progress` hears of each finished case.
+    pub fn run(
+        cases: &[Case],
+        mut provenance: Provenance,
+        progress: &dyn Fn(usize, &str),
+    ) -> Result<Report> {
+        let (claims, figures) = crate::check::run_all_full(cases, progress)?;
+        if provenance.command.is_empty() {
+            provenance.command = "cargo run --release -- report".into();
+        }
+        provenance.seeds = cases
+            .iter()
+            .map(|c| CaseSeeds {
+                case: c.id.clone(),
+                file: c
+                    .file
+                    .as_ref()
+                    .and_then(|f| f.file_name())
+                    .map_or_else(String::new, |f| {
+                        format!("paper_cases/{}", f.to_string_lossy())
+                    }),
+                seeds: c.seeds(),
+            })
+            .collect();
+        Ok(Report::with(claims, figures, provenance))
     }
 
     /// Pretty JSON.
@@ -94,7 +166,7 @@ impl Report {
         s
     }
 
-    /// Write `report.md` and `report.json` into `dir` (created if missing).
+    /// Write `report.md`, `report.json` and `report.html` into `dir` (created if missing).
     pub fn write(&self, dir: &Path) -> Result<()> {
         let io = |source| crate::error::Error::Io {
             path: dir.to_path_buf(),
@@ -103,6 +175,7 @@ impl Report {
         std::fs::create_dir_all(dir).map_err(io)?;
         std::fs::write(dir.join("report.md"), self.to_markdown()).map_err(io)?;
         std::fs::write(dir.join("report.json"), self.to_json()).map_err(io)?;
+        std::fs::write(dir.join("report.html"), html::render(self)).map_err(io)?;
         Ok(())
     }
 }

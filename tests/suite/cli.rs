@@ -92,6 +92,12 @@ fn report_writes_both_files_deterministically() {
     }
     let ja = std::fs::read(a.join("report.json")).unwrap();
     assert_eq!(ja, std::fs::read(b.join("report.json")).unwrap());
+    let html = std::fs::read_to_string(a.join("report.html")).unwrap();
+    assert_eq!(
+        html.as_bytes(),
+        std::fs::read(b.join("report.html")).unwrap()
+    );
+    check_html(&html, &serde_json::from_slice(&ja).unwrap());
     assert_eq!(
         std::fs::read(a.join("report.md")).unwrap(),
         std::fs::read(b.join("report.md")).unwrap()
@@ -447,4 +453,37 @@ fn identify_membership_and_family_on_two_frames() {
     );
     let out = orthocheck(&["family", "--input", "tests/bad_tracks/two_frames.yaml"]);
     assert_eq!(out.status.code(), Some(2));
+}
+
+/// The page a reviewer opens: every claim of report.json is on it, every figure is a
+/// well-formed SVG, and nothing is fetched from anywhere.
+fn check_html(html: &str, report: &serde_json::Value) {
+    for c in report["claims"].as_array().unwrap() {
+        let id = c["id"].as_str().unwrap();
+        let anchor = orthocheck::report::html::anchor(id);
+        assert!(
+            html.contains(&format!("id=\"{anchor}\"")),
+            "claim {id} is not on the page"
+        );
+    }
+    let mut svgs = 0;
+    let mut rest = html;
+    while let Some(start) = rest.find("<svg") {
+        let end =
+            rest[start..].find("</svg>").expect("an <svg> is closed") + start + "</svg>".len();
+        roxmltree::Document::parse(&rest[start..end]).expect("a figure is well-formed SVG");
+        svgs += 1;
+        rest = &rest[end..];
+    }
+    let panels: usize = report["figures"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|f| f["panels"].as_array().unwrap().len())
+        .sum();
+    assert_eq!(svgs, panels, "one SVG per panel of report.json");
+    assert!(svgs >= 10, "{svgs} figures");
+    for external in ["http://", "https://", "src=", "@import", "url("] {
+        assert!(!html.contains(external), "the page refers to {external}");
+    }
 }

@@ -8,5 +8,7 @@ mod cli;
 mod errata;
 /// The paper cases cover the claims this tool must decide.
 mod inventory;
+/// The Markdown and HTML renderers on fixed claims.
+mod renderers;
 /// Property tests of the solvers on seeded random scenes, generic and degenerate.
 mod solver_props;

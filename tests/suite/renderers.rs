@@ -1,0 +1,95 @@
+//! The Markdown and HTML renderers on a small fixed set of claims (not the whole report).
+
+use orthocheck::check::figure::{Figure, Layer, Plot, Shape, Style};
+use orthocheck::check::{ClaimResult, Evidence, Tolerance, Verdict};
+use orthocheck::report::{claim_markdown, html, Provenance, Report};
+
+fn claims() -> Vec<ClaimResult> {
+    let claim = |id: &str, section: &str, verdict: Verdict, computed: &str| ClaimResult {
+        id: id.into(),
+        claim: id.split('/').next().unwrap_or(id).into(),
+        case: "fixture".into(),
+        section: section.into(),
+        lines: "1-2".into(),
+        quote: "a quote with <markup> & \"quotes\"".into(),
+        verdict,
+        paper_value: "4, 9, 16".into(),
+        computed_value: computed.into(),
+        tolerance: Some(Tolerance {
+            value: "±0.005".into(),
+            source: "half a unit of the second decimal".into(),
+        }),
+        evidence: Evidence::new("a method").with("a detail", "a value"),
+    };
+    vec![
+        claim("ex2-body", "2", Verdict::Reproduced, "4, 9, 16"),
+        claim(
+            "p3f3-differences/equation-1",
+            "2.2",
+            Verdict::Erratum,
+            "the corrected formula holds",
+        ),
+        claim(
+            "appA-quartic/equation",
+            "A",
+            Verdict::IdentityVerified,
+            "exact over ℚ",
+        ),
+        claim(
+            "p4f3-unique/planar-body",
+            "4",
+            Verdict::Contradicted,
+            "rank 5 of 6",
+        ),
+    ]
+}
+
+fn settings() -> insta::Settings {
+    let mut s = insta::Settings::clone_current();
+    s.set_snapshot_path(concat!(env!("CARGO_MANIFEST_DIR"), "/snapshots"));
+    s.set_prepend_module_to_snapshot(false);
+    s.set_omit_expression(true);
+    s
+}
+
+#[test]
+fn markdown_renderer() {
+    let md: String = claims().iter().map(claim_markdown).collect();
+    settings().bind(|| insta::assert_snapshot!("render__markdown", md));
+}
+
+#[test]
+fn html_renderer() {
+    let figure = Figure {
+        id: "fig-fixture".into(),
+        claim: "ex2-body".into(),
+        title: "a triangle".into(),
+        caption: "printed and computed".into(),
+        panels: vec![Plot::image(
+            "frame 1",
+            vec![
+                Layer::new(
+                    "printed",
+                    Shape::Polygon,
+                    Style::Printed,
+                    vec![[0.0, 0.0], [2.0, 0.0], [0.5, 1.5]],
+                )
+                .labelled(&["P", "Q", "R"]),
+                Layer::new(
+                    "computed",
+                    Shape::Polygon,
+                    Style::Computed,
+                    vec![[0.0, 0.0], [2.01, 0.0], [0.5, 1.49]],
+                ),
+            ],
+        )],
+    };
+    let provenance = Provenance {
+        revision: Some("0123456789ab".into()),
+        date: Some("2026-11-22".into()),
+        command: "cargo run --release -- report".into(),
+        seeds: Vec::new(),
+    };
+    let page = html::render(&Report::with(claims(), vec![figure], provenance));
+    settings().bind(|| insta::assert_snapshot!("render__html", page));
+}
