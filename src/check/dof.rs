@@ -126,6 +126,11 @@ pub(super) fn check_identifiability(
                 super::figure::Layer::new("count: enough, rank: ambiguous", super::figure::Shape::Points, super::figure::Style::Mark, cat(&|r| r.count.balance >= 0 && r.deficiency > 0)),
                 super::figure::Layer::new("count: enough, rank: identifiable", super::figure::Shape::Points, super::figure::Style::Computed, cat(&|r| r.count.balance >= 0 && r.deficiency == 0)),
             ],
+            // room below the grid for the legend
+            window: Some((
+                [0.5, case.max_points as f64 + 0.5],
+                [-2.5, case.max_frames as f64 + 0.5],
+            )),
         }],
     });
 

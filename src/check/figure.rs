@@ -80,6 +80,8 @@ pub struct Plot {
     pub log_x: bool,
     /// Layers, drawn in order.
     pub layers: Vec<Layer>,
+    /// The region shown, ([x₀, x₁], [y₀, y₁]); by default the layers' extent.
+    pub window: Option<([f64; 2], [f64; 2])>,
 }
 
 impl Plot {
@@ -92,8 +94,27 @@ impl Plot {
             equal_aspect: true,
             log_x: false,
             layers,
+            window: None,
         }
     }
+}
+
+/// A window around the middle of a cloud: the `q` and 1 − `q` quantiles of each coordinate,
+/// widened by a tenth, so that a few far points do not shrink the rest to a dot.
+pub fn central_window(points: &[[f64; 2]], q: f64) -> Option<([f64; 2], [f64; 2])> {
+    let quant = |k: usize| -> Option<[f64; 2]> {
+        let mut v: Vec<f64> = points
+            .iter()
+            .map(|p| p[k])
+            .filter(|x| x.is_finite())
+            .collect();
+        v.sort_by(f64::total_cmp);
+        let lo = crate::derivations::rounding::quantile(&v, q)?;
+        let hi = crate::derivations::rounding::quantile(&v, 1.0 - q)?;
+        let m = 0.1 * (hi - lo).max(f64::MIN_POSITIVE);
+        Some([lo - m, hi + m])
+    };
+    Some((quant(0)?, quant(1)?))
 }
 
 /// A figure: one or more panels, tied to the claim it illustrates.

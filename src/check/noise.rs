@@ -474,6 +474,7 @@ impl Judge<'_> {
                 equal_aspect: false,
                 log_x: true,
                 layers,
+                window: None,
             }
         };
         b.figure(Figure {

@@ -2,7 +2,7 @@
 
 use num_rational::BigRational;
 
-use super::figure::{thin, Figure, Layer, Plot, Shape, Style};
+use super::figure::{central_window, thin, Figure, Layer, Plot, Shape, Style};
 use super::{ClaimResult, Evidence, ResultBuilder, Tolerance, Verdict};
 use crate::cases::{P3f3ExampleCase, Printed};
 use crate::derivations::p3f3::{match_solutions, real_solutions_from_coordinates, validate};
@@ -395,6 +395,10 @@ pub(super) fn check_example(b: &ResultBuilder, case: &P3f3ExampleCase) -> Result
             y_label: "c²".into(),
             equal_aspect: false,
             log_x: false,
+            window: central_window(
+                &layers.iter().take(2).flat_map(|l| l.points.iter().copied()).collect::<Vec<_>>(),
+                0.02,
+            ),
             layers,
         }],
     });

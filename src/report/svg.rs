@@ -74,7 +74,10 @@ fn draw<DB: DrawingBackend>(
     area: &DrawingArea<DB, plotters::coord::Shift>,
 ) -> Result<(), DrawingAreaErrorKind<DB::ErrorType>> {
     area.fill(&WHITE)?;
-    let ((x0, x1), (y0, y1)) = range(p);
+    let ((x0, x1), (y0, y1)) = match p.window {
+        Some((x, y)) => ((x[0], x[1]), (y[0], y[1])),
+        None => range(p),
+    };
     let mut chart = ChartBuilder::on(area)
         .caption(&p.title, ("sans-serif", 15))
         .margin(8)
