@@ -88,6 +88,16 @@ impl Printed {
     }
 }
 
+impl Printed {
+    /// Printed numbers as printed, comma-separated.
+    pub fn join(v: &[Printed]) -> String {
+        v.iter()
+            .map(|p| p.text.as_str())
+            .collect::<Vec<_>>()
+            .join(", ")
+    }
+}
+
 impl fmt::Display for Printed {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.write_str(&self.text)
@@ -239,6 +249,20 @@ pub struct Place {
     /// The LaTeX macros involved.
     #[serde(default)]
     pub macros: Vec<String>,
+}
+
+impl fmt::Display for Place {
+    /// `§5.2, label p4f2, macros \faca \facb`
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "§{}", self.section)?;
+        if let Some(l) = &self.label {
+            write!(f, ", label {l}")?;
+        }
+        if !self.macros.is_empty() {
+            write!(f, ", macros {}", self.macros.join(" "))?;
+        }
+        Ok(())
+    }
 }
 
 /// A macro of the paper, transcribed.

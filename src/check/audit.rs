@@ -445,22 +445,7 @@ pub(super) fn check(b: &ResultBuilder, case: &FormulaAuditCase) -> Result<Vec<Cl
         .filter_map(|it| {
             let claim = claims.get(&it.id)?;
             let suffix = it.id.split_once('/').map(|x| x.1.to_string());
-            let mut ev = Evidence::new(&it.method).with(
-                "where",
-                format!(
-                    "§{}{}{}",
-                    it.place.section,
-                    it.place
-                        .label
-                        .as_ref()
-                        .map_or(String::new(), |l| format!(", label {l}")),
-                    if it.place.macros.is_empty() {
-                        String::new()
-                    } else {
-                        format!(", macros {}", it.place.macros.join(" "))
-                    }
-                ),
-            );
+            let mut ev = Evidence::new(&it.method).with("where", &it.place);
             if let Some(d) = &it.defect {
                 ev = ev.with("defect", d);
             }

@@ -2,7 +2,9 @@
 
 use super::figure::{ecdf, Figure, Layer, Plot, Shape, Style};
 use super::{ClaimResult, Evidence, ResultBuilder, Tolerance, Verdict};
-use crate::cases::{Direction, NoiseLevel, NoiseStudyCase, OverEdges, Quantity, StatementSubject};
+use crate::cases::{
+    Direction, NoiseLevel, NoiseStudyCase, OverEdges, Printed, Quantity, StatementSubject,
+};
 use crate::derivations::noise::{models, run_level, stream, LevelResult, Study, TrialError};
 use crate::derivations::p4f3::realize;
 use crate::error::Result;
@@ -97,8 +99,8 @@ pub(super) fn check(b: &ResultBuilder, case: &NoiseStudyCase) -> Result<Vec<Clai
                 },
                 format!(
                     "lengths {}, squares {}",
-                    texts(&case.body.lengths),
-                    texts(&case.body.squares)
+                    Printed::join(&case.body.lengths),
+                    Printed::join(&case.body.squares)
                 ),
                 format!("squares of the printed lengths: {}", sig_list(&truth)),
                 Some(Tolerance {
@@ -197,7 +199,7 @@ impl Judge<'_> {
                 format!(
                     "printed as {} = {}",
                     if lv.labelled_as == Quantity::Lengths { "a, b, c" } else { "a², b², c²" },
-                    texts(&lv.printed[0])
+                    Printed::join(&lv.printed[0])
                 ),
                 format!(
                     "the values are {}: within {} of the true {} {}, but {} from the true {} {}; read them as {}",
@@ -320,7 +322,7 @@ impl Judge<'_> {
             lv.level.text,
             lv.printed
                 .iter()
-                .map(|p| format!("({})", texts(p)))
+                .map(|p| format!("({})", Printed::join(p)))
                 .collect::<Vec<_>>()
                 .join(", ")
         );
@@ -490,11 +492,4 @@ impl Judge<'_> {
         out.push(result);
         out
     }
-}
-
-fn texts(v: &[crate::cases::Printed]) -> String {
-    v.iter()
-        .map(|p| p.text.clone())
-        .collect::<Vec<_>>()
-        .join(", ")
 }

@@ -67,8 +67,8 @@ pub(super) fn check_example(b: &ResultBuilder, case: &P3f3ExampleCase) -> Result
         },
         format!(
             "lengths {}, squares {}",
-            join(&case.body.lengths),
-            join(&case.body.squares)
+            Printed::join(&case.body.lengths),
+            Printed::join(&case.body.squares)
         ),
         format!(
             "squares of the printed lengths: {}",
@@ -220,7 +220,7 @@ pub(super) fn check_example(b: &ResultBuilder, case: &P3f3ExampleCase) -> Result
         case.solutions
             .values
             .iter()
-            .map(|v| format!("({})", join(v)))
+            .map(|v| format!("({})", Printed::join(v)))
             .collect::<Vec<_>>()
             .join(" and "),
         format!(
@@ -295,7 +295,7 @@ pub(super) fn check_example(b: &ResultBuilder, case: &P3f3ExampleCase) -> Result
         } else {
             Verdict::Contradicted
         },
-        format!("three projections of the body ({})", join(&case.body.squares)),
+        format!("three projections of the body ({})", Printed::join(&case.body.squares)),
         format!(
             "relative twofold-squared residuals of the body at the printed coordinates {}; \
              within the rounding box an exact projection of the body exists: {fits}",
@@ -439,13 +439,6 @@ pub(super) fn check_example(b: &ResultBuilder, case: &P3f3ExampleCase) -> Result
             .with("roots recomputed at the printed coordinates", recomputed.join("; ")),
     ));
     Ok(out)
-}
-
-fn join(v: &[Printed]) -> String {
-    v.iter()
-        .map(|p| p.text.clone())
-        .collect::<Vec<_>>()
-        .join(", ")
 }
 
 pub(super) fn check_census(

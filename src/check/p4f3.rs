@@ -24,13 +24,6 @@ fn pct(x: f64) -> String {
     format!("{}%", sig(100.0 * x))
 }
 
-fn texts(v: &[Printed]) -> String {
-    v.iter()
-        .map(|p| p.text.clone())
-        .collect::<Vec<_>>()
-        .join(", ")
-}
-
 /// Half a unit in the last significant digit printed, or 0 for a printed exact zero (the
 /// matrix's structural zeros).
 fn half(p: &Printed, digits: u32) -> f64 {
@@ -78,8 +71,8 @@ pub(super) fn check_example(b: &ResultBuilder, case: &P4f3ExampleCase) -> Result
         },
         format!(
             "lengths {}; squares {}",
-            texts(&case.body.lengths),
-            texts(&case.body.squares)
+            Printed::join(&case.body.lengths),
+            Printed::join(&case.body.squares)
         ),
         format!(
             "every printed length and square round the same true length: {}; the squares are \
@@ -360,7 +353,7 @@ pub(super) fn check_example(b: &ResultBuilder, case: &P4f3ExampleCase) -> Result
         } else {
             Verdict::Contradicted
         },
-        format!("x = ({}), \"perfect agreement\" with the edge table", texts(xs)),
+        format!("x = ({}), \"perfect agreement\" with the edge table", Printed::join(xs)),
         format!(
             "the printed x satisfies the printed matrix within its precision: {res_ok}; the exact \
              solution of the printed matrix over ℚ is {} and lies within the propagated precision of \

@@ -466,21 +466,7 @@ pub fn audit_text(items: &[crate::check::AuditItem], detailed: bool) -> String {
     for it in items {
         if detailed {
             let _ = writeln!(s, "{} — {}", it.id, it.verdict.name());
-            let _ = writeln!(
-                s,
-                "  where:     §{}{}{} (lines {})",
-                it.place.section,
-                it.place
-                    .label
-                    .as_ref()
-                    .map_or(String::new(), |l| format!(", label {l}")),
-                if it.place.macros.is_empty() {
-                    String::new()
-                } else {
-                    format!(", macros {}", it.place.macros.join(" "))
-                },
-                it.lines
-            );
+            let _ = writeln!(s, "  where:     {} (lines {})", it.place, it.lines);
             let _ = writeln!(s, "  printed:   {}", it.printed);
             if let Some(d) = &it.defect {
                 let _ = writeln!(s, "  defect:    {d}");
