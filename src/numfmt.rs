@@ -9,7 +9,7 @@ pub const SIGNIFICANT: usize = 6;
 /// # Example
 /// ```
 /// use orthocheck::numfmt::sig;
-/// assert_eq!(sig(16.21890004), "16.2189");
+/// assert_eq!(sig(12.34560004), "12.3456");
 /// assert_eq!(sig(2.5e-9), "2.5e-9");
 /// assert_eq!(sig(-0.0), "0");
 /// assert_eq!(sig(f64::INFINITY), "inf");

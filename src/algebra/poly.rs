@@ -499,7 +499,7 @@ fn tokenize(text: &str) -> Result<Vec<(usize, Token)>, ParseError> {
     Ok(out)
 }
 
-/// An exact decimal such as `2.6849` or `-16`; `None` if malformed.
+/// An exact decimal such as `1.2345` or `-16`; `None` if malformed.
 pub fn parse_decimal(s: &str) -> Option<BigRational> {
     let (neg, body) = match s.strip_prefix('-') {
         Some(rest) => (true, rest),

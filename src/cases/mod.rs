@@ -21,7 +21,7 @@ use crate::error::{Error, InputLocation, Result};
 /// # Example
 /// ```
 /// use orthocheck::cases::Printed;
-/// let x = Printed::parse("2.6849").unwrap();
+/// let x = Printed::parse("1.2345").unwrap();
 /// assert_eq!(x.decimals, 4);
 /// assert_eq!(x.half_unit(), 0.00005);
 /// ```
@@ -36,7 +36,7 @@ pub struct Printed {
 }
 
 impl Printed {
-    /// Parse printed digits (`"16.2189"`, `"-0.833333"`, `"18"`, `".68697"`, `"2.29726e-14"`).
+    /// Parse printed digits (`"12.345"`, `"-0.5"`, `"18"`, `".25"`, `"1.5e-14"`).
     pub fn parse(text: &str) -> Option<Printed> {
         let t = text.trim();
         let (mantissa, exponent) = match t.split_once(['e', 'E']) {
@@ -110,7 +110,7 @@ impl<'de> Deserialize<'de> for Printed {
         impl Visitor<'_> for V {
             type Value = Printed;
             fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-                f.write_str("a printed number as a quoted string, e.g. \"2.6849\"")
+                f.write_str("a printed number as a quoted string, e.g. \"1.2345\"")
             }
             fn visit_str<E: de::Error>(self, s: &str) -> std::result::Result<Printed, E> {
                 Printed::parse(s)

@@ -629,18 +629,30 @@ mod tests {
     }
 
     #[test]
-    fn the_counterexample_is_rebuilt() {
-        let v = |x: f64, y: f64, z: f64| Vector3::new(x, y, z);
-        let c = counterexample([
-            v(0.0, 0.0, 0.0),
-            v(3.46537, 2.0, -2.0),
-            v(0.68697, 5.0, 4.0),
-            v(4.63902, 2.0, -2.0),
-            v(4.37296, 5.0, 4.0),
-        ])
-        .unwrap();
-        eprintln!("{c:?}");
-        assert!(c.image_mismatch < 1e-12);
+    fn a_constructed_counterexample_is_rebuilt() {
+        // the construction run forwards: axis n ⟂ x through P, view u₂ ⟂ n, a turn about n;
+        // Q′ on the line through Q along x that meets the turned line q₂′ (in the plane ⟂ n)
+        let (p, q, r) = (
+            Vector3::zeros(),
+            Vector3::new(1.0, 0.7, -0.4),
+            Vector3::new(-0.3, 1.2, 0.9),
+        );
+        let u1 = Vector3::x();
+        let n = Vector3::new(0.0, 0.6, 0.8);
+        let u2 = (u1 * 0.5 + n.cross(&u1) * 0.8).normalize();
+        let rot = Rotation3::from_axis_angle(&nalgebra::Unit::new_normalize(n), 0.9);
+        let moved = |x: Vector3<f64>| {
+            // x + s u₁ = rot(x) + t rot(u₂): both sides lie in the plane ⟂ n through x
+            let (a, b) = (u1, rot * u2);
+            let d = rot * (x - p) + p - x;
+            let m = nalgebra::Matrix3x2::from_columns(&[a, -b]);
+            let st = (m.transpose() * m).try_inverse().unwrap() * m.transpose() * d;
+            x + a * st[0]
+        };
+        let c = counterexample([p, q, r, moved(q), moved(r)]).unwrap();
+        assert!(c.image_mismatch < 1e-12, "{c:?}");
+        assert!((c.rebuilt[0] - moved(q)).norm() < 1e-9 && (c.rebuilt[1] - moved(r)).norm() < 1e-9);
+        assert!((c.sides[0] - c.sides_prime[0]).abs() > 1e-3);
     }
 
     #[test]
