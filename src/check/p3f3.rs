@@ -455,6 +455,15 @@ pub(super) fn check_census(
         .with("scenes with 0 / 1 / 2 feasible edge solutions", format!("{} / {} / {}", c.feasible_counts[0], c.feasible_counts[1], c.feasible_counts[2]))
         .with("true squares among the feasible ones", format!("{} of {}", c.truth_found, c.trials))
         .with("largest relative error of the true solution", below(c.max_truth_error))
+        .with(
+            "independent routes to c² (exact elimination over ℚ + Sturm, roots' closed form, companion matrix): largest relative disagreement with the solver",
+            format!(
+                "{} over {} scenes; same number of real roots in {}",
+                below(c.max_route_disagreement),
+                c.routes_checked.0,
+                c.routes_checked.1
+            ),
+        )
         .with("collinear body", c.collinear.map_or("no degenerate outcome".into(), |d| d.to_string()))
         .with("frames identical up to an in-plane rotation", c.identical_frames.map_or("no degenerate outcome".into(), |d| d.to_string()))
         .with(

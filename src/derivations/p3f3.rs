@@ -441,7 +441,7 @@ pub fn exact_elimination(l: &[[num_rational::BigRational; 3]; 3]) -> Option<crat
 }
 
 /// Independent routes to the same c² roots, and their largest disagreement with the solver.
-#[derive(Clone, Debug, serde::Serialize)]
+#[derive(Clone, Debug, PartialEq, serde::Serialize)]
 pub struct Validation {
     /// The solver's real c² values.
     pub solver: Vec<f64>,
@@ -578,6 +578,11 @@ pub struct Census {
     /// Structure-and-motion solutions behind one edge solution (depth-sign combinations that
     /// reproject), counted up to the global mirror reversal; the same in every scene checked.
     pub motions_per_edge_solution: Vec<usize>,
+    /// Largest relative disagreement of the independent routes ([`validate`]) with the
+    /// solver, over the first scenes (at most 200: the exact route is slow).
+    pub max_route_disagreement: f64,
+    /// Scenes validated, and how many of them every route found the same number of roots.
+    pub routes_checked: (usize, usize),
     /// Outcome for a collinear body.
     pub collinear: Option<Degenerate>,
     /// Outcome for two frames identical up to an in-plane rotation.
@@ -594,6 +599,8 @@ pub fn census(trials: usize, seed: u64) -> Census {
         truth_found: 0,
         max_truth_error: 0.0,
         motions_per_edge_solution: Vec::new(),
+        max_route_disagreement: 0.0,
+        routes_checked: (0, 0),
         collinear: None,
         identical_frames: None,
     };
@@ -623,6 +630,16 @@ pub fn census(trials: usize, seed: u64) -> Census {
             }
             let scale = truth.iter().fold(0.0_f64, |a, b| a.max(*b));
             c.max_truth_error = c.max_truth_error.max(e / scale);
+        }
+        if t < 200 {
+            use num_rational::BigRational;
+            let exact: [[BigRational; 3]; 3] = std::array::from_fn(|i| {
+                std::array::from_fn(|e| BigRational::from_float(l[i][e]).unwrap_or_default())
+            });
+            let v = validate(&exact);
+            c.max_route_disagreement = c.max_route_disagreement.max(v.max_relative_disagreement);
+            c.routes_checked.0 += 1;
+            c.routes_checked.1 += usize::from(v.same_count);
         }
         if t < 20 {
             for s in &feasible {

@@ -404,6 +404,10 @@ pub struct Solved {
     pub why: String,
     /// Per solution: the recovered body, for feasible p3f3 solutions.
     pub structures: Vec<Option<Structure>>,
+    /// For p3f3: the c² roots by independent routes (exact elimination over ℚ of the input's
+    /// exact binary values with Sturm isolation, the `roots` closed form, the companion
+    /// matrix) and their largest disagreement with the solver.
+    pub validation: Option<super::p3f3::Validation>,
 }
 
 /// Reprojection errors at most this (relative to the largest edge) count as exact: the
@@ -461,9 +465,17 @@ pub fn solve_tracks(tracks: &Tracks, method: Method) -> Result<Solved> {
             }))
         })
         .collect::<Result<_>>()?;
+    let validation = (m == Method::P3f3).then(|| {
+        use num_rational::BigRational;
+        let l: [[BigRational; 3]; 3] = std::array::from_fn(|i| {
+            std::array::from_fn(|e| BigRational::from_float(input.frames[i][e]).unwrap_or_default())
+        });
+        super::p3f3::validate(&l)
+    });
     Ok(Solved {
         output,
         why,
         structures,
+        validation,
     })
 }

@@ -336,6 +336,7 @@ pub fn solve_json(s: &crate::derivations::solver::Solved) -> serde_json::Value {
         "solutions": solutions,
         "degenerate": o.degenerate.map(|d| d.to_string()),
         "condition": o.condition,
+        "validation": s.validation,
     })
 }
 
@@ -352,6 +353,14 @@ pub fn solve_text(s: &crate::derivations::solver::Solved) -> String {
     }
     if o.solutions.is_empty() {
         t.push_str("no solution\n");
+    }
+    if let Some(v) = &s.validation {
+        let _ = writeln!(
+            t,
+            "c² by independent routes (exact elimination over ℚ + Sturm, closed form, companion matrix): largest relative disagreement {}; same number of real roots: {}",
+            crate::numfmt::below(v.max_relative_disagreement),
+            v.same_count
+        );
     }
     for (i, (sol, st)) in o.solutions.iter().zip(&s.structures).enumerate() {
         let edges: Vec<String> = o
