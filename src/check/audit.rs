@@ -401,11 +401,7 @@ fn computed(c: &ComputedItem) -> AuditItem {
                 .map(|(n, f, c)| format!("n = {n}: formula {f}, enumerated {c}"))
                 .collect::<Vec<_>>()
                 .join("; ");
-            it.verdict = if ok {
-                Verdict::Reproduced
-            } else {
-                Verdict::Contradicted
-            };
+            it.verdict = Verdict::holds(ok);
         }
     }
     it

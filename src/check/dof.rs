@@ -48,11 +48,7 @@ pub(super) fn check_count(b: &ResultBuilder, case: &DofCountCase) -> Result<Vec<
         out.push(b.result(
             &ex.claim,
             None,
-            if agree {
-                Verdict::Reproduced
-            } else {
-                Verdict::Contradicted
-            },
+            Verdict::holds(agree),
             format!(
                 "unknowns {} = measurements {}",
                 ex.unknowns, ex.measurements
@@ -159,11 +155,7 @@ pub(super) fn check_identifiability(
         b.result(
             &case.formula.claim,
             None,
-            if formula_matches && identifiable_unbalanced.is_empty() && ranks_agree {
-                Verdict::Reproduced
-            } else {
-                Verdict::Contradicted
-            },
+            Verdict::holds(formula_matches && identifiable_unbalanced.is_empty() && ranks_agree),
             format!(
                 "unknowns {}, measurements {}; balance needed",
                 case.formula.unknowns, case.formula.measurements
@@ -206,11 +198,7 @@ pub(super) fn check_identifiability(
     out.push(b.result(
         &case.minimum.claim,
         None,
-        if claimed_ok && minimal {
-            Verdict::Reproduced
-        } else {
-            Verdict::Contradicted
-        },
+        Verdict::holds(claimed_ok && minimal),
         format!(
             "{} points and {} frames are the minimum",
             case.minimum.points, case.minimum.frames
@@ -246,11 +234,7 @@ pub(super) fn check_identifiability(
         b.result(
             &case.two_frames,
             None,
-            if all_deficient {
-                Verdict::Reproduced
-            } else {
-                Verdict::Contradicted
-            },
+            Verdict::holds(all_deficient),
             "no number of points recovers structure and motion from two frames".into(),
             format!(
             "k = 2 is rank-deficient for every p in the grid, although the count balances for {}",

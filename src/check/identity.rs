@@ -131,7 +131,7 @@ pub(super) fn check(b: &ResultBuilder, case: &IdentityCensusCase) -> Result<Vec<
     out.push(b.result(
         &case.line,
         None,
-        if true_max <= level { Verdict::Reproduced } else { Verdict::Contradicted },
+        Verdict::holds(true_max <= level),
         "three points fix the line on which the fourth point must lie in frame 2".into(),
         format!(
             "for the true assignment the distance of T₂ from the line T₂ₐT₂_b is {} of the image size at every c \
@@ -147,11 +147,7 @@ pub(super) fn check(b: &ResultBuilder, case: &IdentityCensusCase) -> Result<Vec<
     out.push(b.result(
         &case.procedure,
         Some("dependence-on-c"),
-        if true_max <= level && paper_first == tested {
-            Verdict::Reproduced
-        } else {
-            Verdict::Contradicted
-        },
+        Verdict::holds(true_max <= level && paper_first == tested),
         "choose c (above its lower bounds), take the smaller distance over the two values of b".into(),
         format!(
             "the line does not depend on c: for the true assignment the distance stays at most {} of the image \
@@ -180,11 +176,7 @@ pub(super) fn check(b: &ResultBuilder, case: &IdentityCensusCase) -> Result<Vec<
     out.push(b.result(
         &case.tracing,
         Some("four-points"),
-        if epi_first == tested && paper_first == tested {
-            Verdict::Reproduced
-        } else {
-            Verdict::Contradicted
-        },
+        Verdict::holds(epi_first == tested && paper_first == tested),
         "four points over two frames identify the points between the frames".into(),
         format!(
             "the true correspondence ranks first among all 24 in {epi_first} of {tested} scenes (equal-scale epipolar \
@@ -197,11 +189,7 @@ pub(super) fn check(b: &ResultBuilder, case: &IdentityCensusCase) -> Result<Vec<
     out.push(b.result(
         &case.five_points,
         None,
-        if five_true_max <= level && five_first == tested {
-            Verdict::Reproduced
-        } else {
-            Verdict::Contradicted
-        },
+        Verdict::holds(five_true_max <= level && five_first == tested),
         "five points linearize the identity test (S_a in plane PQT, S_b in plane QRP)".into(),
         format!(
             "S₂ lies on the line S₂ₐS₂_b for the true assignment ({} of the image size), and the true one of the 120 \

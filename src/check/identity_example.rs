@@ -168,7 +168,7 @@ pub(super) fn check(b: &ResultBuilder, case: &IdentityExampleCase) -> Result<Vec
     out.push(b.result(
         &case.frames.claim,
         None,
-        if best_ok == letters.len() { Verdict::Reproduced } else { Verdict::Contradicted },
+        Verdict::holds(best_ok == letters.len()),
         "two frames of four points, six decimals".into(),
         format!(
             "the listed points are {} in that order: all {} projected distances of the hidden table match in both \
@@ -253,7 +253,7 @@ pub(super) fn check(b: &ResultBuilder, case: &IdentityExampleCase) -> Result<Vec
     out.push(b.result(
         &t.claim,
         None,
-        if bad.is_empty() { Verdict::Reproduced } else { Verdict::Contradicted },
+        Verdict::holds(bad.is_empty()),
         "real and projected distances".into(),
         format!(
             "the projected rows are the frames' distances (see ex5-frames); real = real2; every square is its length \
@@ -582,7 +582,7 @@ pub(super) fn check(b: &ResultBuilder, case: &IdentityExampleCase) -> Result<Vec
     out.push(b.result(
         &case.correct,
         None,
-        if first_two && both_zero { Verdict::Reproduced } else { Verdict::Contradicted },
+        Verdict::holds(first_two && both_zero),
         "the first two attempts are correct and differ only in the sign in the formula for b".into(),
         format!(
             "the first two blocks have the true assignment and opposite versions, and T₂ lies on the line for both signs \
@@ -821,7 +821,7 @@ pub(super) fn check(b: &ResultBuilder, case: &IdentityExampleCase) -> Result<Vec
     out.push(b.result(
         &case.panels.claim,
         Some("distance"),
-        if correct_max < wrong_min { Verdict::Reproduced } else { Verdict::Contradicted },
+        Verdict::holds(correct_max < wrong_min),
         "for the wrong assignments the point T2 is distant from the line".into(),
         format!(
             "the tested point is at most {} from its line in the correct panels and at least {} in the wrong ones",

@@ -53,6 +53,15 @@ impl Verdict {
         Verdict::Contradicted,
     ];
 
+    /// `Reproduced` when a claim decided by computation holds, `Contradicted` when not.
+    pub fn holds(ok: bool) -> Verdict {
+        if ok {
+            Verdict::Reproduced
+        } else {
+            Verdict::Contradicted
+        }
+    }
+
     /// The kebab-case name.
     pub fn name(&self) -> &'static str {
         match self {

@@ -92,11 +92,7 @@ pub(super) fn check(b: &ResultBuilder, case: &NoiseStudyCase) -> Result<Vec<Clai
             b.result(
                 claim,
                 None,
-                if agree.iter().all(|a| *a) {
-                    Verdict::Reproduced
-                } else {
-                    Verdict::Contradicted
-                },
+                Verdict::holds(agree.iter().all(|a| *a)),
                 format!(
                     "lengths {}, squares {}",
                     Printed::join(&case.body.lengths),
@@ -168,7 +164,6 @@ impl Judge<'_> {
         res: &[LevelResult],
     ) -> Vec<ClaimResult> {
         let (truth, lengths, names) = (self.truth, self.lengths, self.names);
-        let case = self;
         let mut out = Vec::new();
         let level_id = format!("eps-{}", lv.level.text);
         let suffix = |s: Option<&str>| match (repeated, s) {
@@ -227,7 +222,7 @@ impl Judge<'_> {
              paper's own scene where the model says so), P at the origin, noise, the solver, and the real \
              solution nearest the truth; errors relative to the truth, largest over the edges unless said otherwise",
         )
-        .with("trials per model (seed)", format!("{} ({})", case.trials, case.seed))
+        .with("trials per model (seed)", format!("{} ({})", self.trials, self.seed))
         .with("printed values read as", if as_squares { "squared lengths" } else { "lengths" });
         if let Some(e) = example {
             ev = ev.with(
@@ -485,7 +480,7 @@ impl Judge<'_> {
             title: format!("Noise {}: error distributions", lv.level.text),
             caption: format!(
                 "Empirical distributions of the worst edge's relative error over {} seeded trials per model (seed {}), and the paper's printed run.",
-                case.trials, case.seed
+                self.trials, self.seed
             ),
             panels: vec![panel(0, "squares"), panel(2, "lengths")],
         });

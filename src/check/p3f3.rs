@@ -60,11 +60,7 @@ pub(super) fn check_example(b: &ResultBuilder, case: &P3f3ExampleCase) -> Result
     out.push(b.result(
         &case.body.claim,
         None,
-        if sq_ok {
-            Verdict::Reproduced
-        } else {
-            Verdict::Contradicted
-        },
+        Verdict::holds(sq_ok),
         format!(
             "lengths {}, squares {}",
             Printed::join(&case.body.lengths),
@@ -422,11 +418,7 @@ pub(super) fn check_example(b: &ResultBuilder, case: &P3f3ExampleCase) -> Result
     out.push(b.result(
         &case.feasibility,
         None,
-        if all_feasible {
-            Verdict::Reproduced
-        } else {
-            Verdict::Contradicted
-        },
+        Verdict::holds(all_feasible),
         "both printed solutions are feasible".into(),
         printed_checks
             .iter()
@@ -468,7 +460,18 @@ pub(super) fn check_census(
         .with("frames identical up to an in-plane rotation", c.identical_frames.map_or("no degenerate outcome".into(), |d| d.to_string()))
         .with(
             "structure-and-motion solutions per edge solution (up to the global mirror reversal)",
-            format!("{:?}: each frame's depth pattern may flip (a planar triangle turns onto its mirror image), so 2^k = 8 motions per edge solution, 4 up to the mirror; with two edge solutions up to 16", c.motions_per_edge_solution),
+            {
+                // counted per edge solution up to the mirror; the mirror doubles, two edge
+                // solutions double again
+                let n = c.motions_per_edge_solution.iter().copied().max().unwrap_or(0);
+                format!(
+                    "{:?}: each later frame's depth pattern may flip (a planar triangle turns onto its mirror image), \
+                     so {n} per edge solution up to the mirror, {} with it; with two edge solutions up to {}",
+                    c.motions_per_edge_solution,
+                    2 * n,
+                    4 * n
+                )
+            },
         );
     Ok(case
         .claims
@@ -477,7 +480,7 @@ pub(super) fn check_census(
             b.result(
                 claim,
                 None,
-                if ok { Verdict::Reproduced } else { Verdict::Contradicted },
+                Verdict::holds(ok),
                 "none, one or two solutions; infinitely many if collinear or two frames identical up to rotation".into(),
                 format!(
                     "0/1/2 feasible edge solutions in {}/{}/{} scenes, never more; the degenerate scenes give infinitely many: {infinitely}",
@@ -511,7 +514,7 @@ pub(super) fn check_p3f4_census(
             b.result(
                 claim,
                 Some("four-frames").filter(|_| claim.claim == "abstract-linear"),
-                if ok { Verdict::Reproduced } else { Verdict::Contradicted },
+                Verdict::holds(ok),
                 "linear in a², b², c² with a unique solution unless the motion is special".into(),
                 format!(
                     "unique and exact in {} of {} generic scenes; rank {} for rotations about the viewing axis, {} about a fixed generic axis",

@@ -64,11 +64,7 @@ pub(super) fn check_example(b: &ResultBuilder, case: &P4f3ExampleCase) -> Result
     out.push(b.result(
         &case.body.claim,
         None,
-        if all_consistent && real.realizable {
-            Verdict::Reproduced
-        } else {
-            Verdict::Contradicted
-        },
+        Verdict::holds(all_consistent && real.realizable),
         format!(
             "lengths {}; squares {}",
             Printed::join(&case.body.lengths),
@@ -348,11 +344,7 @@ pub(super) fn check_example(b: &ResultBuilder, case: &P4f3ExampleCase) -> Result
     out.push(b.result(
         &case.solution.claim,
         None,
-        if res_ok && solve_ok && table_equal {
-            Verdict::Reproduced
-        } else {
-            Verdict::Contradicted
-        },
+        Verdict::holds(res_ok && solve_ok && table_equal),
         format!("x = ({}), \"perfect agreement\" with the edge table", Printed::join(xs)),
         format!(
             "the printed x satisfies the printed matrix within its precision: {res_ok}; the exact \
@@ -579,7 +571,7 @@ pub(super) fn check_census(b: &ResultBuilder, case: &CensusCase) -> Result<Vec<C
         out.push(b.result(
             claim,
             Some("four-points").filter(|_| claim.claim == "abstract-linear"),
-            if generic_ok { Verdict::Reproduced } else { Verdict::Contradicted },
+            Verdict::holds(generic_ok),
             "a single solution of the linear system (unless the motion is degenerate)".into(),
             format!(
                 "unique and exact in {} of {} generic scenes; rank {} of 6 for motions about the viewing axis",

@@ -49,7 +49,7 @@ pub(super) fn check(b: &ResultBuilder, case: &TwoFramesCase) -> Result<Vec<Claim
                 .fold(0.0, f64::max);
             let ok = dev <= half && differ > 10.0 * half && c.image_mismatch < 1e-12;
             (
-                if ok { Verdict::Reproduced } else { Verdict::Contradicted },
+                Verdict::holds(ok),
                 format!(
                     "PQR has sides {} and PQ′R′ {}: not congruent; views u₁ = {}, u₂ = {} of PQR and u₁, u₂′ = {} of PQ′R′ \
                      give congruent images (largest mismatch of a projected squared side {}); the construction \
@@ -194,7 +194,7 @@ pub(super) fn check(b: &ResultBuilder, case: &TwoFramesCase) -> Result<Vec<Claim
     out.push(b.result(
         &case.construction,
         None,
-        if ok { Verdict::Reproduced } else { Verdict::Contradicted },
+        Verdict::holds(ok),
         "rotating the second view about the axis n orthogonal to both viewing directions gives other bodies with the same two images".into(),
         format!(
             "every member of the one-parameter family reprojects onto both images (error {}), members differ in shape \
@@ -211,11 +211,7 @@ pub(super) fn check(b: &ResultBuilder, case: &TwoFramesCase) -> Result<Vec<Claim
     out.push(b.result(
         &case.family,
         Some("family"),
-        if ok && deficiencies.iter().all(|d| d.1 == 1) {
-            Verdict::Reproduced
-        } else {
-            Verdict::Contradicted
-        },
+        Verdict::holds(ok && deficiencies.iter().all(|d| d.1 == 1)),
         "no increase in the number of points recovers structure and motion from two frames".into(),
         format!(
             "for {} points a one-parameter family of non-congruent bodies reproduces both frames exactly; deficiency 1 for p = 3 … {}",
@@ -233,11 +229,7 @@ pub(super) fn check(b: &ResultBuilder, case: &TwoFramesCase) -> Result<Vec<Claim
     out.push(b.result(
         &case.fourth_point,
         None,
-        if redundant == 1 && r4.deficiency == 1 {
-            Verdict::Reproduced
-        } else {
-            Verdict::Contradicted
-        },
+        Verdict::holds(redundant == 1 && r4.deficiency == 1),
         "the fourth point carries only one piece of information in the second image instead of two".into(),
         format!(
             "exact Jacobian rank at two frames: {} for three points, {} for four; the fourth point's four image \
@@ -282,7 +274,7 @@ pub(super) fn check(b: &ResultBuilder, case: &TwoFramesCase) -> Result<Vec<Claim
             let worst = m.iter().map(|x| x.reprojection).fold(0.0, f64::max);
             let ok = worst < 1e-9 && truth < 1e-9 && diffs.iter().all(|d| d.0 > 1e-3);
             (
-                if ok { Verdict::Reproduced } else { Verdict::Contradicted },
+                Verdict::holds(ok),
                 format!(
                     "a trefoil of {} points in two views: the members at β = {} reproduce both projections (error {}) \
                      and differ from the true curve by {} of its diameter in the largest distance change ({} RMS after \

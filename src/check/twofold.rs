@@ -92,11 +92,7 @@ pub(super) fn check(b: &ResultBuilder, case: &TwofoldCase) -> Result<Vec<ClaimRe
     out.push(b.result(
         &case.relations.claim,
         None,
-        if census.none_held == 0 {
-            Verdict::Reproduced
-        } else {
-            Verdict::Contradicted
-        },
+        Verdict::holds(census.none_held == 0),
         format!("one of {} holds in each frame", case.relations.patterns.join(" | ")),
         format!(
             "held in {} of {} random frames (per pattern: {:?}); none held: {}",
