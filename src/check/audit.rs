@@ -8,7 +8,7 @@ use num_rational::BigRational;
 use num_traits::{One, ToPrimitive};
 use serde::Serialize;
 
-use super::{ClaimResult, Evidence, ResultBuilder, Tolerance, Verdict};
+use super::{ClaimResult, Evidence, OldTolerance, ResultBuilder, Verdict};
 use crate::algebra::{agree_at_random_points, Poly, RatFn};
 use crate::cases::{
     ArithmeticItem, ClaimRef, ComputedItem, ComputedTest, FormulaAuditCase, FormulaItem, Place,
@@ -441,7 +441,7 @@ pub(super) fn check(b: &ResultBuilder, case: &FormulaAuditCase) -> Result<Vec<Cl
         .filter_map(|it| {
             let claim = claims.get(&it.id)?;
             let suffix = it.id.split_once('/').map(|x| x.1.to_string());
-            let mut ev = Evidence::new(&it.method).with("where", &it.place);
+            let mut ev = Evidence::new(&it.method).with("where", it.place.to_string());
             if let Some(d) = &it.defect {
                 ev = ev.with("defect", d);
             }
@@ -452,7 +452,7 @@ pub(super) fn check(b: &ResultBuilder, case: &FormulaAuditCase) -> Result<Vec<Cl
                 it.verdict,
                 it.printed.clone(),
                 it.finding.clone(),
-                Some(Tolerance::exact("exact arithmetic over ℚ")),
+                Some(OldTolerance::exact("exact arithmetic over ℚ")),
                 ev,
             );
             // the audit spans the paper: each item belongs to its own section

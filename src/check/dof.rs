@@ -5,7 +5,7 @@ use std::collections::BTreeMap;
 use num_bigint::BigInt;
 use num_rational::BigRational;
 
-use super::{ClaimResult, Evidence, ResultBuilder, Tolerance, Verdict};
+use super::{ClaimResult, Evidence, OldTolerance, Power, ResultBuilder, Tolerance, Verdict};
 use crate::algebra::Poly;
 use crate::cases::{DofCountCase, DofIdentifiabilityCase};
 use crate::derivations::dof::{count, identifiability, table, Identifiability};
@@ -38,28 +38,29 @@ pub(super) fn check_count(b: &ResultBuilder, case: &DofCountCase) -> Result<Vec<
         let agree = printed_u == Some(BigInt::from(c.unknowns))
             && printed_m == Some(BigInt::from(c.measurements));
         let r = identifiability(ex.points, ex.frames, case.seed)?;
-        let evidence = rank_evidence(
-            Evidence::new("the paper's count evaluated exactly; Jacobian rank at a generic rational scene as the real answer")
-                .with("points", ex.points)
-                .with("frames", ex.frames)
-                .with("balance (measurements − unknowns)", c.balance),
-            &r,
-        );
-        out.push(b.result(
-            &ex.claim,
-            None,
-            Verdict::holds(agree),
-            format!(
-                "unknowns {} = measurements {}",
-                ex.unknowns, ex.measurements
-            ),
-            format!(
-                "unknowns {} = measurements {}; Jacobian rank {} of {} parameters (deficiency {})",
-                c.unknowns, c.measurements, r.exact_rank, r.parameters, r.deficiency
-            ),
-            Some(Tolerance::exact("integer counts")),
-            evidence,
-        ));
+        let result = b
+            .claim(&ex.claim)
+            .printed("unknowns", &ex.unknowns)
+            .printed("measurements", &ex.measurements)
+            .computed("unknowns", c.unknowns)
+            .computed("measurements", c.measurements)
+            .computed("jacobian rank", r.exact_rank)
+            .computed("parameters", r.parameters)
+            .computed("deficiency", r.deficiency)
+            .tolerance(Tolerance::exact("integer counts"))
+            .power(Power::exact_value(&format!(
+                "only unknowns {} and measurements {} pass; any other printed integer is contradicted",
+                c.unknowns, c.measurements
+            )))
+            .evidence(rank_evidence(
+                Evidence::new("the paper's count evaluated exactly; Jacobian rank at a generic rational scene as the real answer")
+                    .with("points", ex.points)
+                    .with("frames", ex.frames)
+                    .with("balance (measurements − unknowns)", c.balance),
+                &r,
+            ))
+            .verdict(Verdict::holds(agree));
+        out.push(result);
     }
     Ok(out)
 }
@@ -167,7 +168,7 @@ pub(super) fn check_identifiability(
             cells(&identifiable_unbalanced),
             cells(&balanced_deficient)
         ),
-            Some(Tolerance::exact("integer counts and exact ranks")),
+            Some(OldTolerance::exact("integer counts and exact ranks")),
             Evidence::new(
                 "printed formulas evaluated exactly over the grid; exact Jacobian rank per cell",
             )
@@ -211,7 +212,7 @@ pub(super) fn check_identifiability(
             case.minimum.frames,
             claimed_ok
         ),
-        Some(Tolerance::exact("exact ranks")),
+        Some(OldTolerance::exact("exact ranks")),
         Evidence::new("deficiency 0 (finitely many solutions near a generic scene) decided by exact Jacobian rank over the grid")
             .with("grid", &grid_desc)
             .with("identifiable cells (p ≥ 2)", cells(&identifiable))
@@ -240,7 +241,7 @@ pub(super) fn check_identifiability(
             "k = 2 is rank-deficient for every p in the grid, although the count balances for {}",
             cells(&balanced_two)
         ),
-            Some(Tolerance::exact("exact ranks")),
+            Some(OldTolerance::exact("exact ranks")),
             Evidence::new("exact Jacobian rank for k = 2 and each p of the grid")
                 .with("grid", &grid_desc)
                 .with("deficiency by p", deficiencies.join("; ")),

@@ -3,7 +3,7 @@
 
 use nalgebra::Vector2;
 
-use super::{ClaimResult, Evidence, ResultBuilder, Tolerance, Verdict};
+use super::{ClaimResult, Evidence, OldTolerance, ResultBuilder, Verdict};
 use crate::algebra::sqrt_rounding;
 use crate::cases::IdentityCensusCase;
 use crate::derivations::identity::{epipolar_residual, paper_tests, rank_quadruples, smallest_c};
@@ -138,7 +138,7 @@ pub(super) fn check(b: &ResultBuilder, case: &IdentityCensusCase) -> Result<Vec<
              tried: the line is T's epipolar line, whatever c",
             below(true_max)
         ),
-        Some(Tolerance {
+        Some(OldTolerance {
             value: below(3.0 * sqrt_rounding()),
             source: "three depths √(e² − eᵢ²) at their rounding level √(64ε)".into(),
         }),
@@ -167,7 +167,7 @@ pub(super) fn check(b: &ResultBuilder, case: &IdentityCensusCase) -> Result<Vec<
             epi_first,
             same_first
         ),
-        Some(Tolerance {
+        Some(OldTolerance {
             value: below(3.0 * sqrt_rounding()),
             source: "three depths √(e² − eᵢ²) at their rounding level √(64ε)".into(),
         }),
@@ -183,7 +183,7 @@ pub(super) fn check(b: &ResultBuilder, case: &IdentityCensusCase) -> Result<Vec<
              residual) and in {paper_first} (the paper's distance); median residual of the runner-up {}",
             sig(median(&margins))
         ),
-        Some(Tolerance::exact("ranking")),
+        Some(OldTolerance::exact("ranking")),
         ev,
     ));
     out.push(b.result(
@@ -197,7 +197,7 @@ pub(super) fn check(b: &ResultBuilder, case: &IdentityCensusCase) -> Result<Vec<
              off frame 1, no quadratic",
             below(five_true_max)
         ),
-        Some(Tolerance {
+        Some(OldTolerance {
             value: below(3.0 * sqrt_rounding()),
             source: "three depths √(e² − eᵢ²) at their rounding level √(64ε)".into(),
         }),

@@ -8,7 +8,7 @@
 use nalgebra::Vector2;
 
 use super::figure::{clip_line, Figure, Layer, Plot, Shape, Style};
-use super::{ClaimResult, Evidence, ResultBuilder, Tolerance, Verdict};
+use super::{ClaimResult, Evidence, OldTolerance, ResultBuilder, Verdict};
 use crate::algebra::{exact_rank, sqrt_rounding};
 use crate::cases::{DebugAttempt, IdentityExampleCase, Printed};
 use crate::derivations::identity::{b_squared, paper_tests, smallest_c, PaperTest};
@@ -177,7 +177,7 @@ pub(super) fn check(b: &ResultBuilder, case: &IdentityExampleCase) -> Result<Vec
             best_ok,
             if unknown.is_empty() { String::new() } else { format!(" ({})", unknown.join(", ")) }
         ),
-        Some(Tolerance {
+        Some(OldTolerance {
             value: "half a unit in the table's sixth significant digit, plus twice the coordinates' ±5e-7".into(),
             source: "the printed digits".into(),
         }),
@@ -262,7 +262,7 @@ pub(super) fn check(b: &ResultBuilder, case: &IdentityExampleCase) -> Result<Vec
             sig_list(&real.eigenvalues),
             if bad.is_empty() { String::new() } else { format!("; mismatches: {}", bad.join(", ")) }
         ),
-        Some(Tolerance {
+        Some(OldTolerance {
             value: "half a unit in the sixth significant digit".into(),
             source: "the printed digits".into(),
         }),
@@ -413,7 +413,7 @@ pub(super) fn check(b: &ResultBuilder, case: &IdentityExampleCase) -> Result<Vec
             per_quantity.iter().map(|x| x.0).sum::<usize>(),
             per_quantity.iter().map(|x| x.1).sum::<usize>()
         ),
-        Some(Tolerance {
+        Some(OldTolerance {
             value: "half a unit in the sixth significant digit, plus the propagated rounding of the inputs".into(),
             source: "frames ±5e-7; d0 to six significant digits".into(),
         }),
@@ -593,7 +593,7 @@ pub(super) fn check(b: &ResultBuilder, case: &IdentityExampleCase) -> Result<Vec
             both_generic,
             generic_zero.len()
         ),
-        Some(Tolerance {
+        Some(OldTolerance {
             value: below(level),
             source: "three depths √(e² − eᵢ²) at rounding level, times the image size".into(),
         }),
@@ -617,7 +617,7 @@ pub(super) fn check(b: &ResultBuilder, case: &IdentityExampleCase) -> Result<Vec
             sig(by_epi.get(1).map_or(f64::NAN, |x| x.2)),
             by_paper[0].0 == by_epi[0].0
         ),
-        Some(Tolerance {
+        Some(OldTolerance {
             value: below(level),
             source: "the procedure's rounding level".into(),
         }),
@@ -808,7 +808,7 @@ pub(super) fn check(b: &ResultBuilder, case: &IdentityExampleCase) -> Result<Vec
              those lines clipped to the box [−5, 5]²; the others are off it by the distances in the evidence)",
             on_line.0, on_line.1
         ),
-        Some(Tolerance {
+        Some(OldTolerance {
             value: "the printed Pa, Pb's half units times the lever arm, plus ±5e-7".into(),
             source: "six significant digits of Pa and Pb; six decimals of the panel".into(),
         }),

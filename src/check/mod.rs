@@ -16,148 +16,14 @@ pub use audit::{audit as audit_formulas, audit_all, counts as audit_counts, Audi
 pub use noise::{run_study, study_of};
 pub use twofold::{audit as audit_twofold, TwofoldAudit};
 
-use serde::Serialize;
+mod result;
+pub use result::{
+    ClaimResult, Evidence, Power, PowerKind, Quantity, Real, Tolerance, ToleranceSource, Value,
+    Verdict,
+};
 
 use crate::cases::{Case, CaseCheck, ClaimRef};
 use crate::error::Result;
-
-/// The verdicts (see DESIGN.md).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize)]
-#[serde(rename_all = "kebab-case")]
-pub enum Verdict {
-    /// Agrees within the printed precision.
-    Reproduced,
-    /// Agrees once the rounding of the printed input data is propagated.
-    ReproducedWithinRounding,
-    /// A symbolic identity holds exactly over ℚ.
-    IdentityVerified,
-    /// The printed formula or number is wrong; the corrected form is stated and verified.
-    Erratum,
-    /// A noise claim, checked against a seeded distribution.
-    Statistical,
-    /// The paper lacks the data.
-    NotReproducible,
-    /// The recomputation contradicts the claim.
-    Contradicted,
-}
-
-impl Verdict {
-    /// All verdicts, in report order.
-    pub const ALL: [Verdict; 7] = [
-        Verdict::Reproduced,
-        Verdict::ReproducedWithinRounding,
-        Verdict::IdentityVerified,
-        Verdict::Erratum,
-        Verdict::Statistical,
-        Verdict::NotReproducible,
-        Verdict::Contradicted,
-    ];
-
-    /// `Reproduced` when a claim decided by computation holds, `Contradicted` when not.
-    pub fn holds(ok: bool) -> Verdict {
-        if ok {
-            Verdict::Reproduced
-        } else {
-            Verdict::Contradicted
-        }
-    }
-
-    /// The kebab-case name.
-    pub fn name(&self) -> &'static str {
-        match self {
-            Verdict::Reproduced => "reproduced",
-            Verdict::ReproducedWithinRounding => "reproduced-within-rounding",
-            Verdict::IdentityVerified => "identity-verified",
-            Verdict::Erratum => "erratum",
-            Verdict::Statistical => "statistical",
-            Verdict::NotReproducible => "not-reproducible",
-            Verdict::Contradicted => "contradicted",
-        }
-    }
-}
-
-/// How close is close enough, and why.
-#[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct Tolerance {
-    /// The bound (formatted), or "exact".
-    pub value: String,
-    /// Where it comes from.
-    pub source: String,
-}
-
-impl Tolerance {
-    /// Exact comparison (integers, rationals, polynomials).
-    pub fn exact(why: &str) -> Self {
-        Tolerance {
-            value: "exact".into(),
-            source: why.into(),
-        }
-    }
-}
-
-/// One named piece of evidence.
-#[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct EvidenceItem {
-    /// What it is.
-    pub name: String,
-    /// Its value, formatted.
-    pub value: String,
-}
-
-/// How a verdict was reached.
-#[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct Evidence {
-    /// The method.
-    pub method: String,
-    /// Supporting values, in order.
-    pub details: Vec<EvidenceItem>,
-}
-
-impl Evidence {
-    /// Evidence with a method and no details yet.
-    pub fn new(method: &str) -> Self {
-        Evidence {
-            method: method.into(),
-            details: Vec::new(),
-        }
-    }
-
-    /// Add a detail.
-    pub fn with(mut self, name: &str, value: impl ToString) -> Self {
-        self.details.push(EvidenceItem {
-            name: name.into(),
-            value: value.to_string(),
-        });
-        self
-    }
-}
-
-/// The outcome for one claim.
-#[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct ClaimResult {
-    /// Unique result id: the CLAIMS.md id, with a `/suffix` when one claim has several results.
-    pub id: String,
-    /// The CLAIMS.md id.
-    pub claim: String,
-    /// The case it came from.
-    pub case: String,
-    /// Paper section.
-    pub section: String,
-    /// Line range in the paper's source.
-    pub lines: String,
-    /// The paper's words.
-    pub quote: String,
-    /// The verdict.
-    pub verdict: Verdict,
-    /// What the paper printed or claimed.
-    pub paper_value: String,
-    /// What the computation gives.
-    pub computed_value: String,
-    /// The tolerance, when a comparison of numbers was made.
-    pub tolerance: Option<Tolerance>,
-    /// How.
-    pub evidence: Evidence,
-}
 
 /// Builds results (and figures) for one case.
 pub(crate) struct ResultBuilder<'a> {
@@ -178,7 +44,22 @@ impl<'a> ResultBuilder<'a> {
         self.figures.borrow_mut().push(f);
     }
 
-    /// A result for `claim`, with `suffix` making the id unique when needed.
+    /// Start a result for `claim`.
+    pub(crate) fn claim<'b>(&'b self, claim: &'b ClaimRef) -> ClaimBuilder<'b> {
+        ClaimBuilder {
+            case: self.case,
+            claim,
+            suffix: None,
+            printed: Vec::new(),
+            computed: Vec::new(),
+            tolerance: None,
+            power: None,
+            correction: None,
+            evidence: Evidence::new(""),
+        }
+    }
+
+    /// A result in the old shape: prose for the paper's and the computed value, no power.
     #[allow(clippy::too_many_arguments)]
     pub(crate) fn result(
         &self,
@@ -187,11 +68,129 @@ impl<'a> ResultBuilder<'a> {
         verdict: Verdict,
         paper_value: String,
         computed_value: String,
-        tolerance: Option<Tolerance>,
+        tolerance: Option<OldTolerance>,
         evidence: Evidence,
     ) -> ClaimResult {
+        let mut c = self
+            .claim(claim)
+            .printed("paper", Value::label(paper_value))
+            .computed("computed", Value::label(computed_value))
+            .evidence(evidence)
+            .power(Power::none("not yet stated"));
+        if let Some(s) = suffix {
+            c = c.suffix(s);
+        }
+        if let Some(t) = tolerance {
+            c = c.tolerance(Tolerance {
+                bound: None,
+                source: ToleranceSource::Exact,
+                how: format!("{} ({})", t.value, t.source),
+            });
+        }
+        c.verdict_unchecked(verdict)
+    }
+}
+
+/// The old tolerance shape: prose.
+pub(crate) struct OldTolerance {
+    pub value: String,
+    pub source: String,
+}
+
+impl OldTolerance {
+    pub fn exact(why: &str) -> Self {
+        OldTolerance {
+            value: "exact".into(),
+            source: why.into(),
+        }
+    }
+}
+
+/// One claim result under construction.
+pub(crate) struct ClaimBuilder<'b> {
+    case: &'b Case,
+    claim: &'b ClaimRef,
+    suffix: Option<String>,
+    printed: Vec<Quantity>,
+    computed: Vec<Quantity>,
+    tolerance: Option<Tolerance>,
+    power: Option<Power>,
+    correction: Option<String>,
+    evidence: Evidence,
+}
+
+impl ClaimBuilder<'_> {
+    /// Make the id `claim/suffix`.
+    pub(crate) fn suffix(mut self, s: &str) -> Self {
+        self.suffix = Some(s.into());
+        self
+    }
+
+    /// What the paper printed.
+    pub(crate) fn printed(mut self, name: &str, v: impl Into<Value>) -> Self {
+        self.printed.push(Quantity::new(name, v));
+        self
+    }
+
+    /// What the computation gives.
+    pub(crate) fn computed(mut self, name: &str, v: impl Into<Value>) -> Self {
+        self.computed.push(Quantity::new(name, v));
+        self
+    }
+
+    /// The tolerance of the comparison.
+    pub(crate) fn tolerance(mut self, t: Tolerance) -> Self {
+        self.tolerance = Some(t);
+        self
+    }
+
+    /// The negative control.
+    pub(crate) fn power(mut self, p: Power) -> Self {
+        self.power = Some(p);
+        self
+    }
+
+    /// The corrected form of an erratum.
+    #[allow(dead_code)]
+    pub(crate) fn correction(mut self, c: impl Into<String>) -> Self {
+        self.correction = Some(c.into());
+        self
+    }
+
+    /// The method.
+    pub(crate) fn method(mut self, m: &str) -> Self {
+        self.evidence.method = m.into();
+        self
+    }
+
+    /// One piece of evidence.
+    pub(crate) fn detail(mut self, name: &str, v: impl Into<Value>) -> Self {
+        self.evidence.details.push(Quantity::new(name, v));
+        self
+    }
+
+    /// The whole evidence at once.
+    pub(crate) fn evidence(mut self, e: Evidence) -> Self {
+        self.evidence = e;
+        self
+    }
+
+    /// Finish with `verdict`. A positive verdict whose power is weak (or missing) becomes
+    /// `inconclusive`: a check that could not have failed confirms nothing.
+    pub(crate) fn verdict(self, verdict: Verdict) -> ClaimResult {
+        let weak = self.power.as_ref().is_none_or(|p| p.weak);
+        let v = if verdict.is_positive() && weak {
+            Verdict::Inconclusive
+        } else {
+            verdict
+        };
+        self.verdict_unchecked(v)
+    }
+
+    fn verdict_unchecked(self, verdict: Verdict) -> ClaimResult {
+        let claim = self.claim;
         ClaimResult {
-            id: match suffix {
+            id: match &self.suffix {
                 Some(s) => format!("{}/{s}", claim.claim),
                 None => claim.claim.clone(),
             },
@@ -201,10 +200,14 @@ impl<'a> ResultBuilder<'a> {
             lines: claim.lines.clone(),
             quote: claim.quote.clone(),
             verdict,
-            paper_value,
-            computed_value,
-            tolerance,
-            evidence,
+            printed: self.printed,
+            computed: self.computed,
+            tolerance: self.tolerance,
+            power: self
+                .power
+                .unwrap_or_else(|| Power::none("no negative control")),
+            correction: self.correction,
+            evidence: self.evidence,
         }
     }
 }
@@ -244,15 +247,15 @@ fn dispatch(b: &ResultBuilder, case: &Case) -> Result<Vec<ClaimResult>> {
             .claims
             .iter()
             .map(|m| {
-                b.result(
-                    &m.claim,
-                    None,
-                    Verdict::NotReproducible,
-                    m.printed.clone(),
-                    format!("missing: {}", m.missing.join("; ")),
-                    None,
-                    Evidence::new("nothing to compute: the paper does not print the data"),
-                )
+                let mut r = b
+                    .claim(&m.claim)
+                    .printed("paper", Value::label(m.printed.clone()))
+                    .method("nothing to compute: the paper does not print the data")
+                    .power(Power::none("no computation to control"));
+                for missing in &m.missing {
+                    r = r.detail("missing", Value::label(missing.clone()));
+                }
+                r.verdict(Verdict::NotReproducible)
             })
             .collect()),
     }
@@ -288,8 +291,9 @@ pub fn run_all_full(
     Ok((out, figures))
 }
 
-/// A restatement is contradicted when a result of a claim it restates is; reproduced when all
-/// of them hold; not reproducible when it lies outside the paper's scope.
+/// A restatement is contradicted when a result of a claim it restates is; it holds (with the
+/// weakest verdict among them) when all of them hold; not reproducible when one is missing or
+/// it lies outside the paper's scope.
 fn restatements(
     b: &ResultBuilder,
     case: &crate::cases::RestatementsCase,
@@ -297,65 +301,74 @@ fn restatements(
 ) -> Vec<ClaimResult> {
     case.items
         .iter()
-        .map(|item| {
-            if let Some(why) = &item.out_of_scope {
-                return b.result(
-                    &item.claim,
-                    Some(&item.id),
-                    Verdict::NotReproducible,
-                    item.claim.quote.clone(),
-                    format!("outside the paper's scope: {why}"),
-                    None,
-                    Evidence::new("no computation: the statement concerns another model"),
-                );
-            }
-            let mapped: Vec<&ClaimResult> = results
-                .iter()
-                .filter(|r| item.restates.contains(&r.claim))
-                .collect();
-            let against: Vec<String> = mapped
-                .iter()
-                .filter(|r| r.verdict == Verdict::Contradicted)
-                .map(|r| r.id.clone())
-                .collect();
-            let missing: Vec<&String> = item
-                .restates
-                .iter()
-                .filter(|id| !mapped.iter().any(|r| &r.claim == *id))
-                .collect();
-            let verdict = if !against.is_empty() {
-                Verdict::Contradicted
-            } else if missing.is_empty() {
-                Verdict::Reproduced
-            } else {
-                Verdict::NotReproducible
-            };
-            let mut ev = Evidence::new("the verdicts of the results of the claims restated");
-            for r in &mapped {
-                ev = ev.with(&r.id, r.verdict.name());
-            }
-            b.result(
-                &item.claim,
-                Some(&item.id),
-                verdict,
-                item.claim.quote.clone(),
-                if !against.is_empty() {
-                    format!("contradicted by {}", against.join(", "))
-                } else if missing.is_empty() {
-                    format!("holds: {}", item.restates.join(", "))
-                } else {
-                    format!(
-                        "missing results for {}",
-                        missing
-                            .iter()
-                            .map(|s| s.as_str())
-                            .collect::<Vec<_>>()
-                            .join(", ")
-                    )
-                },
-                None,
-                ev,
-            )
-        })
+        .map(|item| restatement(b, item, results))
         .collect()
+}
+
+fn restatement(
+    b: &ResultBuilder,
+    item: &crate::cases::Restatement,
+    results: &[ClaimResult],
+) -> ClaimResult {
+    let r = b
+        .claim(&item.claim)
+        .suffix(&item.id)
+        .printed("statement", Value::label(item.claim.quote.clone()));
+    if let Some(why) = &item.out_of_scope {
+        return r
+            .computed("outside the paper's scope", Value::label(why.clone()))
+            .method("no computation: the statement concerns another model")
+            .power(Power::none("outside the paper's model"))
+            .verdict(Verdict::NotReproducible);
+    }
+    let mapped: Vec<&ClaimResult> = results
+        .iter()
+        .filter(|r| item.restates.contains(&r.claim))
+        .collect();
+    let missing = item
+        .restates
+        .iter()
+        .any(|id| !mapped.iter().any(|r| &r.claim == id));
+    let verdict = restated_verdict(mapped.iter().map(|r| r.verdict), missing);
+    let mut r = r
+        .method("the verdicts of the results of the claims restated")
+        .power(Power::mutant(
+            true,
+            "any restated result that is contradicted, fails or is missing turns this one",
+        ));
+    for m in &mapped {
+        r = r.computed(&m.id, Value::label(m.verdict.name()));
+    }
+    r.verdict(verdict)
+}
+
+/// The verdict of a restatement from the verdicts of what it restates: the worst of them, by
+/// a fixed order (contradicted, then statistical failure, inconclusive, not reproducible, then
+/// the positive ones from the weakest); an erratum in a restated formula does not make the
+/// restated statement false.
+pub(crate) fn restated_verdict(verdicts: impl Iterator<Item = Verdict>, missing: bool) -> Verdict {
+    const WORST_FIRST: [Verdict; 9] = [
+        Verdict::Contradicted,
+        Verdict::StatisticalFails,
+        Verdict::Inconclusive,
+        Verdict::NotReproducible,
+        Verdict::HoldsGenerically,
+        Verdict::StatisticalHolds,
+        Verdict::ReproducedWithinRounding,
+        Verdict::Reproduced,
+        Verdict::IdentityVerified,
+    ];
+    let seen: Vec<Verdict> = verdicts.collect();
+    if missing || seen.is_empty() {
+        return Verdict::NotReproducible;
+    }
+    let worst = WORST_FIRST
+        .iter()
+        .find(|v| seen.contains(v))
+        .copied()
+        .unwrap_or(Verdict::Reproduced);
+    match worst {
+        Verdict::IdentityVerified | Verdict::ReproducedWithinRounding => Verdict::Reproduced,
+        v => v,
+    }
 }

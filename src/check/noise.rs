@@ -1,7 +1,7 @@
 //! Claims of the noise studies (§2, §3): where the paper's runs fall in seeded distributions.
 
 use super::figure::{ecdf, Figure, Layer, Plot, Shape, Style};
-use super::{ClaimResult, Evidence, ResultBuilder, Tolerance, Verdict};
+use super::{ClaimResult, Evidence, OldTolerance, ResultBuilder, Verdict};
 use crate::cases::{
     Direction, NoiseLevel, NoiseStudyCase, OverEdges, Printed, Quantity, StatementSubject,
 };
@@ -99,7 +99,7 @@ pub(super) fn check(b: &ResultBuilder, case: &NoiseStudyCase) -> Result<Vec<Clai
                     Printed::join(&case.body.squares)
                 ),
                 format!("squares of the printed lengths: {}", sig_list(&truth)),
-                Some(Tolerance {
+                Some(OldTolerance {
                     value: sig_list(
                         &case
                             .body
@@ -431,7 +431,7 @@ impl Judge<'_> {
         let result = b.result(
             &lv.claim,
             suffix(None).as_deref(),
-            Verdict::Statistical,
+            Verdict::StatisticalHolds,
             paper_value,
             summary.join("; "),
             None,

@@ -3,7 +3,7 @@
 use num_rational::BigRational;
 
 use super::figure::{central_window, thin, Figure, Layer, Plot, Shape, Style};
-use super::{ClaimResult, Evidence, ResultBuilder, Tolerance, Verdict};
+use super::{ClaimResult, Evidence, OldTolerance, ResultBuilder, Verdict};
 use crate::cases::{P3f3ExampleCase, Printed};
 use crate::derivations::p3f3::{match_solutions, real_solutions_from_coordinates, validate};
 use crate::derivations::rounding::{monte_carlo, quantile, witness, RoundingBox};
@@ -75,7 +75,7 @@ pub(super) fn check_example(b: &ResultBuilder, case: &P3f3ExampleCase) -> Result
                 .collect::<Vec<_>>()
                 .join(", ")
         ),
-        Some(Tolerance::exact(
+        Some(OldTolerance::exact(
             "exact rational squares of the printed digits",
         )),
         Evidence::new("exact arithmetic on the printed digits"),
@@ -236,7 +236,7 @@ pub(super) fn check_example(b: &ResultBuilder, case: &P3f3ExampleCase) -> Result
                 None => "no point of the rounding box gives both printed solutions".into(),
             }
         ),
-        Some(Tolerance {
+        Some(OldTolerance {
             value: tols
                 .iter()
                 .map(|t| triple(t))
@@ -297,7 +297,7 @@ pub(super) fn check_example(b: &ResultBuilder, case: &P3f3ExampleCase) -> Result
              within the rounding box an exact projection of the body exists: {fits}",
             sig_list(&f_at_printed)
         ),
-        Some(Tolerance {
+        Some(OldTolerance {
             value: "±0.005".into(),
             source: "half a unit in the second decimal of the figure coordinates".into(),
         }),
@@ -425,7 +425,7 @@ pub(super) fn check_example(b: &ResultBuilder, case: &P3f3ExampleCase) -> Result
             .map(|(t, v)| format!("{t}: {}", v.clone().unwrap_or_else(|| "feasible".into())))
             .collect::<Vec<_>>()
             .join("; "),
-        Some(Tolerance::exact("comparison with the printed projections")),
+        Some(OldTolerance::exact("comparison with the printed projections")),
         Evidence::new("the rules of §2.2 (no negative square, no edge shorter than a projection) against the squared projections of the printed figure")
             .with("largest projections (PQ², QR², RP²)", sig_list(&[0, 1, 2].map(|e| proj.iter().map(|p| p[e]).fold(0.0, f64::max))))
             .with("roots recomputed at the printed coordinates", recomputed.join("; ")),
@@ -486,7 +486,7 @@ pub(super) fn check_census(
                     "0/1/2 feasible edge solutions in {}/{}/{} scenes, never more; the degenerate scenes give infinitely many: {infinitely}",
                     c.feasible_counts[0], c.feasible_counts[1], c.feasible_counts[2]
                 ),
-                Some(Tolerance::exact("counts of roots; degeneracy detected at rounding level")),
+                Some(OldTolerance::exact("counts of roots; degeneracy detected at rounding level")),
                 ev.clone(),
             )
         })
@@ -520,7 +520,7 @@ pub(super) fn check_p3f4_census(
                     "unique and exact in {} of {} generic scenes; rank {} for rotations about the viewing axis, {} about a fixed generic axis",
                     c.truth_found, c.trials, c.viewing_axis_rank, c.fixed_axis_rank
                 ),
-                Some(Tolerance::exact("numerical rank with the rounding-noise floor of the entries")),
+                Some(OldTolerance::exact("numerical rank with the rounding-noise floor of the entries")),
                 ev.clone(),
             )
         })

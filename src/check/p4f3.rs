@@ -7,7 +7,7 @@ use num_traits::ToPrimitive;
 
 use super::figure::{Figure, Layer, Plot, Shape, Style};
 use super::noise::Judge;
-use super::{ClaimResult, Evidence, ResultBuilder, Tolerance, Verdict};
+use super::{ClaimResult, Evidence, OldTolerance, ResultBuilder, Verdict};
 use crate::algebra::{exact_solve, svd_rank};
 use crate::cases::{CensusCase, P4f3ExampleCase, Printed};
 use crate::derivations::noise::{models, run_level, stream, LevelResult, Study, StudySolver};
@@ -77,7 +77,7 @@ pub(super) fn check_example(b: &ResultBuilder, case: &P4f3ExampleCase) -> Result
             sig(volume),
             sig_list(&real.eigenvalues)
         ),
-        Some(Tolerance {
+        Some(OldTolerance {
             value: format!("half a unit in the {digits}th significant digit"),
             source: "the program's printing (trailing zeros dropped)".into(),
         }),
@@ -139,7 +139,7 @@ pub(super) fn check_example(b: &ResultBuilder, case: &P4f3ExampleCase) -> Result
              within the rounding box exact views exist: {fits}",
             sig(at_printed.iter().fold(0.0_f64, |a, v| a.max(v.abs())))
         ),
-        Some(Tolerance {
+        Some(OldTolerance {
             value: format!("±{}", sig(coord_half)),
             source: "half a unit in the second decimal of the figure coordinates".into(),
         }),
@@ -271,7 +271,7 @@ pub(super) fn check_example(b: &ResultBuilder, case: &P4f3ExampleCase) -> Result
              sign: coefficients · x + constant = 0); every entry lies within the rounding enclosure: {}",
             outside.is_empty()
         ),
-        Some(Tolerance {
+        Some(OldTolerance {
             value: "interval enclosure over the figure's rounding box, plus half a unit of the printed entry".into(),
             source: "figure coordinates ±0.005; matrix printed to six significant digits".into(),
         }),
@@ -352,7 +352,7 @@ pub(super) fn check_example(b: &ResultBuilder, case: &P4f3ExampleCase) -> Result
              the printed x: {solve_ok}; x equals the table's squares digit for digit: {table_equal}",
             sig_list(&exact_f)
         ),
-        Some(Tolerance {
+        Some(OldTolerance {
             value: sig_list(&bounds),
             source: "first-order propagation |A⁻¹|(|δA||x| + |δb|) of half a unit in the matrix's sixth significant digit, plus the printed x's half unit".into(),
         }),
@@ -508,7 +508,7 @@ pub(super) fn check_example(b: &ResultBuilder, case: &P4f3ExampleCase) -> Result
     out.push(b.result(
         &case.conditioning,
         Some("conditioning"),
-        Verdict::Statistical,
+        Verdict::StatisticalHolds,
         "the linear system is sensitive to measurement errors".into(),
         summary.join("; "),
         None,
@@ -577,7 +577,7 @@ pub(super) fn check_census(b: &ResultBuilder, case: &CensusCase) -> Result<Vec<C
                 "unique and exact in {} of {} generic scenes; rank {} of 6 for motions about the viewing axis",
                 c.truth_found, c.trials, c.viewing_axis_rank
             ),
-            Some(Tolerance::exact("numerical rank with the rounding-noise floor of the entries")),
+            Some(OldTolerance::exact("numerical rank with the rounding-noise floor of the entries")),
             ev.clone(),
         ));
         if claim.claim == "p4f3-unique" {
@@ -591,7 +591,7 @@ pub(super) fn check_census(b: &ResultBuilder, case: &CensusCase) -> Result<Vec<C
                      whatever the motion: infinitely many solutions of the linear system, a case the paper does not name",
                     c.planar_ranks, c.planar_trials
                 ),
-                Some(Tolerance::exact("numerical rank with the rounding-noise floor of the entries")),
+                Some(OldTolerance::exact("numerical rank with the rounding-noise floor of the entries")),
                 ev.clone(),
             ));
         }

@@ -4,7 +4,7 @@
 use nalgebra::Vector3;
 
 use super::figure::{Figure, Layer, Plot, Shape, Style};
-use super::{ClaimResult, Evidence, ResultBuilder, Tolerance, Verdict};
+use super::{ClaimResult, Evidence, OldTolerance, ResultBuilder, Verdict};
 use crate::cases::{Printed, TwoFramesCase};
 use crate::derivations::dof::identifiability;
 use crate::derivations::two_frames::{
@@ -131,7 +131,7 @@ pub(super) fn check(b: &ResultBuilder, case: &TwoFramesCase) -> Result<Vec<Claim
                 .collect::<Vec<_>>()
                 .join(", "),
             computed,
-            Some(Tolerance {
+            Some(OldTolerance {
                 value: format!("±{}", sig(half)),
                 source: "half a unit in the last printed decimal of the coordinates".into(),
             }),
@@ -205,7 +205,7 @@ pub(super) fn check(b: &ResultBuilder, case: &TwoFramesCase) -> Result<Vec<Claim
             truth_found,
             case.trials
         ),
-        Some(Tolerance::exact("reprojection at rounding level; shapes compared by pairwise distances")),
+        Some(OldTolerance::exact("reprojection at rounding level; shapes compared by pairwise distances")),
         ev.clone(),
     ));
     out.push(b.result(
@@ -218,7 +218,7 @@ pub(super) fn check(b: &ResultBuilder, case: &TwoFramesCase) -> Result<Vec<Claim
             case.points,
             case.points.max(4)
         ),
-        Some(Tolerance::exact("exact rank; reprojection at rounding level")),
+        Some(OldTolerance::exact("exact rank; reprojection at rounding level")),
         ev,
     ));
 
@@ -241,7 +241,7 @@ pub(super) fn check(b: &ResultBuilder, case: &TwoFramesCase) -> Result<Vec<Claim
             redundant,
             r4.deficiency
         ),
-        Some(Tolerance::exact("exact rank over ℚ at a rational scene")),
+        Some(OldTolerance::exact("exact rank over ℚ at a rational scene")),
         Evidence::new("exact Jacobian ranks (§2.1 parametrisation) at seeded rational scenes of three and four points")
             .with("seed", case.seed),
     ));
@@ -302,7 +302,7 @@ pub(super) fn check(b: &ResultBuilder, case: &TwoFramesCase) -> Result<Vec<Claim
         verdict,
         "infinitely many 3-D curves fit two projections".into(),
         computed,
-        Some(Tolerance::exact("reprojection at rounding level")),
+        Some(OldTolerance::exact("reprojection at rounding level")),
         ev,
     ));
     Ok(out)

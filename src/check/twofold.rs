@@ -2,7 +2,7 @@
 
 use num_traits::One;
 
-use super::{ClaimResult, Evidence, ResultBuilder, Tolerance, Verdict};
+use super::{ClaimResult, Evidence, OldTolerance, ResultBuilder, Verdict};
 use crate::algebra::{agree_at_random_points, Poly};
 use crate::cases::{parse_signs, TwofoldCase};
 use crate::derivations::twofold::{relation_census, sign_class_product, twofold_squared};
@@ -101,7 +101,7 @@ pub(super) fn check(b: &ResultBuilder, case: &TwofoldCase) -> Result<Vec<ClaimRe
             census.held,
             census.none_held
         ),
-        Some(Tolerance::exact(
+        Some(OldTolerance::exact(
             "sign matching of depth differences (they sum to zero, so all-equal signs cannot occur)",
         )),
         Evidence::new("seeded random triangles under random rotations; signs of z_Q−z_P, z_R−z_Q, z_P−z_R compared with each pattern up to a global sign")
@@ -117,7 +117,7 @@ pub(super) fn check(b: &ResultBuilder, case: &TwofoldCase) -> Result<Vec<ClaimRe
         a.verdict,
         format!("{} = 0", a.transcription),
         format!("{} = 0", a.derived),
-        Some(Tolerance::exact("polynomial identity over ℚ")),
+        Some(OldTolerance::exact("polynomial identity over ℚ")),
         Evidence::new("symbolic twofold squaring with √A, √B, √C as variables reduced by (√X)² = X; exact expansion over ℚ; Schwartz–Zippel evaluation as a second check")
             .with("derived / printed, per sign pattern", format!("{:?}", a.ratios.iter().map(|r| r.clone().unwrap_or_else(|| "not a multiple".into())).collect::<Vec<_>>()))
             .with("product over the four sign classes / printed", a.product_ratio.clone().unwrap_or_else(|| "not a multiple".into()))

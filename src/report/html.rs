@@ -4,6 +4,7 @@
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
 
+use super::values::{computed_text, power_text, printed_text, tolerance_text, value_text};
 use super::{plot_svg, Report};
 use crate::check::figure::Figure;
 use crate::check::{ClaimResult, Verdict};
@@ -64,8 +65,9 @@ article { border: 1px solid #e2e2e2; border-radius: 6px; padding: .6rem 1rem; ma
 article h3 { font-size: 1.02rem; margin: .2rem 0 .4rem; font-family: ui-monospace, monospace; }
 blockquote { margin: .3rem 0; padding-left: .8rem; border-left: 3px solid #bbb; color: #444; font-style: italic; }
 .badge { display: inline-block; padding: .05rem .5rem; border-radius: 1rem; font-size: .8rem; font-family: system-ui, sans-serif; color: #fff; vertical-align: middle; }
-.v-reproduced { background: #2e7d32; } .v-reproduced-within-rounding { background: #558b2f; } .v-identity-verified { background: #1565c0; }
-.v-erratum { background: #ef6c00; } .v-statistical { background: #6a1b9a; } .v-not-reproducible { background: #757575; } .v-contradicted { background: #c62828; }
+.v-reproduced { background: #2e7d32; } .v-reproduced-within-rounding { background: #33691e; } .v-identity-verified { background: #1565c0; }
+.v-holds-generically { background: #00695c; } .v-statistical-holds { background: #4a148c; } .v-statistical-fails { background: #ad1457; }
+.v-erratum { background: #a84300; } .v-inconclusive { background: #5d4037; } .v-not-reproducible { background: #616161; } .v-contradicted { background: #c62828; }
 dl { display: grid; grid-template-columns: 9rem 1fr; gap: .15rem .8rem; margin: .3rem 0; } dt { color: #666; } dd { margin: 0; }
 details { margin-top: .4rem; } summary { cursor: pointer; color: #1565c0; }
 figure { margin: .8rem 0; } figcaption { color: #555; font-size: .88rem; margin-top: .2rem; }
@@ -122,15 +124,22 @@ fn claim_html(c: &ClaimResult, figures: &[&Figure]) -> String {
         escape(&c.lines)
     );
     s.push_str("<dl>");
-    let _ = write!(s, "<dt>paper</dt><dd>{}</dd>", escape(&c.paper_value));
-    let _ = write!(s, "<dt>computed</dt><dd>{}</dd>", escape(&c.computed_value));
+    let _ = write!(s, "<dt>paper</dt><dd>{}</dd>", escape(&printed_text(c)));
+    let _ = write!(s, "<dt>computed</dt><dd>{}</dd>", escape(&computed_text(c)));
     if let Some(t) = &c.tolerance {
         let _ = write!(
             s,
-            "<dt>tolerance</dt><dd>{} <span class=\"meta\">({})</span></dd>",
-            escape(&t.value),
-            escape(&t.source)
+            "<dt>tolerance</dt><dd>{}</dd>",
+            escape(&tolerance_text(t))
         );
+    }
+    let _ = write!(
+        s,
+        "<dt>power</dt><dd>{}</dd>",
+        escape(&power_text(&c.power))
+    );
+    if let Some(corr) = &c.correction {
+        let _ = write!(s, "<dt>corrected</dt><dd>{}</dd>", escape(corr));
     }
     s.push_str("</dl>");
     let _ = write!(
@@ -145,7 +154,7 @@ fn claim_html(c: &ClaimResult, figures: &[&Figure]) -> String {
                 s,
                 "<tr><th>{}</th><td>{}</td></tr>",
                 escape(&d.name),
-                escape(&d.value)
+                escape(&value_text(&d.value))
             );
         }
         s.push_str("</table>");
@@ -218,7 +227,7 @@ pub fn render(r: &Report) -> String {
             escape(&c.id),
             section_anchor(&c.section),
             escape(&c.section),
-            escape(&c.computed_value)
+            escape(&computed_text(c))
         );
     }
     s.push_str("</ul>");

@@ -2,6 +2,7 @@
 
 pub mod html;
 pub mod svg;
+pub mod values;
 
 pub use svg::plot_svg;
 
@@ -185,14 +186,18 @@ pub fn claim_markdown(c: &ClaimResult) -> String {
     let mut s = String::new();
     let _ = writeln!(s, "### `{}` — **{}**\n", c.id, c.verdict.name());
     let _ = writeln!(s, "> {} (lines {})\n", c.quote, c.lines);
-    let _ = writeln!(s, "- paper: {}", c.paper_value);
-    let _ = writeln!(s, "- computed: {}", c.computed_value);
+    let _ = writeln!(s, "- paper: {}", values::printed_text(c));
+    let _ = writeln!(s, "- computed: {}", values::computed_text(c));
     if let Some(t) = &c.tolerance {
-        let _ = writeln!(s, "- tolerance: {} ({})", t.value, t.source);
+        let _ = writeln!(s, "- tolerance: {}", values::tolerance_text(t));
+    }
+    let _ = writeln!(s, "- power: {}", values::power_text(&c.power));
+    if let Some(corr) = &c.correction {
+        let _ = writeln!(s, "- corrected: {corr}");
     }
     let _ = writeln!(s, "- method: {}", c.evidence.method);
     for d in &c.evidence.details {
-        let _ = writeln!(s, "  - {}: {}", d.name, d.value);
+        let _ = writeln!(s, "  - {}: {}", d.name, values::value_text(&d.value));
     }
     s.push('\n');
     s
@@ -516,7 +521,7 @@ pub fn errata_markdown(claims: &[ClaimResult]) -> String {
             c.verdict.name(),
             c.section,
             c.lines,
-            c.paper_value
+            values::printed_text(c)
         );
         for d in c
             .evidence
@@ -524,9 +529,12 @@ pub fn errata_markdown(claims: &[ClaimResult]) -> String {
             .iter()
             .filter(|d| d.name == "defect" || d.name == "should be")
         {
-            let _ = writeln!(s, "- {}: {}", d.name, d.value);
+            let _ = writeln!(s, "- {}: {}", d.name, values::value_text(&d.value));
         }
-        let _ = writeln!(s, "- found: {}", c.computed_value);
+        if let Some(corr) = &c.correction {
+            let _ = writeln!(s, "- corrected: {corr}");
+        }
+        let _ = writeln!(s, "- found: {}", values::computed_text(c));
     }
     s
 }

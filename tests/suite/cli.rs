@@ -110,12 +110,17 @@ fn report_writes_both_files_deterministically() {
             "id",
             "section",
             "verdict",
-            "paper_value",
-            "computed_value",
+            "printed",
+            "computed",
             "tolerance",
+            "power",
             "evidence",
         ] {
             assert!(c.get(key).is_some(), "claim lacks {key}");
+        }
+        let power = &c["power"];
+        for key in ["kind", "detail", "weak"] {
+            assert!(power.get(key).is_some(), "power lacks {key}");
         }
     }
     let total: u64 = v["summary"]

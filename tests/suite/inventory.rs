@@ -77,3 +77,25 @@ fn every_claim_has_a_verdict() {
         "result ids must be unique"
     );
 }
+
+/// A positive verdict rests on a check that could have failed: every claim states its power,
+/// and none of the positive ones is weak.
+#[test]
+fn no_positive_verdict_is_weak() {
+    let all = cases::load_all(Path::new(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/paper_cases"
+    )))
+    .unwrap();
+    let report = Report::from_cases(&all).unwrap();
+    let weak: Vec<&str> = report
+        .claims
+        .iter()
+        .filter(|c| c.verdict.is_positive() && c.power.weak)
+        .map(|c| c.id.as_str())
+        .collect();
+    assert!(
+        weak.is_empty(),
+        "positive verdicts with weak power: {weak:?}"
+    );
+}

@@ -1,7 +1,9 @@
 //! The Markdown and HTML renderers on a small fixed set of claims (not the whole report).
 
 use orthocheck::check::figure::{Figure, Layer, Plot, Shape, Style};
-use orthocheck::check::{ClaimResult, Evidence, Tolerance, Verdict};
+use orthocheck::check::{
+    ClaimResult, Evidence, Power, Quantity, Tolerance, ToleranceSource, Value, Verdict,
+};
 use orthocheck::report::{claim_markdown, html, Provenance, Report};
 
 fn claims() -> Vec<ClaimResult> {
@@ -13,12 +15,15 @@ fn claims() -> Vec<ClaimResult> {
         lines: "1-2".into(),
         quote: "a quote with <markup> & \"quotes\"".into(),
         verdict,
-        paper_value: "4, 9, 16".into(),
-        computed_value: computed.into(),
-        tolerance: Some(Tolerance {
-            value: "±0.005".into(),
-            source: "half a unit of the second decimal".into(),
-        }),
+        printed: vec![Quantity::new("squares", Value::reals(&[4.0, 9.0, 16.0]))],
+        computed: vec![Quantity::new("computed", computed)],
+        tolerance: Some(Tolerance::bound(
+            0.005,
+            ToleranceSource::PrintedPrecision,
+            "half a unit of the second decimal",
+        )),
+        power: Power::interval(3.995, 4.005, 4.0, 0.005, "printed 4 ± 0.005"),
+        correction: None,
         evidence: Evidence::new("a method").with("a detail", "a value"),
     };
     vec![

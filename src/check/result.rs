@@ -1,0 +1,525 @@
+//! Typed claim results: numbers stay numbers until `report/` formats them.
+
+use serde::{Serialize, Serializer};
+
+use crate::cases::Printed;
+
+/// The verdicts (see DESIGN.md and `docs/verdicts.md`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Verdict {
+    /// Agrees within the printed precision.
+    Reproduced,
+    /// Agrees once the rounding of the printed input data is propagated.
+    ReproducedWithinRounding,
+    /// A symbolic identity holds exactly over ℚ.
+    IdentityVerified,
+    /// True except on a degenerate set the paper never names (the evidence names it).
+    HoldsGenerically,
+    /// A noise claim that holds under the stated reading of the paper's words.
+    StatisticalHolds,
+    /// A noise claim that fails under the stated reading of the paper's words.
+    StatisticalFails,
+    /// The printed formula or number is wrong; the corrected form is stated and verified.
+    Erratum,
+    /// The check cannot discriminate: it would accept values the paper would call wrong.
+    Inconclusive,
+    /// The paper lacks the data; the evidence lists what is missing and what was tried.
+    NotReproducible,
+    /// The paper asserts something false.
+    Contradicted,
+}
+
+impl Verdict {
+    /// All verdicts, in report order.
+    pub const ALL: [Verdict; 10] = [
+        Verdict::Reproduced,
+        Verdict::ReproducedWithinRounding,
+        Verdict::IdentityVerified,
+        Verdict::HoldsGenerically,
+        Verdict::StatisticalHolds,
+        Verdict::StatisticalFails,
+        Verdict::Erratum,
+        Verdict::Inconclusive,
+        Verdict::NotReproducible,
+        Verdict::Contradicted,
+    ];
+
+    /// `Reproduced` when a claim decided by computation holds, `Contradicted` when not.
+    pub fn holds(ok: bool) -> Verdict {
+        if ok {
+            Verdict::Reproduced
+        } else {
+            Verdict::Contradicted
+        }
+    }
+
+    /// `StatisticalHolds` or `StatisticalFails`.
+    pub fn statistical(holds: bool) -> Verdict {
+        if holds {
+            Verdict::StatisticalHolds
+        } else {
+            Verdict::StatisticalFails
+        }
+    }
+
+    /// A positive verdict says the paper's claim was confirmed by a check that could fail.
+    pub fn is_positive(&self) -> bool {
+        matches!(
+            self,
+            Verdict::Reproduced
+                | Verdict::ReproducedWithinRounding
+                | Verdict::IdentityVerified
+                | Verdict::HoldsGenerically
+                | Verdict::StatisticalHolds
+        )
+    }
+
+    /// The kebab-case name.
+    pub fn name(&self) -> &'static str {
+        match self {
+            Verdict::Reproduced => "reproduced",
+            Verdict::ReproducedWithinRounding => "reproduced-within-rounding",
+            Verdict::IdentityVerified => "identity-verified",
+            Verdict::HoldsGenerically => "holds-generically",
+            Verdict::StatisticalHolds => "statistical-holds",
+            Verdict::StatisticalFails => "statistical-fails",
+            Verdict::Erratum => "erratum",
+            Verdict::Inconclusive => "inconclusive",
+            Verdict::NotReproducible => "not-reproducible",
+            Verdict::Contradicted => "contradicted",
+        }
+    }
+}
+
+/// A float as the one formatter shows it: [`crate::numfmt::SIGNIFICANT`] significant digits,
+/// so that `report.json` and snapshots never drift across machines.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Real(pub f64);
+
+impl Serialize for Real {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        let shown = crate::numfmt::sig(self.0);
+        match shown.parse::<f64>() {
+            Ok(v) if v.is_finite() => s.serialize_f64(v),
+            // non-finite values are refused by the output guard before they get here
+            _ => s.serialize_str(&shown),
+        }
+    }
+}
+
+/// One value in a claim result.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+#[serde(tag = "kind", rename_all = "kebab-case")]
+pub enum Value {
+    /// A number as the paper printed it: its digits, its exact value, half a unit of its last
+    /// digit.
+    Printed {
+        /// The digits as printed.
+        text: String,
+        /// The exact rational value of those digits (`p/q`).
+        exact: String,
+        /// Half a unit in the last printed digit.
+        half_unit: Real,
+    },
+    /// A computed floating-point number.
+    Real {
+        /// The value.
+        value: Real,
+    },
+    /// A quantity at rounding level, shown only as the power of ten above it.
+    Below {
+        /// `|x| < 10^exponent`; `None` for exact zero.
+        exponent: Option<i32>,
+    },
+    /// A list of computed numbers.
+    Reals {
+        /// The values.
+        values: Vec<Real>,
+    },
+    /// A closed interval.
+    Interval {
+        /// Lower end.
+        lo: Real,
+        /// Upper end.
+        hi: Real,
+    },
+    /// An exact rational or integer (`p/q` or `n`).
+    Exact {
+        /// The value.
+        value: String,
+    },
+    /// A count, optionally out of a total.
+    Count {
+        /// How many.
+        count: u64,
+        /// Out of how many.
+        #[serde(skip_serializing_if = "Option::is_none")]
+        of: Option<u64>,
+    },
+    /// A yes/no finding.
+    Flag {
+        /// The finding.
+        value: bool,
+    },
+    /// A formula in the paper's notation (plain text or LaTeX as printed).
+    Formula {
+        /// The formula.
+        text: String,
+    },
+    /// A name, an id, a method, a statement of the paper: never a number.
+    Label {
+        /// The text.
+        text: String,
+    },
+}
+
+impl Value {
+    /// A printed number.
+    pub fn printed(p: &Printed) -> Value {
+        Value::Printed {
+            text: p.text.clone(),
+            exact: p.value.to_string(),
+            half_unit: Real(p.half_unit()),
+        }
+    }
+
+    /// A computed number.
+    pub fn real(x: f64) -> Value {
+        Value::Real { value: Real(x) }
+    }
+
+    /// A rounding-level number.
+    pub fn below(x: f64) -> Value {
+        Value::Below {
+            exponent: (x != 0.0).then(|| x.abs().log10().floor() as i32 + 1),
+        }
+    }
+
+    /// Computed numbers.
+    pub fn reals(xs: &[f64]) -> Value {
+        Value::Reals {
+            values: xs.iter().map(|x| Real(*x)).collect(),
+        }
+    }
+
+    /// An interval.
+    pub fn interval(lo: f64, hi: f64) -> Value {
+        Value::Interval {
+            lo: Real(lo),
+            hi: Real(hi),
+        }
+    }
+
+    /// An exact value.
+    pub fn exact(v: impl ToString) -> Value {
+        Value::Exact {
+            value: v.to_string(),
+        }
+    }
+
+    /// A count.
+    pub fn count(n: usize) -> Value {
+        Value::Count {
+            count: n as u64,
+            of: None,
+        }
+    }
+
+    /// A count out of a total.
+    pub fn count_of(n: usize, of: usize) -> Value {
+        Value::Count {
+            count: n as u64,
+            of: Some(of as u64),
+        }
+    }
+
+    /// A flag.
+    pub fn flag(b: bool) -> Value {
+        Value::Flag { value: b }
+    }
+
+    /// A formula.
+    pub fn formula(t: impl Into<String>) -> Value {
+        Value::Formula { text: t.into() }
+    }
+
+    /// A label.
+    pub fn label(t: impl Into<String>) -> Value {
+        Value::Label { text: t.into() }
+    }
+
+    /// Every float this value holds (for the output guard).
+    pub fn floats(&self) -> Vec<f64> {
+        match self {
+            Value::Printed { half_unit, .. } => vec![half_unit.0],
+            Value::Real { value } => vec![value.0],
+            Value::Reals { values } => values.iter().map(|r| r.0).collect(),
+            Value::Interval { lo, hi } => vec![lo.0, hi.0],
+            _ => Vec::new(),
+        }
+    }
+}
+
+impl From<f64> for Value {
+    fn from(x: f64) -> Value {
+        Value::real(x)
+    }
+}
+
+impl From<bool> for Value {
+    fn from(b: bool) -> Value {
+        Value::flag(b)
+    }
+}
+
+impl From<usize> for Value {
+    fn from(n: usize) -> Value {
+        Value::count(n)
+    }
+}
+
+impl From<&Printed> for Value {
+    fn from(p: &Printed) -> Value {
+        Value::printed(p)
+    }
+}
+
+impl From<&str> for Value {
+    fn from(t: &str) -> Value {
+        Value::label(t)
+    }
+}
+
+impl From<String> for Value {
+    fn from(t: String) -> Value {
+        Value::label(t)
+    }
+}
+
+/// A named value.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Quantity {
+    /// What it is.
+    pub name: String,
+    /// Its value.
+    pub value: Value,
+}
+
+impl Quantity {
+    /// A named value.
+    pub fn new(name: &str, value: impl Into<Value>) -> Quantity {
+        Quantity {
+            name: name.into(),
+            value: value.into(),
+        }
+    }
+}
+
+/// Where a tolerance comes from.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+#[serde(tag = "kind", rename_all = "kebab-case")]
+pub enum ToleranceSource {
+    /// Exact comparison (integers, rationals, polynomials).
+    Exact,
+    /// Half a unit in the last printed digit.
+    PrintedPrecision,
+    /// The printed input's rounding propagated (interval arithmetic, a rounding box).
+    Propagated,
+    /// A floating-point error bound the code derives (condition × unit roundoff × size).
+    ErrorBound,
+    /// A percentile of a seeded Monte Carlo distribution.
+    MonteCarlo {
+        /// The percentile (0–100).
+        percentile: Real,
+        /// The trial count.
+        trials: u64,
+    },
+}
+
+/// How close is close enough, and why.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Tolerance {
+    /// The bound; `None` for an exact comparison.
+    pub bound: Option<Real>,
+    /// Where the bound comes from.
+    #[serde(flatten)]
+    pub source: ToleranceSource,
+    /// How it was derived, in a phrase.
+    pub how: String,
+}
+
+impl Tolerance {
+    /// Exact comparison.
+    pub fn exact(how: &str) -> Self {
+        Tolerance {
+            bound: None,
+            source: ToleranceSource::Exact,
+            how: how.into(),
+        }
+    }
+
+    /// A numeric bound from `source`.
+    pub fn bound(bound: f64, source: ToleranceSource, how: &str) -> Self {
+        Tolerance {
+            bound: Some(Real(bound)),
+            source,
+            how: how.into(),
+        }
+    }
+}
+
+/// What kind of negative control a verdict has.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum PowerKind {
+    /// The set of printed values the same check would accept.
+    Interval,
+    /// A changed formula or target that the same check rejects.
+    Mutant,
+    /// No negative control (allowed only for verdicts that are not positive).
+    None,
+}
+
+/// The power of a verdict: what the same check would have rejected.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Power {
+    /// The kind of control.
+    pub kind: PowerKind,
+    /// What was accepted or rejected, in a phrase.
+    pub detail: String,
+    /// The acceptance region, for an interval control.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub accepts: Option<Value>,
+    /// True when the check would accept values the paper would call wrong.
+    pub weak: bool,
+}
+
+impl Power {
+    /// An acceptance interval `[lo, hi]` around a printed value with half-unit `precision`;
+    /// weak when the interval is wider than `allowed` on either side of `printed` (the
+    /// widest deviation the paper's own words or digits would still call right).
+    pub fn interval(lo: f64, hi: f64, printed: f64, allowed: f64, detail: &str) -> Power {
+        let weak = !(lo.is_finite() && hi.is_finite())
+            || printed - lo > allowed * (1.0 + f64::EPSILON)
+            || hi - printed > allowed * (1.0 + f64::EPSILON);
+        Power {
+            kind: PowerKind::Interval,
+            detail: detail.into(),
+            accepts: Some(Value::interval(lo, hi)),
+            weak,
+        }
+    }
+
+    /// An acceptance set that is exact (integers, rationals): only the computed value passes.
+    pub fn exact_value(detail: &str) -> Power {
+        Power {
+            kind: PowerKind::Interval,
+            detail: detail.into(),
+            accepts: None,
+            weak: false,
+        }
+    }
+
+    /// A mutant: `rejected` says whether the same check rejected it.
+    pub fn mutant(rejected: bool, detail: &str) -> Power {
+        Power {
+            kind: PowerKind::Mutant,
+            detail: detail.into(),
+            accepts: None,
+            weak: !rejected,
+        }
+    }
+
+    /// No negative control; `why` says why none applies.
+    pub fn none(why: &str) -> Power {
+        Power {
+            kind: PowerKind::None,
+            detail: why.into(),
+            accepts: None,
+            weak: true,
+        }
+    }
+}
+
+/// How a verdict was reached.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Evidence {
+    /// The method.
+    pub method: String,
+    /// Supporting values, in order.
+    pub details: Vec<Quantity>,
+}
+
+impl Evidence {
+    /// Evidence with a method and no details yet.
+    pub fn new(method: &str) -> Self {
+        Evidence {
+            method: method.into(),
+            details: Vec::new(),
+        }
+    }
+
+    /// Add a detail.
+    pub fn with(mut self, name: &str, value: impl Into<Value>) -> Self {
+        self.details.push(Quantity::new(name, value));
+        self
+    }
+}
+
+/// The outcome for one claim.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct ClaimResult {
+    /// Unique result id: the CLAIMS.md id, with a `/suffix` when one claim has several results.
+    pub id: String,
+    /// The CLAIMS.md id.
+    pub claim: String,
+    /// The case it came from.
+    pub case: String,
+    /// Paper section.
+    pub section: String,
+    /// Line range in the paper's source.
+    pub lines: String,
+    /// The paper's words.
+    pub quote: String,
+    /// The verdict.
+    pub verdict: Verdict,
+    /// What the paper printed or claimed.
+    pub printed: Vec<Quantity>,
+    /// What the computation gives.
+    pub computed: Vec<Quantity>,
+    /// The tolerance, when a comparison was made.
+    pub tolerance: Option<Tolerance>,
+    /// What the same check would have rejected.
+    pub power: Power,
+    /// For an erratum: the corrected form, verified.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub correction: Option<String>,
+    /// How.
+    pub evidence: Evidence,
+}
+
+macro_rules! exact_from {
+    ($($t:ty),*) => {$(
+        impl From<$t> for Value {
+            fn from(n: $t) -> Value {
+                Value::exact(n)
+            }
+        }
+    )*};
+}
+exact_from!(
+    u64,
+    u32,
+    i64,
+    i32,
+    u8,
+    num_bigint::BigInt,
+    num_rational::BigRational
+);
+
+impl From<&String> for Value {
+    fn from(t: &String) -> Value {
+        Value::label(t.clone())
+    }
+}
