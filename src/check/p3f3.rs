@@ -81,7 +81,11 @@ pub(super) fn check_example(b: &ResultBuilder, case: &P3f3ExampleCase) -> Result
         Evidence::new("exact arithmetic on the printed digits"),
     ));
 
-    let bx: RoundingBox = case.figure.rounding_box();
+    let (center, halves) = case.figure.rounding_box();
+    let bx = RoundingBox {
+        center,
+        half: halves,
+    };
     let digits = case.solutions.significant_digits;
     let targets: Vec<[f64; 3]> = case
         .solutions

@@ -103,7 +103,11 @@ pub(super) fn check_example(b: &ResultBuilder, case: &P4f3ExampleCase) -> Result
         .map(|f| f.iter().map(|p| [p[0].to_f64(), p[1].to_f64()]).collect())
         .collect();
     let coord_half = case.figure.frames[0][0][0].half_unit();
-    let bx: RoundingBox = case.figure.rounding_box();
+    let (center, halves) = case.figure.rounding_box();
+    let bx = RoundingBox {
+        center,
+        half: halves,
+    };
     let unflat = |x: &[f64]| -> Vec<Vec<[f64; 2]>> {
         (0..3)
             .map(|f| {

@@ -13,17 +13,7 @@ use super::solver::SquaredLengths;
 use super::{p3f3, p3f4, p4f3};
 use crate::model::{random_rotation, Body, Motion, NoiseModel, Scene};
 
-/// Which solver a study runs.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum StudySolver {
-    /// §2: three points, three frames.
-    P3f3,
-    /// §3: three points, four frames.
-    P3f4,
-    /// §4: four points, three frames.
-    P4f3,
-}
+pub use crate::model::StudySolver;
 
 /// Error of one trial's best solution against the truth.
 #[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]

@@ -386,3 +386,15 @@ mod tests {
         assert!(Tracks::new(names, nan).is_err());
     }
 }
+
+/// Which solver a study runs.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum StudySolver {
+    /// §2: three points, three frames.
+    P3f3,
+    /// §3: three points, four frames.
+    P3f4,
+    /// §4: four points, three frames.
+    P4f3,
+}

@@ -1,0 +1,214 @@
+//! The formula audit: displayed formulas, definitions, printed arithmetic, computed statements, textual errata.
+
+use std::collections::BTreeMap;
+use std::fmt;
+
+use serde::Deserialize;
+
+use super::{ClaimRef, Printed};
+
+/// The formula audit.
+#[derive(Clone, Debug, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct FormulaAuditCase {
+    /// Random rational points for the second, independent check of every identity.
+    pub evaluation_points: usize,
+    /// Seed of those points.
+    pub seed: u64,
+    /// The paper's macros (`\faca{1}` …), transcribed: names usable in every formula.
+    #[serde(default)]
+    pub definitions: Vec<Definition>,
+    /// Displayed formulas, each compared with a derivation.
+    #[serde(default)]
+    pub formulas: Vec<FormulaItem>,
+    /// Printed arithmetic.
+    #[serde(default)]
+    pub arithmetic: Vec<ArithmeticItem>,
+    /// Statements decided by a dedicated computation.
+    #[serde(default)]
+    pub computed: Vec<ComputedItem>,
+    /// Textual and typographic errata.
+    #[serde(default)]
+    pub text: Vec<TextItem>,
+}
+
+/// Where an audit item sits in the paper.
+#[derive(Clone, Debug, Deserialize, PartialEq, serde::Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct Place {
+    /// Section as numbered ("2.2", "A").
+    pub section: String,
+    /// Equation label, if any.
+    #[serde(default)]
+    pub label: Option<String>,
+    /// The LaTeX macros involved.
+    #[serde(default)]
+    pub macros: Vec<String>,
+}
+
+impl fmt::Display for Place {
+    /// `§5.2, label p4f2, macros \faca \facb`
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "§{}", self.section)?;
+        if let Some(l) = &self.label {
+            write!(f, ", label {l}")?;
+        }
+        if !self.macros.is_empty() {
+            write!(f, ", macros {}", self.macros.join(" "))?;
+        }
+        Ok(())
+    }
+}
+
+/// A macro of the paper, transcribed.
+#[derive(Clone, Debug, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct Definition {
+    /// The name formulas use.
+    pub name: String,
+    /// The LaTeX macro.
+    #[serde(rename = "macro")]
+    pub latex: String,
+    /// Its expansion, transcribed.
+    pub printed: String,
+}
+
+/// How a printed formula must relate to its derivation.
+#[derive(Clone, Copy, Debug, Default, Deserialize, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Relation {
+    /// The same expression.
+    #[default]
+    Equal,
+    /// A non-zero rational multiple (an equation `= 0` printed with another sign or scale).
+    Proportional,
+}
+
+/// A displayed formula.
+#[derive(Clone, Debug, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct FormulaItem {
+    /// The claim.
+    pub claim: ClaimRef,
+    /// The result id's suffix.
+    pub id: String,
+    /// Where.
+    #[serde(rename = "where")]
+    pub place: Place,
+    /// The printed formula, transcribed faithfully (defects kept where they change the
+    /// meaning); absent when it is not a formula at all.
+    #[serde(default)]
+    pub printed: Option<String>,
+    /// The LaTeX as printed, when the transcription alone would hide the defect.
+    #[serde(default)]
+    pub printed_text: Option<String>,
+    /// The defect, in words.
+    #[serde(default)]
+    pub defect: Option<String>,
+    /// The corrected formula, for an erratum.
+    #[serde(default)]
+    pub corrected: Option<String>,
+    /// The derivation it must equal (a name the formula audit knows).
+    pub derived: String,
+    /// Equal (default) or proportional.
+    #[serde(default)]
+    pub relation: Relation,
+    /// Defined names kept as free symbols here.
+    #[serde(default)]
+    pub symbols: Vec<String>,
+    /// The name this formula defines for later ones.
+    #[serde(default)]
+    pub defines: Option<String>,
+    /// Groups of variables in whose squares the formula must be at most quadratic.
+    #[serde(default)]
+    pub quadratic_in: Vec<Vec<String>>,
+}
+
+/// Printed arithmetic: an expression and the value printed for it.
+#[derive(Clone, Debug, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct ArithmeticItem {
+    /// The claim.
+    pub claim: ClaimRef,
+    /// The result id's suffix.
+    pub id: String,
+    /// Where.
+    #[serde(rename = "where")]
+    pub place: Place,
+    /// The printed steps, each an expression, in order (`-1+3*p+5*(k-1)`, `-1+12+5`).
+    pub steps: Vec<String>,
+    /// Values of the variables.
+    #[serde(default)]
+    pub values: BTreeMap<String, i64>,
+    /// The printed result.
+    pub equals: Printed,
+}
+
+/// A statement decided by a dedicated computation.
+#[derive(Clone, Debug, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct ComputedItem {
+    /// The claim.
+    pub claim: ClaimRef,
+    /// The result id's suffix.
+    pub id: String,
+    /// Where.
+    #[serde(rename = "where")]
+    pub place: Place,
+    /// What the paper says, in its words.
+    pub printed: String,
+    /// The computation.
+    pub test: ComputedTest,
+}
+
+/// The dedicated computations.
+#[derive(Clone, Debug, Deserialize, PartialEq)]
+#[serde(rename_all = "snake_case", deny_unknown_fields)]
+pub enum ComputedTest {
+    /// §5: "linearly dependent on the three previous ones".
+    FourthRelation {
+        /// Seed of the rational scene for the ranks.
+        seed: u64,
+    },
+    /// The formula for b solves the quadratic in b² (Appendix A, §5.2).
+    BFormula,
+    /// `√(e₀² − e₀ᵢ²) = ±√(e₁² − e₁ᵢ²) ± √(e₂² − e₂ᵢ²)`, every sign choice squared twice,
+    /// against eq. p3f3sqr of the triangle with these edges.
+    SignedRelation {
+        /// The three edge letters, the left-hand side first.
+        edges: Vec<String>,
+    },
+    /// A list of "constant symbols" against the symbols the expression uses.
+    ConstantSymbols {
+        /// The symbols the text lists.
+        listed: Vec<String>,
+        /// The symbols the expression uses.
+        used: Vec<String>,
+    },
+    /// n(n−1)(n−2)(n−3) against the number of ordered choices of four of n points.
+    OrderedQuadruples {
+        /// The n to check.
+        n: Vec<usize>,
+        /// The printed value for the first n.
+        printed: Printed,
+    },
+}
+
+/// A textual or typographic erratum.
+#[derive(Clone, Debug, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct TextItem {
+    /// The claim.
+    pub claim: ClaimRef,
+    /// The result id's suffix.
+    pub id: String,
+    /// Where.
+    #[serde(rename = "where")]
+    pub place: Place,
+    /// As printed.
+    pub printed: String,
+    /// As it should read.
+    pub corrected: String,
+    /// Why it matters to a reader reproducing the result.
+    pub effect: String,
+}

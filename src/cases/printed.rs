@@ -1,0 +1,127 @@
+//! A number as the paper printed it: its exact value and its precision.
+
+use std::fmt;
+
+use num_bigint::BigInt;
+use num_rational::BigRational;
+use num_traits::ToPrimitive;
+use serde::de::{self, Deserializer, Visitor};
+use serde::Deserialize;
+
+use crate::algebra::parse_decimal;
+
+/// A number as the paper printed it: exact value plus precision.
+///
+/// # Example
+/// ```
+/// use orthocheck::cases::Printed;
+/// let x = Printed::parse("1.2345").unwrap();
+/// assert_eq!(x.decimals, 4);
+/// assert_eq!(x.half_unit(), 0.00005);
+/// ```
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Printed {
+    /// The digits as printed.
+    pub text: String,
+    /// The exact value of those digits.
+    pub value: BigRational,
+    /// Digits after the decimal point, less the printed exponent (`"2.5e-3"` has 4).
+    pub decimals: i32,
+}
+
+impl Printed {
+    /// Parse printed digits (`"12.345"`, `"-0.5"`, `"18"`, `".25"`, `"1.5e-14"`).
+    pub fn parse(text: &str) -> Option<Printed> {
+        let t = text.trim();
+        let (mantissa, exponent) = match t.split_once(['e', 'E']) {
+            Some((m, e)) => (m, e.parse::<i32>().ok()?),
+            None => (t, 0),
+        };
+        let mut value = parse_decimal(mantissa)?;
+        let ten = BigRational::from_integer(BigInt::from(10));
+        for _ in 0..exponent.unsigned_abs() {
+            value = if exponent > 0 {
+                &value * &ten
+            } else {
+                &value / &ten
+            };
+        }
+        let decimals = mantissa.split_once('.').map_or(0, |(_, f)| f.len() as i32) - exponent;
+        Some(Printed {
+            text: t.to_string(),
+            value,
+            decimals,
+        })
+    }
+
+    /// Half a unit in the last printed digit: the rounding bound of the printed value.
+    pub fn half_unit(&self) -> f64 {
+        0.5 * 10f64.powi(-self.decimals)
+    }
+
+    /// Half a unit in the `digits`-th significant digit: the precision of a number printed
+    /// with a fixed count of significant digits and trailing zeros dropped (C's `%g`, C++
+    /// stream defaults), where "4" printed with six digits means 4.00000.
+    pub fn half_unit_significant(&self, digits: u32) -> f64 {
+        let v = self.to_f64().abs();
+        if v == 0.0 {
+            return self.half_unit();
+        }
+        let magnitude = v.log10().floor() as i32;
+        0.5 * 10f64.powi(magnitude - digits as i32 + 1)
+    }
+
+    /// The value as `f64`.
+    pub fn to_f64(&self) -> f64 {
+        self.value.to_f64().unwrap_or(f64::NAN)
+    }
+
+    /// The value as an integer, when it is one.
+    pub fn to_integer(&self) -> Option<BigInt> {
+        self.value.is_integer().then(|| self.value.to_integer())
+    }
+}
+
+impl Printed {
+    /// Printed numbers as printed, comma-separated.
+    pub fn join(v: &[Printed]) -> String {
+        v.iter()
+            .map(|p| p.text.as_str())
+            .collect::<Vec<_>>()
+            .join(", ")
+    }
+}
+
+impl fmt::Display for Printed {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.text)
+    }
+}
+
+impl<'de> Deserialize<'de> for Printed {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> std::result::Result<Self, D::Error> {
+        struct V;
+        impl Visitor<'_> for V {
+            type Value = Printed;
+            fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+                f.write_str("a printed number as a quoted string, e.g. \"1.2345\"")
+            }
+            fn visit_str<E: de::Error>(self, s: &str) -> std::result::Result<Printed, E> {
+                Printed::parse(s)
+                    .ok_or_else(|| E::custom(format!("'{s}' is not a printed decimal number")))
+            }
+            fn visit_i64<E: de::Error>(self, v: i64) -> std::result::Result<Printed, E> {
+                self.visit_str(&v.to_string())
+            }
+            fn visit_u64<E: de::Error>(self, v: u64) -> std::result::Result<Printed, E> {
+                self.visit_str(&v.to_string())
+            }
+            fn visit_f64<E: de::Error>(self, v: f64) -> std::result::Result<Printed, E> {
+                Err(E::custom(format!(
+                    "{v} is an unquoted float: quote it so its printed digits are kept"
+                )))
+            }
+        }
+        d.deserialize_str(V)
+    }
+}

@@ -1,0 +1,30 @@
+//! Where in the paper a case or claim comes from.
+
+use serde::Deserialize;
+
+/// Where in the paper a case or claim comes from.
+#[derive(Clone, Debug, Deserialize, serde::Serialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct Source {
+    /// Section number as in the paper ("2.1", "A" for the appendix).
+    pub section: String,
+    /// Equation, table or figure label, if any.
+    #[serde(default)]
+    pub label: Option<String>,
+    /// Line range in the LaTeX source.
+    pub lines: String,
+    /// A short quote.
+    pub quote: String,
+}
+
+/// One claim of CLAIMS.md as a case refers to it.
+#[derive(Clone, Debug, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct ClaimRef {
+    /// The CLAIMS.md id.
+    pub claim: String,
+    /// Line range.
+    pub lines: String,
+    /// A short quote.
+    pub quote: String,
+}
