@@ -23,6 +23,9 @@ pub struct Source {
 pub struct ClaimRef {
     /// The CLAIMS.md id.
     pub claim: String,
+    /// The paper section, when it differs from the case's (a case may span sections).
+    #[serde(default)]
+    pub section: Option<String>,
     /// Line range.
     pub lines: String,
     /// A short quote.

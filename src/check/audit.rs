@@ -527,6 +527,7 @@ mod tests {
         let c = ComputedItem {
             claim: ClaimRef {
                 claim: "x".into(),
+                section: None,
                 lines: "1".into(),
                 quote: "q".into(),
             },
