@@ -1,7 +1,9 @@
 //! Users' tracks files: YAML (`frames:` lists of `[x, y]`, optional `points:` names) or CSV
 //! (header `frame,point,x,y`). Every error names the file, the line and the field.
 
+use std::collections::{HashMap, HashSet};
 use std::fmt::Write as _;
+use std::io::Read as _;
 use std::path::Path;
 
 use nalgebra::Vector2;
@@ -41,6 +43,10 @@ fn located(path: &Path, line: Option<u64>, field: &str, message: String) -> Erro
     }
 }
 
+/// The largest tracks file read, in bytes: a file (or device) beyond it is refused before it
+/// can fill the memory.
+pub const MAX_TRACKS_BYTES: u64 = 64 << 20;
+
 /// Read a tracks file; the extension (`.csv`, otherwise YAML) picks the format.
 ///
 /// # Example
@@ -52,15 +58,32 @@ fn located(path: &Path, line: Option<u64>, field: &str, message: String) -> Erro
 /// assert_eq!(t.frames[1][1].y, 1.0);
 /// ```
 pub fn load_tracks(path: &Path, order: PointOrder) -> Result<Tracks> {
-    let text = std::fs::read_to_string(path).map_err(|source| Error::Io {
+    let io = |source| Error::Io {
         path: path.to_path_buf(),
         source,
-    })?;
+    };
+    let file = std::fs::File::open(path).map_err(io)?;
+    let mut bytes = Vec::new();
+    file.take(MAX_TRACKS_BYTES + 1)
+        .read_to_end(&mut bytes)
+        .map_err(io)?;
+    if bytes.len() as u64 > MAX_TRACKS_BYTES {
+        return Err(located(
+            path,
+            None,
+            "file",
+            format!("larger than the limit of {MAX_TRACKS_BYTES} bytes"),
+        ));
+    }
+    let text = String::from_utf8(bytes)
+        .map_err(|_| located(path, None, "file", "not UTF-8 text".into()))?;
     parse_tracks(&text, path, order)
 }
 
 /// Parse tracks text; `path` names the file in errors and its extension picks the format.
 pub fn parse_tracks(text: &str, path: &Path, order: PointOrder) -> Result<Tracks> {
+    // a byte-order mark is no data, in either format
+    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
     if text.trim().is_empty() {
         return Err(located(path, Some(1), "frames", "the file is empty".into()));
     }
@@ -104,6 +127,9 @@ fn parse_yaml_tracks(text: &str, path: &Path) -> Result<Tracks> {
                     format!("{} names for {p} points per frame", n.len()),
                 );
             }
+            if let Some(message) = name_problem(&n) {
+                return bad("points".into(), message);
+            }
             n
         }
         None => default_names(p),
@@ -130,6 +156,20 @@ fn parse_yaml_tracks(text: &str, path: &Path) -> Result<Tracks> {
         .map_err(|e| located(path, line_of(text, "frames"), "frames", e.to_string()))
 }
 
+/// What is wrong with a list of point names, if anything: an empty name, or one used twice.
+fn name_problem(names: &[String]) -> Option<String> {
+    let mut seen = HashSet::new();
+    for n in names {
+        if n.trim().is_empty() {
+            return Some("empty point name".into());
+        }
+        if !seen.insert(n.as_str()) {
+            return Some(format!("point `{n}` is named twice"));
+        }
+    }
+    None
+}
+
 fn parse_csv(text: &str, path: &Path, order: PointOrder) -> Result<Tracks> {
     let mut lines = text
         .lines()
@@ -151,6 +191,9 @@ fn parse_csv(text: &str, path: &Path, order: PointOrder) -> Result<Tracks> {
     // frames in order of first appearance; each a list of (name, point, line)
     let mut frame_ids: Vec<String> = Vec::new();
     let mut rows: Vec<Vec<(String, Vector2<f64>, u64)>> = Vec::new();
+    // hashed look-ups keep reading linear in the number of rows
+    let mut frame_index: HashMap<String, usize> = HashMap::new();
+    let mut seen: HashSet<(usize, String)> = HashSet::new();
     for (line, l) in lines {
         let f: Vec<&str> = l.split(',').map(str::trim).collect();
         if f.len() != 4 {
@@ -183,15 +226,12 @@ fn parse_csv(text: &str, path: &Path, order: PointOrder) -> Result<Tracks> {
                 "empty point name".into(),
             ));
         }
-        let idx = match frame_ids.iter().position(|id| id == f[0]) {
-            Some(i) => i,
-            None => {
-                frame_ids.push(f[0].to_string());
-                rows.push(Vec::new());
-                rows.len() - 1
-            }
-        };
-        if rows[idx].iter().any(|(n, _, _)| n == f[1]) {
+        let idx = *frame_index.entry(f[0].to_string()).or_insert_with(|| {
+            frame_ids.push(f[0].to_string());
+            rows.push(Vec::new());
+            rows.len() - 1
+        });
+        if !seen.insert((idx, f[1].to_string())) {
             return Err(located(
                 path,
                 Some(line),
@@ -225,9 +265,11 @@ fn parse_csv(text: &str, path: &Path, order: PointOrder) -> Result<Tracks> {
         let frame = match order {
             PointOrder::AsListed => r.iter().map(|x| x.1).collect(),
             PointOrder::ByName => {
+                let by_name: HashMap<&str, Vector2<f64>> =
+                    r.iter().map(|x| (x.0.as_str(), x.1)).collect();
                 let mut f = Vec::with_capacity(names.len());
                 for n in &names {
-                    let Some(x) = r.iter().find(|x| &x.0 == n) else {
+                    let Some(x) = by_name.get(n.as_str()) else {
                         return Err(located(
                             path,
                             last_line,
@@ -235,7 +277,7 @@ fn parse_csv(text: &str, path: &Path, order: PointOrder) -> Result<Tracks> {
                             format!("frame `{}` lacks point `{n}`", frame_ids[i]),
                         ));
                     };
-                    f.push(x.1);
+                    f.push(*x);
                 }
                 f
             }
@@ -286,6 +328,47 @@ mod tests {
         let y = parse_tracks(&tracks_to_yaml(&t), Path::new("t.yaml"), PointOrder::ByName);
         assert_eq!(y.unwrap(), t);
         assert_eq!(csv(&tracks_to_csv(&t)).unwrap(), t);
+    }
+
+    #[test]
+    fn a_byte_order_mark_is_read_in_both_formats() {
+        let t = Scene::random(3, 3, 2).tracks();
+        let y = format!("\u{feff}{}", tracks_to_yaml(&t));
+        assert_eq!(
+            parse_tracks(&y, Path::new("t.yaml"), PointOrder::ByName).unwrap(),
+            t
+        );
+        assert_eq!(csv(&format!("\u{feff}{}", tracks_to_csv(&t))).unwrap(), t);
+    }
+
+    #[test]
+    fn names_must_be_distinct_and_not_empty() {
+        let y = |names: &str| {
+            parse_tracks(
+                &format!("points: {names}\nframes:\n  - [[0, 0], [1, 0]]\n"),
+                Path::new("t.yaml"),
+                PointOrder::ByName,
+            )
+            .unwrap_err()
+            .to_string()
+        };
+        assert_eq!(
+            y("[P, P]"),
+            "t.yaml:1: field `points`: point `P` is named twice"
+        );
+        assert_eq!(y("[P, '']"), "t.yaml:1: field `points`: empty point name");
+    }
+
+    #[test]
+    fn many_frames_read_in_linear_time() {
+        // 200,000 rows: a quadratic search over frame ids would take minutes
+        let mut text = String::from("frame,point,x,y\n");
+        for f in 0..50_000 {
+            for (n, x) in [("P", 0.0), ("Q", 1.0), ("R", 2.0), ("T", 3.0)] {
+                let _ = writeln!(text, "{f},{n},{x},{}", f % 7);
+            }
+        }
+        assert_eq!(csv(&text).unwrap().frames.len(), 50_000);
     }
 
     #[test]
