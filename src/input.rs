@@ -9,7 +9,7 @@ use std::path::Path;
 use nalgebra::Vector2;
 use serde::Deserialize;
 
-use crate::cases::{line_of, parse_yaml};
+use crate::cases::{line_of, parse_yaml_limited};
 use crate::error::{Error, InputLocation, Result};
 use crate::model::{default_names, Tracks};
 
@@ -109,7 +109,8 @@ fn parse_yaml_tracks(text: &str, path: &Path) -> Result<Tracks> {
             "the file has no data".into(),
         ));
     }
-    let y: YamlTracks = parse_yaml(text, path)?;
+    // a point is three YAML values (its pair and two numbers): the byte limit bounds the rest
+    let y: YamlTracks = parse_yaml_limited(text, path, MAX_TRACKS_BYTES as usize / 4)?;
     // serde has checked the shapes; what is left is found by its field path
     let bad = |field: String, message: String| {
         let line = line_of(text, &field).or_else(|| line_of(text, "frames"));
@@ -339,6 +340,29 @@ mod tests {
             t
         );
         assert_eq!(csv(&format!("\u{feff}{}", tracks_to_csv(&t))).unwrap(), t);
+    }
+
+    #[test]
+    fn parser_messages_are_in_plain_words() {
+        let y = |text: &str| {
+            parse_tracks(text, Path::new("t.yaml"), PointOrder::ByName)
+                .unwrap_err()
+                .to_string()
+        };
+        let dup = y("points: [P, Q]\npoints: [P, Q]\nframes: []\n");
+        assert!(dup.ends_with("key `points` appears twice"), "{dup}");
+        let deep = y(&format!("frames: {}{}\n", "[".repeat(200), "]".repeat(200)));
+        assert!(
+            !deep.contains("Options") && !deep.contains("budget"),
+            "{deep}"
+        );
+    }
+
+    #[test]
+    fn many_yaml_frames_are_read() {
+        let t = Scene::random(4, 30_000, 3).tracks();
+        let y = parse_tracks(&tracks_to_yaml(&t), Path::new("t.yaml"), PointOrder::ByName);
+        assert_eq!(y.unwrap().frames.len(), 30_000);
     }
 
     #[test]

@@ -25,7 +25,20 @@ pub fn parse_case(text: &str, path: &Path) -> Result<Case> {
 
 /// Deserialize YAML with errors that name the file, line, column and field path.
 pub fn parse_yaml<T: serde::de::DeserializeOwned>(text: &str, path: &Path) -> Result<T> {
-    let options = serde_saphyr::options! { with_snippet: false };
+    parse_yaml_limited(text, path, serde_saphyr::Budget::default().max_nodes)
+}
+
+/// [`parse_yaml`] allowing up to `max_nodes` YAML values (sequences, maps and scalars), for
+/// data files larger than a case file; the parser's other limits (depth, aliases) stay.
+pub fn parse_yaml_limited<T: serde::de::DeserializeOwned>(
+    text: &str,
+    path: &Path,
+    max_nodes: usize,
+) -> Result<T> {
+    let mut budget = serde_saphyr::Budget::default();
+    budget.max_nodes = max_nodes;
+    budget.max_events = max_nodes.saturating_mul(2).max(budget.max_events);
+    let options = serde_saphyr::options! { with_snippet: false, budget: Some(budget) };
     let mut field: Option<String> = None;
     let parsed = serde_saphyr::with_deserializer_from_str_with_options(text, options, |de| {
         serde_path_to_error::deserialize(de).map_err(|e| {
@@ -46,9 +59,47 @@ pub fn parse_yaml<T: serde::de::DeserializeOwned>(text: &str, path: &Path) -> Re
                 column: loc.map(|l| l.column()),
                 field: field.or_else(|| field_of(&message)),
             },
-            message: strip_location(&message),
+            message: plain_message(&strip_location(&message)),
         }
     })
+}
+
+/// The parser's messages in this tool's words: no advice about the parser's own options.
+fn plain_message(message: &str) -> String {
+    if let Some(rest) = message.strip_prefix("duplicate mapping key") {
+        let key = rest
+            .trim_start_matches(": ")
+            .split(',')
+            .next()
+            .unwrap_or("")
+            .trim();
+        return if key.is_empty() {
+            "a key appears twice".into()
+        } else {
+            format!("key `{key}` appears twice")
+        };
+    }
+    if let Some(breach) = message.strip_prefix("budget breached: ") {
+        let what = breach.split([' ', '{']).next().unwrap_or(breach);
+        let limit = breach
+            .split(|c: char| !c.is_ascii_digit())
+            .find(|d| !d.is_empty())
+            .unwrap_or("?");
+        let kind = match what {
+            "Nodes" => "values",
+            "Events" => "parser events",
+            "Depth" => "levels of nesting",
+            "Aliases" => "aliases",
+            "Anchors" => "anchors",
+            "Documents" => "documents",
+            _ => "elements",
+        };
+        return format!("the file is too large: more than {limit} {kind}");
+    }
+    if message.contains("from_str_multiple") {
+        return "the file holds more than one YAML document".into();
+    }
+    message.to_string()
 }
 
 /// The field a message names (`missing field `x``, `duplicate mapping key: x`).

@@ -17,7 +17,7 @@ pub use audit::*;
 pub use examples::*;
 pub use identity::*;
 pub(crate) use load::line_of;
-pub use load::{case_files, load_all, load_case, parse_case, parse_yaml};
+pub use load::{case_files, load_all, load_case, parse_case, parse_yaml, parse_yaml_limited};
 pub use noise::*;
 pub use printed::Printed;
 pub use restate::*;
