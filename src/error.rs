@@ -54,6 +54,14 @@ pub enum Error {
         /// The cause.
         source: std::io::Error,
     },
+    /// A file or folder could not be written.
+    #[error("{}: cannot write: {message}", path.display())]
+    Write {
+        /// The file or folder.
+        path: PathBuf,
+        /// The cause.
+        message: String,
+    },
     /// A case or tracks file is malformed.
     #[error("{location}: {message}")]
     Input {

@@ -168,17 +168,62 @@ impl Report {
     }
 
     /// Write `report.md`, `report.json` and `report.html` into `dir` (created if missing).
+    /// Each file is written to a temporary name in `dir` first and renamed once all three
+    /// are complete, so a failure leaves the old report whole; a name in `dir` that is a
+    /// symbolic link is refused rather than followed.
     pub fn write(&self, dir: &Path) -> Result<()> {
-        let io = |source| crate::error::Error::Io {
-            path: dir.to_path_buf(),
-            source,
-        };
-        std::fs::create_dir_all(dir).map_err(io)?;
-        std::fs::write(dir.join("report.md"), self.to_markdown()).map_err(io)?;
-        std::fs::write(dir.join("report.json"), self.to_json()).map_err(io)?;
-        std::fs::write(dir.join("report.html"), html::render(self)).map_err(io)?;
-        Ok(())
+        prepare_output_dir(dir)?;
+        let files = [
+            ("report.md", self.to_markdown()),
+            ("report.json", self.to_json()),
+            ("report.html", html::render(self)),
+        ];
+        write_all_atomic(dir, &files)
     }
+}
+
+/// Make sure `dir` exists and can be written to, before anything is computed for it.
+pub fn prepare_output_dir(dir: &Path) -> Result<()> {
+    let fail = |message: String| crate::error::Error::Write {
+        path: dir.to_path_buf(),
+        message,
+    };
+    std::fs::create_dir_all(dir).map_err(|e| fail(e.to_string()))?;
+    let probe = dir.join(format!(".orthocheck-probe-{}", std::process::id()));
+    std::fs::write(&probe, b"").map_err(|e| fail(e.to_string()))?;
+    std::fs::remove_file(&probe).map_err(|e| fail(e.to_string()))?;
+    Ok(())
+}
+
+/// Write every `(name, text)` into `dir` atomically as a set: all temporary files first, then
+/// the renames; names that are symbolic links are refused.
+pub fn write_all_atomic(dir: &Path, files: &[(&str, String)]) -> Result<()> {
+    let fail = |path: &Path, message: String| crate::error::Error::Write {
+        path: path.to_path_buf(),
+        message,
+    };
+    for (name, _) in files {
+        let target = dir.join(name);
+        if let Ok(m) = std::fs::symlink_metadata(&target) {
+            if m.file_type().is_symlink() {
+                return Err(fail(&target, "is a symbolic link; not followed".into()));
+            }
+        }
+    }
+    let temp = |name: &str| dir.join(format!(".{name}.{}.tmp", std::process::id()));
+    for (name, text) in files {
+        if let Err(e) = std::fs::write(temp(name), text) {
+            for (n, _) in files {
+                let _ = std::fs::remove_file(temp(n));
+            }
+            return Err(fail(&dir.join(name), e.to_string()));
+        }
+    }
+    for (name, _) in files {
+        std::fs::rename(temp(name), dir.join(name))
+            .map_err(|e| fail(&dir.join(name), e.to_string()))?;
+    }
+    Ok(())
 }
 
 /// One claim as Markdown.

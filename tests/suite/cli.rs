@@ -492,3 +492,27 @@ fn check_html(html: &str, report: &serde_json::Value) {
         assert!(!html.contains(external), "the page refers to {external}");
     }
 }
+
+/// `report --out` never follows a symbolic link named like one of its files, and leaves
+/// the link's target untouched.
+#[cfg(unix)]
+#[test]
+fn report_refuses_a_symlinked_output_file() {
+    let dir = tempfile::tempdir().unwrap();
+    let outside = dir.path().join("outside.html");
+    std::fs::write(&outside, "keep me").unwrap();
+    let out = dir.path().join("out");
+    std::fs::create_dir(&out).unwrap();
+    std::os::unix::fs::symlink(&outside, out.join("report.html")).unwrap();
+    let r = orthocheck::report::Report::new(Vec::new());
+    let e = r.write(&out).unwrap_err().to_string();
+    assert!(
+        e.contains("cannot write") && e.contains("symbolic link"),
+        "{e}"
+    );
+    assert_eq!(std::fs::read_to_string(&outside).unwrap(), "keep me");
+    assert!(
+        !out.join("report.md").exists(),
+        "nothing is written when one name is refused"
+    );
+}
