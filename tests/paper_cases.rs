@@ -1,10 +1,13 @@
 //! The paper-reproduction check: every `paper_cases/*.yaml` is a test whose claim results are
 //! snapshotted under `snapshots/`; every `tests/bad_cases/*.yaml` must fail with the error its
-//! first line (`# expect: …`) names (a trailing `…` there matches any rest).
+//! first line (`# expect: …`) names (a trailing `…` there matches any rest). The paper runs
+//! once for the whole binary (`common::report`); each case's test snapshots its share.
 
 use std::path::Path;
 
 use orthocheck::{cases, check, Error};
+
+mod common;
 
 fn snapshot_settings() -> insta::Settings {
     let mut s = insta::Settings::clone_current();
@@ -16,17 +19,12 @@ fn snapshot_settings() -> insta::Settings {
 
 fn paper_case(path: &Path) -> datatest_stable::Result<()> {
     let case = cases::load_case(path)?;
-    let results = match case.check {
-        // decided from the other cases' results
-        cases::CaseCheck::Restatements(_) => {
-            let all = cases::load_all(path.parent().ok_or("no folder")?)?;
-            check::run_all(&all)?
-                .into_iter()
-                .filter(|r| r.case == case.id)
-                .collect()
-        }
-        _ => check::run_case(&case)?,
-    };
+    // one run of the whole paper serves every case (the restatements need all the others)
+    let results: Vec<&check::ClaimResult> = common::report()?
+        .claims
+        .iter()
+        .filter(|r| r.case == case.id)
+        .collect();
     assert!(!results.is_empty(), "{} produced no claim results", case.id);
     let stem = path
         .file_stem()

@@ -1,12 +1,14 @@
 use std::path::Path;
 
-use orthocheck::{cases, check};
+use orthocheck::check;
+
+use crate::common;
 
 #[test]
 fn docs_errata_is_up_to_date() {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
-    let all = cases::load_all(&root.join("paper_cases")).unwrap();
-    let report = orthocheck::report::Report::from_cases(&all).unwrap();
+    let all = common::cases().unwrap();
+    let report = common::report().unwrap();
     let fresh = orthocheck::report::errata_markdown(&report.claims);
     let committed = std::fs::read_to_string(root.join("docs/errata.md")).unwrap_or_default();
     assert!(
@@ -14,7 +16,7 @@ fn docs_errata_is_up_to_date() {
         "docs/errata.md is out of date: run `cargo run --release -- audit --all --markdown > docs/errata.md`"
     );
     // the audit's errata stay found
-    let items = check::audit_all(&all).unwrap();
+    let items = check::audit_all(all).unwrap();
     assert!(
         items
             .iter()

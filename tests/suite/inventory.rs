@@ -1,74 +1,108 @@
 use std::collections::BTreeSet;
-use std::path::Path;
 
-use orthocheck::{cases, report::Report};
+use crate::common;
 
-/// Every claim of the paper's inventory (CLAIMS.md ids; the ids stay stable).
-const CLAIMS: &[&str] = &[
-    "abstract-minimum",
-    "abstract-linear",
-    "abstract-two-frames",
-    "dof-formula",
-    "dof-k3p3",
-    "dof-k2p4",
-    "twofold-relations",
-    "p3f3sqr",
-    "p3f3-differences",
-    "p3f3-a2-b2",
-    "p3f3-quadratic",
-    "p3f3-solution-count",
-    "p3f3-feasibility",
-    "ex2-body",
-    "ex2-figure",
-    "ex2-two-solutions",
-    "ex2-noise-0.1",
-    "ex2-noise-1",
-    "ex2-noise-10",
-    "p3f4-linear",
-    "p3f4-unique",
-    "ex3-body",
-    "ex3-noise",
-    "p4f3-relations",
-    "p4f3-linear",
-    "p4f3-unique",
-    "ex4-body",
-    "ex4-figure",
-    "ex4-matrix",
-    "ex4-solution",
-    "ex4-noise-0.1",
-    "ex4-noise-1",
-    "fourth-relation",
-    "two-frames-construction",
-    "two-frames-coordinates",
-    "two-frames-fourth-point",
-    "identity-line",
-    "identity-count",
-    "identity-procedure",
-    "ex5-frames",
-    "ex5-hidden-table",
-    "ex5-correct",
-    "ex5-debug",
-    "ex5-figure-panels",
-    "identity5",
-    "curves",
-    "discussion",
-    "conclusions",
-    "appA-coefficients",
-    "appA-quartic",
-];
+/// The claim inventory: its table's first column lists every claim id the report must decide.
+const CLAIMS_MD: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../shared/paper/CLAIMS.md");
+
+/// The ids of CLAIMS.md, read from the file itself so that a new claim cannot slip past.
+/// A missing file fails: the inventory is never passed without being read.
+fn claim_ids() -> BTreeSet<String> {
+    let text = std::fs::read_to_string(CLAIMS_MD).unwrap_or_else(|e| {
+        panic!(
+            "cannot read the claim inventory {CLAIMS_MD} ({e}): the crate's tests need the \
+             paper's shared/ folder beside the repository"
+        )
+    });
+    let ids = inventory_ids(&text);
+    assert!(
+        ids.len() >= 40,
+        "{CLAIMS_MD}: only {} ids in its table (is the table still `| id | … |`?)",
+        ids.len()
+    );
+    ids
+}
+
+/// The first cell of each row of the table headed `| id | …`, without the header and the
+/// `|---|` rule.
+fn inventory_ids(text: &str) -> BTreeSet<String> {
+    let mut ids = BTreeSet::new();
+    let mut in_table = false;
+    for line in text.lines().map(str::trim) {
+        let Some(row) = line.strip_prefix('|') else {
+            in_table = false;
+            continue;
+        };
+        let first = row.split('|').next().unwrap_or("").trim().trim_matches('`');
+        if first == "id" {
+            in_table = true;
+        } else if in_table && !first.starts_with("---") && !first.is_empty() {
+            ids.insert(first.to_string());
+        }
+    }
+    ids
+}
+
+/// `id` or `id/suffix` with `id` an inventory id.
+fn refers_to_inventory(reference: &str, ids: &BTreeSet<String>) -> bool {
+    ids.contains(reference)
+        || reference
+            .split_once('/')
+            .is_some_and(|(id, _)| ids.contains(id))
+}
+
+/// Every claim id a case file names: the `claim` of each claim reference and each id a
+/// restatement `restates`.
+fn claim_references(value: &serde_json::Value, out: &mut Vec<String>) {
+    match value {
+        serde_json::Value::Object(map) => {
+            for (key, v) in map {
+                match (key.as_str(), v) {
+                    ("claim", serde_json::Value::String(s)) => out.push(s.clone()),
+                    ("restates", serde_json::Value::Array(list)) => out.extend(
+                        list.iter()
+                            .map(|x| x.as_str().map_or_else(|| x.to_string(), str::to_string)),
+                    ),
+                    _ => claim_references(v, out),
+                }
+            }
+        }
+        serde_json::Value::Array(list) => list.iter().for_each(|v| claim_references(v, out)),
+        _ => {}
+    }
+}
+
+#[test]
+fn the_inventory_parser_reads_the_table() {
+    let md = "# t\n\n| id | where | claim |\n|---|---|---|\n| a-1 | 1 | x |\n| `b` | 2 | y |\n\nafter\n| not | a | row |\n";
+    let ids = inventory_ids(md);
+    assert_eq!(ids.into_iter().collect::<Vec<_>>(), ["a-1", "b"]);
+}
 
 #[test]
 fn every_claim_has_a_verdict() {
-    let all = cases::load_all(Path::new(concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/paper_cases"
-    )))
-    .unwrap();
-    let report = Report::from_cases(&all).unwrap();
-    let ids: BTreeSet<&str> = report.claims.iter().map(|c| c.claim.as_str()).collect();
-    for id in CLAIMS {
-        assert!(ids.contains(id), "no result for claim {id}");
-    }
+    let claims = claim_ids();
+    let all = common::cases().unwrap();
+    let report = common::report().unwrap();
+    let decided: BTreeSet<&str> = report.claims.iter().map(|c| c.claim.as_str()).collect();
+    let undecided: Vec<&String> = claims
+        .iter()
+        .filter(|id| !decided.contains(id.as_str()))
+        .collect();
+    assert!(
+        undecided.is_empty(),
+        "claims of {CLAIMS_MD} without a result: {undecided:?}"
+    );
+    let unknown: Vec<&str> = report
+        .claims
+        .iter()
+        .filter(|c| !refers_to_inventory(&c.claim, &claims))
+        .map(|c| c.id.as_str())
+        .collect();
+    assert!(
+        unknown.is_empty(),
+        "results whose claim is not in {CLAIMS_MD}: {unknown:?}"
+    );
     assert!(all.len() >= 15, "only {} paper cases", all.len());
     let unique: BTreeSet<&str> = report.claims.iter().map(|c| c.id.as_str()).collect();
     assert_eq!(
@@ -78,16 +112,42 @@ fn every_claim_has_a_verdict() {
     );
 }
 
+/// A case can only name claims of the inventory (a typo would leave a claim undecided and a
+/// result without a place in the paper).
+#[test]
+fn every_case_refers_to_inventory_claims() {
+    let claims = claim_ids();
+    let mut files = 0;
+    for entry in std::fs::read_dir(common::CASES_DIR).unwrap() {
+        let path = entry.unwrap().path();
+        if path.extension().and_then(|e| e.to_str()) != Some("yaml") {
+            continue;
+        }
+        let text = std::fs::read_to_string(&path).unwrap();
+        let value: serde_json::Value =
+            serde_saphyr::from_str(&text).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+        let mut refs = Vec::new();
+        claim_references(&value, &mut refs);
+        assert!(!refs.is_empty(), "{} names no claim", path.display());
+        let unknown: Vec<&String> = refs
+            .iter()
+            .filter(|r| !refers_to_inventory(r, &claims))
+            .collect();
+        assert!(
+            unknown.is_empty(),
+            "{}: claims not in {CLAIMS_MD}: {unknown:?}",
+            path.display()
+        );
+        files += 1;
+    }
+    assert!(files >= 15, "only {files} case files");
+}
+
 /// A positive verdict rests on a check that could have failed: every claim states its power,
 /// and none of the positive ones is weak.
 #[test]
 fn no_positive_verdict_is_weak() {
-    let all = cases::load_all(Path::new(concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/paper_cases"
-    )))
-    .unwrap();
-    let report = Report::from_cases(&all).unwrap();
+    let report = common::report().unwrap();
     let weak: Vec<&str> = report
         .claims
         .iter()

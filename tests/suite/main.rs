@@ -1,9 +1,12 @@
-//! Integration tests in one binary.
+//! Integration tests in one binary; the paper runs once for all of them (`common::report`).
 
 /// Property tests of the exact and floating algebra.
 mod algebra_props;
 /// The command line: exit codes, JSON shapes, determinism.
 mod cli;
+/// The paper's cases and their report, computed once for the binary.
+#[path = "../common/mod.rs"]
+mod common;
 /// docs/errata.md is what `orthocheck audit --all --markdown` prints.
 mod errata;
 /// The paper cases cover the claims this tool must decide.
