@@ -10,6 +10,9 @@ pub mod error;
 pub mod input;
 pub mod model;
 pub mod numfmt;
+pub mod provenance;
 pub mod report;
+pub mod seeds;
+pub mod studies;
 
 pub use error::{Error, Result};

@@ -170,10 +170,12 @@ fn claim_html(c: &ClaimResult, figures: &[&Figure]) -> String {
 /// The whole page.
 pub fn render(r: &Report) -> String {
     let mut s = String::from("<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">");
+    let title = r.paper.as_ref().map_or("", |p| p.title.as_str());
+    let author = r.paper.as_ref().map_or("", |p| p.author.as_str());
     let _ = write!(
         s,
         "<title>Reproducibility report — {}</title><style>{CSS}</style></head><body>",
-        escape(r.paper.title)
+        escape(title)
     );
     // header
     let p = &r.provenance;
@@ -181,8 +183,8 @@ pub fn render(r: &Report) -> String {
         s,
         "<h1>Reproducibility report</h1><p><em>{}</em> — {}</p><p class=\"meta\">{}; revision {}; date {}; \
          reproduce with <code>{}</code></p>",
-        escape(r.paper.title),
-        escape(r.paper.author),
+        escape(title),
+        escape(author),
         escape(&r.tool),
         escape(p.revision.as_deref().unwrap_or("unknown")),
         escape(p.date.as_deref().unwrap_or("unknown")),

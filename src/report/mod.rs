@@ -16,20 +16,7 @@ use crate::cases::Case;
 use crate::check::{ClaimResult, Verdict};
 use crate::error::Result;
 
-/// The paper under audit.
-#[derive(Clone, Debug, Serialize)]
-pub struct Paper {
-    /// Title.
-    pub title: &'static str,
-    /// Author.
-    pub author: &'static str,
-}
-
-/// The paper this tool audits.
-pub const PAPER: Paper = Paper {
-    title: "Distribution of degrees of freedom over structure and motion of rigid bodies",
-    author: "Mieczyslaw A. Kłopotek",
-};
+pub use crate::cases::Paper;
 
 /// Where a report comes from, so that it can be made again.
 #[derive(Clone, Debug, Default, Serialize)]
@@ -59,8 +46,10 @@ pub struct CaseSeeds {
 /// The whole report: what `report.json` holds.
 #[derive(Clone, Debug, Serialize)]
 pub struct Report {
-    /// The paper.
-    pub paper: Paper,
+    /// The paper, as its cases folder names it ([`crate::cases::load_paper`]); none for a
+    /// report built from claims alone.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub paper: Option<Paper>,
     /// Tool name and version.
     pub tool: String,
     /// Revision, date, command, seeds.
@@ -93,12 +82,20 @@ impl Report {
             *summary.entry(c.verdict.name().to_string()).or_default() += 1;
         }
         Report {
-            paper: PAPER,
+            paper: None,
             tool: format!("orthocheck {}", env!("CARGO_PKG_VERSION")),
             provenance,
             claims,
             figures,
             summary,
+        }
+    }
+
+    /// The same report, naming its paper.
+    pub fn with_paper(self, paper: Paper) -> Report {
+        Report {
+            paper: Some(paper),
+            ..self
         }
     }
 
@@ -143,7 +140,9 @@ impl Report {
     pub fn to_markdown(&self) -> String {
         let mut s = String::new();
         let _ = writeln!(s, "# Reproducibility report\n");
-        let _ = writeln!(s, "*{}* — {}\n", self.paper.title, self.paper.author);
+        if let Some(p) = &self.paper {
+            let _ = writeln!(s, "*{}* — {}\n", p.title, p.author);
+        }
         let _ = writeln!(s, "Produced by {}.\n", self.tool);
         let _ = writeln!(s, "## Summary\n\n| verdict | claims |\n|---|---|");
         for v in Verdict::ALL {

@@ -95,6 +95,12 @@ fn html_renderer() {
         command: "cargo run --release -- report".into(),
         seeds: Vec::new(),
     };
-    let page = html::render(&Report::with(claims(), vec![figure], provenance));
+    let paper = orthocheck::cases::load_paper(std::path::Path::new(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/paper_cases"
+    )))
+    .unwrap();
+    let report = Report::with(claims(), vec![figure], provenance).with_paper(paper);
+    let page = html::render(&report);
     settings().bind(|| insta::assert_snapshot!("render__html", page));
 }

@@ -1,0 +1,67 @@
+//! The paper's own metadata, `paper_cases/paper.yml`: its title and author.
+//!
+//! A separate file, not a case: the paper-case harness takes every `paper_cases/*.yaml` as a
+//! case, and this file checks nothing.
+
+use std::path::Path;
+
+use serde::{Deserialize, Serialize};
+
+use super::load::{invalid, parse_yaml};
+use crate::error::{Error, Result};
+
+/// The file of a cases folder that names the paper.
+pub const PAPER_FILE: &str = "paper.yml";
+
+/// The paper under audit, as the report names it.
+#[derive(Clone, Debug, Deserialize, Serialize, PartialEq, Eq)]
+#[serde(deny_unknown_fields)]
+pub struct Paper {
+    /// Title.
+    pub title: String,
+    /// Author.
+    pub author: String,
+}
+
+/// Read [`PAPER_FILE`] of the cases folder `dir`.
+pub fn load_paper(dir: &Path) -> Result<Paper> {
+    let path = dir.join(PAPER_FILE);
+    let text = std::fs::read_to_string(&path).map_err(|source| Error::Io {
+        path: path.clone(),
+        source,
+    })?;
+    parse_paper(&text, &path)
+}
+
+/// Parse the paper metadata; `path` names the file in errors. Title and author must say
+/// something.
+pub fn parse_paper(text: &str, path: &Path) -> Result<Paper> {
+    let paper: Paper = parse_yaml(text, path)?;
+    for (field, value) in [("title", &paper.title), ("author", &paper.author)] {
+        if value.trim().is_empty() {
+            return Err(invalid(text, path, field, "must not be empty".into()));
+        }
+    }
+    Ok(paper)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_paper_file_parses() {
+        let p = parse_paper("title: T\nauthor: A\n", Path::new("p.yml")).unwrap();
+        assert_eq!((p.title.as_str(), p.author.as_str()), ("T", "A"));
+    }
+
+    #[test]
+    fn errors_name_file_line_and_field() {
+        let e = parse_paper("title: T\nauthor: \"\"\n", Path::new("p.yml")).unwrap_err();
+        assert_eq!(e.to_string(), "p.yml:2: field `author`: must not be empty");
+        let e = parse_paper("title: T\nauthor: A\nyear: 1\n", Path::new("p.yml")).unwrap_err();
+        assert!(e.to_string().starts_with("p.yml:3:"), "{e}");
+        let e = parse_paper("title: T\n", Path::new("p.yml")).unwrap_err();
+        assert!(e.to_string().contains("author"), "{e}");
+    }
+}

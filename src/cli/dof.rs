@@ -1,0 +1,45 @@
+//! `orthocheck dof`: degrees of freedom (§2.1) and identifiability by Jacobian rank.
+
+use orthocheck::derivations::dof;
+use orthocheck::{report, Error};
+
+use super::emit;
+
+/// Arguments of `dof`.
+#[derive(clap::Args)]
+pub struct Args {
+    /// Number of points p.
+    #[arg(long, required_unless_present = "table")]
+    points: Option<usize>,
+    /// Number of frames k.
+    #[arg(long, required_unless_present = "table")]
+    frames: Option<usize>,
+    /// The whole grid p = 1..max-points, k = 1..max-frames.
+    #[arg(long, conflicts_with_all = ["points", "frames"])]
+    table: bool,
+    /// Largest p of the grid.
+    #[arg(long, default_value_t = 8, requires = "table")]
+    max_points: usize,
+    /// Largest k of the grid.
+    #[arg(long, default_value_t = 6, requires = "table")]
+    max_frames: usize,
+    /// Seed of the generic scene.
+    #[arg(long, default_value_t = 1)]
+    seed: u64,
+    /// JSON output.
+    #[arg(long)]
+    json: bool,
+}
+
+/// One (p, k), or the whole grid.
+pub fn run(a: Args) -> Result<(), Error> {
+    if a.table {
+        let rows = dof::table(a.max_points, a.max_frames, a.seed)?;
+        emit(a.json, &rows, |r| report::dof_table_text(r));
+    } else {
+        let (p, k) = (a.points.unwrap_or(0), a.frames.unwrap_or(0));
+        let r = dof::identifiability(p, k, a.seed)?;
+        emit(a.json, &r, report::dof_text);
+    }
+    Ok(())
+}

@@ -1,0 +1,124 @@
+//! The subcommands, one file each: its argument struct and one `run`.
+//!
+//! The command line lives in the binary crate, not in the library: argument parsing (clap),
+//! progress on standard error and printing are the binary's business, so the library carries
+//! no clap types and never prints. A `run` only validates its arguments, calls the library
+//! and prints through the `report` renderers; it computes nothing itself.
+
+mod audit;
+mod dof;
+mod family;
+mod identify;
+mod membership;
+mod noise;
+mod report;
+mod solve;
+mod synth;
+
+use std::io::Write as _;
+use std::path::Path;
+
+use clap::Subcommand;
+use orthocheck::error::InputLocation;
+use orthocheck::input::{load_tracks, PointOrder};
+use orthocheck::model::Tracks;
+use orthocheck::Error;
+
+/// Every subcommand.
+#[derive(Subcommand)]
+pub enum Command {
+    /// Reproduce the paper: run every case and write report.md, report.json and report.html.
+    Report(report::Args),
+    /// Count degrees of freedom (§2.1) and decide identifiability by Jacobian rank.
+    Dof(dof::Args),
+    /// Machine-check the paper's printed formulas: one item, a claim's items, or all.
+    Audit(audit::Args),
+    /// Recover the squared edges (and the body) from a tracks file.
+    Solve(solve::Args),
+    /// Run a noise study of a paper case with your own levels, trials and seed.
+    Noise(noise::Args),
+    /// Find which frame-2 point is which frame-1 point (two frames; frame 2's order unknown).
+    Identify(identify::Args),
+    /// Decide which points belong to one rigid body (two frames, correspondences known).
+    Membership(membership::Args),
+    /// Print members of the one-parameter family of bodies two frames allow.
+    Family(family::Args),
+    /// Write a tracks file of a seeded random scene, to try the solvers on.
+    Synth(synth::Args),
+}
+
+impl Command {
+    /// Run the subcommand.
+    pub fn run(self) -> Result<(), Error> {
+        match self {
+            Command::Report(a) => report::run(a),
+            Command::Dof(a) => dof::run(a),
+            Command::Audit(a) => audit::run(a),
+            Command::Solve(a) => solve::run(a),
+            Command::Noise(a) => noise::run(a),
+            Command::Identify(a) => identify::run(a),
+            Command::Membership(a) => membership::run(a),
+            Command::Family(a) => family::run(a),
+            Command::Synth(a) => synth::run(a),
+        }
+    }
+}
+
+/// Print `value` as pretty JSON when `json`, else as `text` renders it.
+fn emit<T: serde::Serialize>(json: bool, value: &T, text: impl FnOnce(&T) -> String) {
+    if json {
+        println!("{}", to_json(value));
+    } else {
+        print!("{}", text(value));
+    }
+}
+
+/// Pretty JSON (an error object in the impossible case that serialising fails).
+fn to_json<T: serde::Serialize>(v: &T) -> String {
+    serde_json::to_string_pretty(v).unwrap_or_else(|e| format!("{{\"error\": \"{e}\"}}"))
+}
+
+/// A tracks file that must hold exactly two frames.
+fn two_frames(path: &Path, order: PointOrder) -> Result<Tracks, Error> {
+    let t = load_tracks(path, order)?;
+    if t.frames.len() != 2 {
+        return Err(in_file(
+            path,
+            Error::InvalidInput(format!(
+                "{} frames: this command takes exactly two",
+                t.frames.len()
+            )),
+        ));
+    }
+    Ok(t)
+}
+
+/// An input that parsed but cannot be used is still the user's file's fault: name it.
+fn in_file(path: &Path, e: Error) -> Error {
+    match e {
+        Error::InvalidInput(message) => Error::Input {
+            location: InputLocation {
+                file: path.to_path_buf(),
+                line: None,
+                column: None,
+                field: None,
+            },
+            message,
+        },
+        e => e,
+    }
+}
+
+/// Write a file that must not exist yet: a user's file is never overwritten.
+fn write_new(path: &Path, text: &str) -> Result<(), Error> {
+    let io = |source| Error::Io {
+        path: path.to_path_buf(),
+        source,
+    };
+    let mut f = std::fs::OpenOptions::new()
+        .write(true)
+        .create_new(true)
+        .open(path)
+        .map_err(io)?;
+    f.write_all(text.as_bytes()).map_err(io)
+}

@@ -1,0 +1,93 @@
+//! `orthocheck noise`: a paper case's noise study with the user's levels, trials and seed.
+
+use std::io::{IsTerminal, Write as _};
+use std::path::PathBuf;
+use std::sync::atomic::{AtomicUsize, Ordering};
+
+use clap::ValueEnum;
+use orthocheck::studies::noise_request::{ModelChoice, NoiseRequest, RequestError};
+use orthocheck::{cases, report, Error};
+
+use super::emit;
+
+/// Arguments of `noise`.
+#[derive(clap::Args)]
+pub struct Args {
+    /// The noise case's id (e.g. ex2-noise, ex3-noise).
+    #[arg(long)]
+    case: String,
+    /// Relative error levels ε, comma-separated (default: the case's).
+    #[arg(long, value_delimiter = ',')]
+    levels: Vec<f64>,
+    /// Trials per level and model (default: the case's).
+    #[arg(long)]
+    trials: Option<usize>,
+    /// Seed (default: the case's).
+    #[arg(long)]
+    seed: Option<u64>,
+    /// Noise model (default: both).
+    #[arg(long, value_enum)]
+    model: Option<ModelArg>,
+    /// Folder of case files.
+    #[arg(long, default_value = "paper_cases")]
+    cases: PathBuf,
+    /// JSON output.
+    #[arg(long)]
+    json: bool,
+}
+
+/// The noise models, as the command line names them.
+#[derive(Clone, Copy, ValueEnum)]
+enum ModelArg {
+    RelativeCoordinate,
+    RelativeLength,
+}
+
+impl From<ModelArg> for ModelChoice {
+    fn from(m: ModelArg) -> ModelChoice {
+        match m {
+            ModelArg::RelativeCoordinate => ModelChoice::RelativeCoordinate,
+            ModelArg::RelativeLength => ModelChoice::RelativeLength,
+        }
+    }
+}
+
+/// Resolve the request against the cases, run it with a trial counter on a terminal, print.
+pub fn run(a: Args) -> Result<(), Error> {
+    let all = cases::load_all(&a.cases)?;
+    let request = NoiseRequest {
+        case: a.case.clone(),
+        levels: a.levels,
+        trials: a.trials,
+        seed: a.seed,
+        model: a.model.map(ModelChoice::from),
+    };
+    let study = request.resolve(&all).map_err(|e| match e {
+        RequestError::NoCase => {
+            Error::InvalidInput(format!("no case `{}` in {}", a.case, a.cases.display()))
+        }
+        RequestError::NotNoiseStudy => {
+            Error::InvalidInput(format!("case `{}` is not a noise study", a.case))
+        }
+        RequestError::BadLevel(e) => {
+            Error::InvalidInput(format!("--levels: {e} is not a finite ε ≥ 0"))
+        }
+        RequestError::Study(e) => e,
+    })?;
+    let total = study.total_trials();
+    let done = AtomicUsize::new(0);
+    let show = std::io::stderr().is_terminal();
+    let progress = |n: usize| {
+        let d = done.fetch_add(n, Ordering::Relaxed) + n;
+        if show {
+            eprint!("\r{d}/{total} trials");
+            let _ = std::io::stderr().flush();
+        }
+    };
+    let summaries = study.run(&progress);
+    if show {
+        eprintln!();
+    }
+    emit(a.json, &summaries, |s| report::noise_text(&a.case, s));
+    Ok(())
+}

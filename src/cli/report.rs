@@ -1,0 +1,54 @@
+//! `orthocheck report`: reproduce the whole paper and write the report files.
+
+use std::io::{IsTerminal, Write as _};
+use std::path::PathBuf;
+use std::time::Instant;
+
+use orthocheck::report::Report;
+use orthocheck::{cases, provenance, Error};
+
+/// Arguments of `report`.
+#[derive(clap::Args)]
+pub struct Args {
+    /// Output folder.
+    #[arg(long, default_value = "target/orthocheck-report")]
+    out: PathBuf,
+    /// Folder of case files.
+    #[arg(long, default_value = "paper_cases")]
+    cases: PathBuf,
+}
+
+/// Run every case, write report.md, report.json and report.html, print the verdict counts.
+pub fn run(args: Args) -> Result<(), Error> {
+    let all = cases::load_all(&args.cases)?;
+    let paper = cases::load_paper(&args.cases)?;
+    let started = Instant::now();
+    // only for a run that takes long enough to wonder about
+    let show = || std::io::stderr().is_terminal() && started.elapsed().as_secs_f64() > 1.0;
+    let progress = |i: usize, id: &str| {
+        if show() {
+            eprint!("\r{}/{} cases ({id})            ", i + 1, all.len());
+            let _ = std::io::stderr().flush();
+        }
+    };
+    let r = Report::run(&all, provenance::report_provenance(), &progress)?.with_paper(paper);
+    if show() {
+        eprintln!();
+    }
+    r.write(&args.out)?;
+    let out = &args.out;
+    println!(
+        "wrote {}, {} and {} ({} claims, {} figures)",
+        out.join("report.md").display(),
+        out.join("report.json").display(),
+        out.join("report.html").display(),
+        r.claims.len(),
+        r.figures.len()
+    );
+    for (verdict, n) in &r.summary {
+        if *n > 0 {
+            println!("  {verdict}: {n}");
+        }
+    }
+    Ok(())
+}

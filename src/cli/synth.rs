@@ -1,0 +1,68 @@
+//! `orthocheck synth`: a tracks file of a seeded random scene, to try the solvers on.
+
+use std::path::PathBuf;
+
+use clap::ValueEnum;
+use orthocheck::input::{tracks_to_csv, tracks_to_yaml};
+use orthocheck::seeds::synthetic;
+use orthocheck::{report, Error};
+
+use super::write_new;
+
+/// Arguments of `synth`.
+#[derive(clap::Args)]
+pub struct Args {
+    /// Number of points.
+    #[arg(long)]
+    points: usize,
+    /// Number of frames.
+    #[arg(long)]
+    frames: usize,
+    /// Seed.
+    #[arg(long)]
+    seed: u64,
+    /// Relative error up to ε on every image coordinate.
+    #[arg(long)]
+    noise: Option<f64>,
+    /// Output format.
+    #[arg(long, value_enum, default_value = "yaml")]
+    format: FormatArg,
+    /// Write to this file (refused if it exists); standard output otherwise.
+    #[arg(long)]
+    out: Option<PathBuf>,
+}
+
+/// The tracks file formats.
+#[derive(Clone, Copy, ValueEnum)]
+enum FormatArg {
+    Yaml,
+    Csv,
+}
+
+/// Make the scene, write its tracks with a header naming the truth.
+pub fn run(a: Args) -> Result<(), Error> {
+    if a.points == 0 || a.frames == 0 {
+        return Err(Error::InvalidInput(
+            "--points and --frames must be at least 1".into(),
+        ));
+    }
+    if let Some(e) = a.noise.filter(|e| !(e.is_finite() && *e >= 0.0)) {
+        return Err(Error::InvalidInput(format!(
+            "--noise {e}: must be a finite ε ≥ 0"
+        )));
+    }
+    let s = synthetic(a.points, a.frames, a.seed, a.noise);
+    let header = report::synth_header(&s.scene, a.seed, a.noise);
+    let body = match a.format {
+        FormatArg::Yaml => tracks_to_yaml(&s.tracks),
+        FormatArg::Csv => tracks_to_csv(&s.tracks),
+    };
+    let text = format!("{header}{body}");
+    match a.out {
+        Some(path) => write_new(&path, &text),
+        None => {
+            print!("{text}");
+            Ok(())
+        }
+    }
+}
