@@ -62,6 +62,9 @@ pub enum Error {
         /// The cause.
         message: String,
     },
+    /// Standard output was closed by its reader (a pipe into `head`): not a failure.
+    #[error("standard output closed")]
+    ClosedOutput,
     /// A case or tracks file is malformed.
     #[error("{location}: {message}")]
     Input {

@@ -2,7 +2,7 @@
 //! maps errors to exit codes.
 //!
 //! Exit codes: 0 the command ran (whatever the verdicts); 1 a check could not be carried out
-//! (a numerical failure); 2 bad input or usage (clap exits with 2 on usage errors itself).
+//! (a numerical failure, a write that failed); 2 bad input or usage (clap exits with 2 on usage errors itself).
 
 mod cli;
 
@@ -25,7 +25,7 @@ struct Cli {
 /// The exit code of a failed command.
 fn exit_code(e: &Error) -> u8 {
     match e {
-        Error::Numerical(_) => 1,
+        Error::Numerical(_) | Error::Write { .. } => 1,
         _ => 2,
     }
 }
@@ -33,7 +33,8 @@ fn exit_code(e: &Error) -> u8 {
 fn main() -> ExitCode {
     let cli = Cli::parse();
     match cli.command.run() {
-        Ok(()) => ExitCode::SUCCESS,
+        // a reader that stopped reading is the Unix way of saying "enough"
+        Ok(()) | Err(Error::ClosedOutput) => ExitCode::SUCCESS,
         Err(e) => {
             eprintln!("error: {e}");
             ExitCode::from(exit_code(&e))

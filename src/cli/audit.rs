@@ -6,7 +6,7 @@ use orthocheck::cases::{Case, CaseCheck, TwofoldCase};
 use orthocheck::report::Report;
 use orthocheck::{cases, check, report, Error};
 
-use super::emit;
+use super::{emit, out};
 
 /// Arguments of `audit`.
 #[derive(clap::Args)]
@@ -42,12 +42,12 @@ pub fn run(a: Args) -> Result<(), Error> {
     let loaded = cases::load_all(&a.cases)?;
     if a.markdown {
         let r = Report::from_cases(&loaded)?;
-        print!("{}", report::errata_markdown(&r.claims));
+        out(&report::errata_markdown(&r.claims))?;
         return Ok(());
     }
     if let Some(case) = a.id.as_deref().and_then(|id| twofold_case(&loaded, id)) {
         let audit = check::audit_twofold(case)?;
-        emit(a.json, &audit, report::twofold_text);
+        emit(a.json, &audit, report::twofold_text)?;
         return Ok(());
     }
     let mut items = check::audit_all(&loaded)?;
@@ -59,6 +59,6 @@ pub fn run(a: Args) -> Result<(), Error> {
             )));
         }
     }
-    emit(a.json, &items, |items| report::audit_text(items, !a.all));
+    emit(a.json, &items, |items| report::audit_text(items, !a.all))?;
     Ok(())
 }

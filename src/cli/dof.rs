@@ -35,11 +35,11 @@ pub struct Args {
 pub fn run(a: Args) -> Result<(), Error> {
     if a.table {
         let rows = dof::table(a.max_points, a.max_frames, a.seed)?;
-        emit(a.json, &rows, |r| report::dof_table_text(r));
+        emit(a.json, &rows, |r| report::dof_table_text(r))?;
     } else {
         let (p, k) = (a.points.unwrap_or(0), a.frames.unwrap_or(0));
         let r = dof::identifiability(p, k, a.seed)?;
-        emit(a.json, &r, report::dof_text);
+        emit(a.json, &r, report::dof_text)?;
     }
     Ok(())
 }

@@ -31,6 +31,6 @@ pub fn run(a: Args) -> Result<(), Error> {
     let members =
         sample_family(&t.frames[0], &t.frames[1], a.samples).map_err(|e| in_file(&a.input, e))?;
     let view = report::family_view(&t.names, &members);
-    emit(a.json, &view, |v| report::family_text(v));
+    emit(a.json, &view, |v| report::family_text(v))?;
     Ok(())
 }

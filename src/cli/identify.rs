@@ -50,6 +50,6 @@ pub fn run(a: Args) -> Result<(), Error> {
     let t = two_frames(&a.input, PointOrder::AsListed)?;
     let r = identity::identify(&t.frames[0], &t.frames[1], a.method.into(), a.top)
         .map_err(|e| in_file(&a.input, e))?;
-    emit(a.json, &r, report::identify_text);
+    emit(a.json, &r, report::identify_text)?;
     Ok(())
 }

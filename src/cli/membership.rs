@@ -46,6 +46,6 @@ pub fn run(a: Args) -> Result<(), Error> {
             distance: *d,
         })
         .collect();
-    emit(a.json, &rows, |r| report::membership_text(r, tolerance));
+    emit(a.json, &rows, |r| report::membership_text(r, tolerance))?;
     Ok(())
 }

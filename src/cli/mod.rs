@@ -65,12 +65,52 @@ impl Command {
 }
 
 /// Print `value` as pretty JSON when `json`, else as `text` renders it.
-fn emit<T: serde::Serialize>(json: bool, value: &T, text: impl FnOnce(&T) -> String) {
+fn emit<T: serde::Serialize>(
+    json: bool,
+    value: &T,
+    text: impl FnOnce(&T) -> String,
+) -> Result<(), Error> {
     if json {
-        println!("{}", to_json(value));
+        out(&format!("{}\n", to_json(value)))
     } else {
-        print!("{}", text(value));
+        out(&text(value))
     }
+}
+
+/// Write to standard output through the output guard: a non-finite number in the text is an
+/// error (exit 1) rather than output; a closed pipe ends the command quietly; any other
+/// write failure (a full disk) is an error.
+fn out(text: &str) -> Result<(), Error> {
+    use std::io::Write as _;
+    if let Some(bad) = non_finite_token(text) {
+        return Err(Error::Numerical(format!(
+            "a non-finite value (`{bad}`) reached the output; nothing was printed"
+        )));
+    }
+    let mut stdout = std::io::stdout().lock();
+    match stdout
+        .write_all(text.as_bytes())
+        .and_then(|()| stdout.flush())
+    {
+        Ok(()) => Ok(()),
+        Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => Err(Error::ClosedOutput),
+        Err(e) => Err(Error::Write {
+            path: "standard output".into(),
+            message: e.to_string(),
+        }),
+    }
+}
+
+/// The first word of `text` that spells a non-finite float as the formatters print one.
+fn non_finite_token(text: &str) -> Option<&str> {
+    text.split(|c: char| !(c.is_ascii_alphanumeric() || c == '-' || c == '.'))
+        .map(|w| w.trim_matches('.'))
+        .find(|w| {
+            matches!(
+                *w,
+                "NaN" | "-NaN" | "nan" | "inf" | "-inf" | "infinity" | "-infinity"
+            )
+        })
 }
 
 /// Pretty JSON (an error object in the impossible case that serialising fails).

@@ -88,6 +88,6 @@ pub fn run(a: Args) -> Result<(), Error> {
     if show {
         eprintln!();
     }
-    emit(a.json, &summaries, |s| report::noise_text(&a.case, s));
+    emit(a.json, &summaries, |s| report::noise_text(&a.case, s))?;
     Ok(())
 }

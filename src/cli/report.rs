@@ -1,5 +1,6 @@
 //! `orthocheck report`: reproduce the whole paper and write the report files.
 
+use super::out;
 use std::io::{IsTerminal, Write as _};
 use std::path::PathBuf;
 use std::time::Instant;
@@ -22,6 +23,8 @@ pub struct Args {
 pub fn run(args: Args) -> Result<(), Error> {
     let all = cases::load_all(&args.cases)?;
     let paper = cases::load_paper(&args.cases)?;
+    // an unwritable folder is found before the report is computed
+    orthocheck::report::prepare_output_dir(&args.out)?;
     let started = Instant::now();
     // only for a run that takes long enough to wonder about
     let show = || std::io::stderr().is_terminal() && started.elapsed().as_secs_f64() > 1.0;
@@ -36,18 +39,18 @@ pub fn run(args: Args) -> Result<(), Error> {
         eprintln!();
     }
     r.write(&args.out)?;
-    let out = &args.out;
-    println!(
-        "wrote {}, {} and {} ({} claims, {} figures)",
-        out.join("report.md").display(),
-        out.join("report.json").display(),
-        out.join("report.html").display(),
+    let dir = &args.out;
+    out(&format!(
+        "wrote {}, {} and {} ({} claims, {} figures)\n",
+        dir.join("report.md").display(),
+        dir.join("report.json").display(),
+        dir.join("report.html").display(),
         r.claims.len(),
         r.figures.len()
-    );
+    ))?;
     for (verdict, n) in &r.summary {
         if *n > 0 {
-            println!("  {verdict}: {n}");
+            out(&format!("  {verdict}: {n}\n"))?;
         }
     }
     Ok(())

@@ -7,7 +7,7 @@ use orthocheck::derivations::solver::{solve_tracks, Method};
 use orthocheck::input::{load_tracks, PointOrder};
 use orthocheck::{report, Error};
 
-use super::{in_file, to_json};
+use super::{in_file, out, to_json};
 
 /// Arguments of `solve`.
 #[derive(clap::Args)]
@@ -52,9 +52,9 @@ pub fn run(a: Args) -> Result<(), Error> {
     let tracks = load_tracks(&a.input, PointOrder::ByName)?;
     let solved = solve_tracks(&tracks, a.method.into()).map_err(|e| in_file(&a.input, e))?;
     if a.json {
-        println!("{}", to_json(&report::solve_json(&solved)));
+        out(&format!("{}\n", to_json(&report::solve_json(&solved))))?;
     } else {
-        print!("{}", report::solve_text(&solved));
+        out(&report::solve_text(&solved))?;
     }
     Ok(())
 }

@@ -7,7 +7,7 @@ use orthocheck::input::{tracks_to_csv, tracks_to_yaml};
 use orthocheck::seeds::synthetic;
 use orthocheck::{report, Error};
 
-use super::write_new;
+use super::{out, write_new};
 
 /// Arguments of `synth`.
 #[derive(clap::Args)]
@@ -61,7 +61,7 @@ pub fn run(a: Args) -> Result<(), Error> {
     match a.out {
         Some(path) => write_new(&path, &text),
         None => {
-            print!("{text}");
+            out(&text)?;
             Ok(())
         }
     }

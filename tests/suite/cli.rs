@@ -104,6 +104,9 @@ fn report_writes_both_files_deterministically() {
             command: field("command").unwrap_or_default(),
             seeds: here.provenance.seeds.clone(),
         },
+    )
+    .with_paper(
+        orthocheck::cases::load_paper(std::path::Path::new(crate::common::CASES_DIR)).unwrap(),
     );
     assert!(
         ja == same.to_json(),
@@ -531,4 +534,39 @@ fn report_refuses_a_symlinked_output_file() {
         !out.join("report.md").exists(),
         "nothing is written when one name is refused"
     );
+}
+
+/// A reader that stops reading ends the command quietly (exit 0, as Unix tools do); a full
+/// disk is an error (exit 1) that says it could not write, never a panic.
+#[cfg(target_os = "linux")]
+#[test]
+fn closed_pipes_end_quietly_and_full_disks_are_errors() {
+    use std::io::Read as _;
+    use std::process::Stdio;
+    let mut child = Command::new(env!("CARGO_BIN_EXE_orthocheck"))
+        .args(["dof", "--table", "--json"])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut first = [0u8; 16];
+    child.stdout.take().unwrap().read_exact(&mut first).unwrap();
+    // the pipe's reader is gone now
+    let out = child.wait_with_output().unwrap();
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(!String::from_utf8_lossy(&out.stderr).contains("panicked"));
+    let full = std::fs::File::create("/dev/full").unwrap();
+    let out = Command::new(env!("CARGO_BIN_EXE_orthocheck"))
+        .args(["dof", "--table"])
+        .stdout(full)
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{err}");
+    assert!(err.contains("cannot write"), "{err}");
 }
