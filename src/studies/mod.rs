@@ -1,0 +1,6 @@
+//! Experiments: everything seeded and repeated. Studies return numbers and exact values,
+//! never text.
+
+pub mod audit;
+pub mod points;
+pub mod twofold;
