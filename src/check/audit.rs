@@ -67,17 +67,13 @@ pub(super) fn points_tolerance(p: &PointCheck) -> Tolerance {
 
 /// The random-point check's numbers, as details.
 pub(super) fn points_details<'b>(r: ClaimBuilder<'b>, p: &PointCheck) -> ClaimBuilder<'b> {
-    r.detail(
-        "random points agreeing",
-        Value::count_of(p.agreeing, p.points),
-    )
-    .detail("seed of the points", p.seed)
-    .detail("degree of the difference", p.degree as usize)
-    .detail("sample set size per coordinate", PointCheck::sample_size())
-    .detail(
-        "log10 of the failure bound",
-        Value::real(p.log10_failure_bound()),
-    )
+    r.detail("seed of the points", p.seed)
+        .detail("degree of the difference", p.degree as usize)
+        .detail("sample set size per coordinate", PointCheck::sample_size())
+        .detail(
+            "log10 of the failure bound",
+            Value::real(p.log10_failure_bound()),
+        )
 }
 
 /// Longest expansion shown in full; longer ones are named by their size only.

@@ -150,7 +150,14 @@ pub(super) fn polynomial(b: &ResultBuilder, case: &TwofoldCase) -> Result<ClaimR
     r = r
         .detail("product over the four sign classes / printed", product)
         .detail("quadratic in a², b², c²", s.quadratic_in_squares);
-    r = points_details(r, &s.points).detail(
+    r = points_details(
+        r.computed(
+            "random points agreeing",
+            Value::count_of(s.points.agreeing, s.points.points),
+        ),
+        &s.points,
+    )
+    .detail(
         "mutant: random points agreeing",
         Value::count_of(mutant_agree, s.points.points),
     );

@@ -208,7 +208,8 @@ pub fn formulas_count_the_jacobian(
     let int = |n: usize| Some(BigRational::from_integer(n.into()));
     grid.iter().all(|r| {
         at(unknowns, r) == int(r.parameters)
-            && at(measurements, r) == int(r.count.measurements.max(0) as usize)
+            // the Jacobian's rows: two image coordinates per point and frame
+            && at(measurements, r) == int(2 * r.count.points * r.count.frames)
     })
 }
 
