@@ -14,7 +14,10 @@ use crate::error::{Error, Result};
 
 fn rank_evidence(e: Evidence, r: &Identifiability) -> Evidence {
     let e = e
-        .with("jacobian rows", usize::try_from(r.count.measurements).unwrap_or_default())
+        .with(
+            "jacobian rows",
+            usize::try_from(r.count.measurements).unwrap_or_default(),
+        )
         .with("jacobian columns", r.parameters)
         .with("svd rank", r.jacobian_rank)
         .with("exact rank", r.exact_rank)
