@@ -1,25 +1,27 @@
-//! The formula audit: every displayed formula and derivation step against this crate's own
-//! derivation, exactly over ℚ and at seeded random rational points; printed arithmetic;
-//! dedicated computations; textual errata.
-
-use std::collections::BTreeMap;
+//! The formula audit, judged: every displayed formula, printed arithmetic, dedicated
+//! computation and textual erratum of `formula_audit.yaml` becomes a claim result. The
+//! computations are `studies::audit`'s; here they are only compared and judged.
 
 use num_rational::BigRational;
-use num_traits::{One, ToPrimitive};
+use num_traits::One;
 use serde::Serialize;
 
-use super::{ClaimResult, Evidence, OldTolerance, ResultBuilder, Verdict};
-use crate::algebra::{agree_at_random_points, Poly, RatFn};
-use crate::cases::{
-    ArithmeticItem, ClaimRef, ComputedItem, ComputedTest, FormulaAuditCase, FormulaItem, Place,
-    Relation, TextItem,
+use super::{
+    ClaimBuilder, ClaimResult, Power, ResultBuilder, Tolerance, ToleranceSource, Value, Verdict,
 };
-use crate::derivations::formulas::{derived, quadratic_in_squares, NAMES};
-use crate::derivations::two_frames::fourth_relation;
-use crate::derivations::twofold::{frame_equation, relation_squared};
-use crate::error::{Error, Result};
+use crate::algebra::{Poly, RatFn};
+use crate::cases::{
+    ArithmeticItem, Case, CaseCheck, FormulaAuditCase, FormulaItem, Place, TextItem,
+};
+use crate::derivations::formulas::NAMES;
+use crate::error::Result;
+use crate::report::values::{quantities_text, value_text};
+use crate::studies::audit::{
+    arithmetic, computed, formulas, ArithmeticFinding, Form, FormulaFinding,
+};
+use crate::studies::points::PointCheck;
 
-/// One audited item: what `orthocheck audit` prints and the report shows.
+/// One audited item: what `orthocheck audit` prints.
 #[derive(Clone, Debug, Serialize)]
 pub struct AuditItem {
     /// The result id (`claim/suffix`).
@@ -45,7 +47,36 @@ pub struct AuditItem {
     pub verdict: Verdict,
 }
 
-/// Longest expansion shown in full; longer ones are named only.
+/// What an audit item shows beside its claim result.
+struct Shown {
+    place: Place,
+    printed: String,
+    defect: Option<String>,
+    should_be: String,
+}
+
+/// The tolerance of a random-point check: the Schwartz–Zippel bound on the probability that
+/// a false identity agrees at every point.
+pub(super) fn points_tolerance(p: &PointCheck) -> Tolerance {
+    Tolerance::bound(
+        p.failure_bound(),
+        ToleranceSource::ErrorBound,
+        "Schwartz–Zippel: a false identity passes with probability at most (degree of the difference / size of the sample set) per point, to the power of the number of points",
+    )
+}
+
+/// The random-point check's numbers, as details.
+pub(super) fn points_details<'b>(r: ClaimBuilder<'b>, p: &PointCheck) -> ClaimBuilder<'b> {
+    r.detail("seed of the points", p.seed)
+        .detail("degree of the difference", p.degree as usize)
+        .detail("sample set size per coordinate", PointCheck::sample_size())
+        .detail(
+            "log10 of the failure bound",
+            Value::real(p.log10_failure_bound()),
+        )
+}
+
+/// Longest expansion shown in full; longer ones are named by their size only.
 const SHOWN: usize = 400;
 
 fn show(f: &RatFn) -> String {
@@ -60,448 +91,250 @@ fn show(f: &RatFn) -> String {
     }
 }
 
-struct Defs {
-    map: BTreeMap<String, RatFn>,
-}
-
-impl Defs {
-    fn parse(&self, text: &str, keep: &[String]) -> Result<RatFn> {
-        let mut map = self.map.clone();
-        map.retain(|k, _| !keep.contains(k));
-        RatFn::parse_with(text, &map).map_err(|source| Error::Formula {
-            formula: text.to_string(),
-            source,
-        })
-    }
-}
-
-/// Run the whole audit.
-pub fn audit(case: &FormulaAuditCase) -> Result<Vec<AuditItem>> {
-    let mut defs = Defs {
-        map: BTreeMap::new(),
-    };
-    for d in &case.definitions {
-        let v = defs.parse(&d.printed, &[])?;
-        defs.map.insert(d.name.clone(), v);
-    }
-    let mut out = Vec::new();
-    for f in &case.formulas {
-        let item = formula(f, &defs, case)?;
-        if let (Some(name), Some(text)) = (&f.defines, f.corrected.as_ref().or(f.printed.as_ref()))
-        {
-            let v = defs.parse(text, &f.symbols)?;
-            defs.map.insert(name.clone(), v);
+/// The judge of a formula: the accepted form must agree at every random point and be
+/// quadratic where the paper says so; printed → identity verified, corrected → erratum.
+fn formula_verdict(f: &FormulaFinding) -> Verdict {
+    match &f.accepted {
+        None => Verdict::Contradicted,
+        Some(a) if !a.points.all_agree() || a.quadratic.iter().any(|q| !q.1) => {
+            Verdict::Contradicted
         }
-        out.push(item);
-    }
-    out.extend(case.arithmetic.iter().map(arithmetic));
-    for c in &case.computed {
-        out.push(computed(c));
-    }
-    out.extend(case.text.iter().map(text));
-    Ok(out)
-}
-
-fn item(claim: &ClaimRef, id: &str, place: &Place) -> AuditItem {
-    AuditItem {
-        id: format!("{}/{id}", claim.claim),
-        claim: claim.claim.clone(),
-        place: place.clone(),
-        lines: claim.lines.clone(),
-        printed: String::new(),
-        defect: None,
-        should_be: String::new(),
-        method: String::new(),
-        finding: String::new(),
-        verdict: Verdict::Contradicted,
+        Some(a) if a.form == Form::Printed => Verdict::IdentityVerified,
+        Some(_) => Verdict::Erratum,
     }
 }
 
-fn formula(f: &FormulaItem, defs: &Defs, case: &FormulaAuditCase) -> Result<AuditItem> {
-    let target = derived(&f.derived)
-        .ok_or_else(|| Error::InvalidInput(format!("no derivation `{}`", f.derived)))?;
+fn formula_power(f: &FormulaFinding) -> Power {
+    let Some(a) = &f.accepted else {
+        return Power::none("no form of the formula matched the derivation");
+    };
+    let Some(m) = &a.mutant else {
+        return Power::none("the formula is zero: no term to change");
+    };
+    let which = match a.form {
+        Form::Printed => "the printed formula",
+        Form::Corrected => "the corrected formula",
+    };
+    Power::mutant(
+        m.rejected(),
+        &format!(
+            "{which} with the sign of its term {} flipped: the exact comparison rejects it and the random points disagree",
+            Poly::from_monomial(m.term.clone())
+        ),
+    )
+}
+
+fn formula_result(b: &ResultBuilder, f: &FormulaItem, x: &FormulaFinding) -> (ClaimResult, Shown) {
     let what = NAMES.iter().find(|n| n.0 == f.derived).map_or("", |n| n.1);
-    // does `text` match the derivation? returns the ratio, when it does
-    let matches = |text: &str| -> Result<Option<BigRational>> {
-        let e = defs.parse(text, &f.symbols)?;
-        Ok(match f.relation {
-            Relation::Equal => e.equals(&target).then(BigRational::one),
-            Relation::Proportional => e.ratio_to(&target),
-        })
-    };
-    let printed_ok = match &f.printed {
-        Some(p) => matches(p)?,
-        None => None,
-    };
-    let corrected_ok = match &f.corrected {
-        Some(c) => matches(c)?,
-        None => None,
-    };
-    let (accepted, ratio, verdict) = match (&printed_ok, &corrected_ok) {
-        (Some(k), _) => (f.printed.clone(), k.clone(), Verdict::IdentityVerified),
-        (None, Some(k)) => (f.corrected.clone(), k.clone(), Verdict::Erratum),
-        (None, None) => (None, BigRational::one(), Verdict::Contradicted),
-    };
-    let mut it = item(&f.claim, &f.id, &f.place);
-    it.printed = f
-        .printed
-        .clone()
-        .or_else(|| f.printed_text.clone())
-        .unwrap_or_default();
-    it.defect = f.defect.clone();
-    it.should_be = match (&verdict, &f.corrected) {
+    let verdict = formula_verdict(x);
+    let mut r = b.claim(&f.claim).suffix(&f.id);
+    if let Some(p) = &f.printed {
+        r = r.printed("formula", Value::formula(p.clone()));
+    }
+    if let Some(t) = &f.printed_text {
+        r = r.printed("as printed (LaTeX)", Value::formula(t.clone()));
+    }
+    if let Some(m) = x.printed_matches {
+        r = r.computed("printed = derivation", m);
+    }
+    if let Some(m) = x.corrected_matches {
+        r = r.computed("corrected = derivation", m);
+    }
+    r = r
+        .method("exact expansion over ℚ (rational functions compared by cross-multiplication), then Schwartz–Zippel evaluation at seeded random rational points; a mutant of the accepted form through the same checks")
+        .detail("where", f.place.to_string())
+        .power(formula_power(x));
+    if let Some(d) = &f.defect {
+        r = r.detail("defect", d);
+    }
+    let should_be = match (&verdict, &f.corrected) {
         (Verdict::Erratum, Some(c)) => format!("{c}   (= {what})"),
-        _ => format!("{what}: {}", show(&target)),
+        _ => format!("{what}: {}", show(&x.target)),
     };
-    let mut finding = Vec::new();
-    let mut quadratic = true;
-    if let Some(text) = &accepted {
-        let e = defs.parse(text, &f.symbols)?;
-        let sz = agree_at_random_points(&e, &target, &ratio, case.evaluation_points, case.seed);
-        if sz.agreeing != sz.points {
-            // the expansion and the evaluation disagree: never expected, reported as such
-            finding.push(format!(
-                "random points disagree: {} of {}",
-                sz.agreeing, sz.points
-            ));
-            it.verdict = Verdict::Contradicted;
+    if let Some(a) = &x.accepted {
+        if a.ratio != BigRational::one() {
+            r = r.computed("ratio to the derivation", Value::exact(&a.ratio));
         }
-        finding.push(format!(
-            "{} equals the derivation{} exactly over ℚ; {} of {} random rational points agree (seed {})",
-            if verdict == Verdict::Erratum { "the corrected formula" } else { "the printed formula" },
-            if ratio == BigRational::one() { String::new() } else { format!(" times {ratio}") },
-            sz.agreeing,
-            sz.points,
-            sz.seed
-        ));
-        for group in &f.quadratic_in {
-            let vars: Vec<&str> = group.iter().map(String::as_str).collect();
-            let q = e.to_poly().is_some_and(|p| quadratic_in_squares(&p, &vars))
-                || (e
-                    .den
-                    .variables()
-                    .iter()
-                    .all(|v| !vars.contains(&v.as_str()))
-                    && quadratic_in_squares(&e.num, &vars));
-            quadratic &= q;
-            finding.push(format!(
-                "quadratic in the squares of {}: {q}",
-                vars.join(", ")
-            ));
+        r = r.computed(
+            "random points agreeing",
+            Value::count_of(a.points.agreeing, a.points.points),
+        );
+        for (group, q) in &a.quadratic {
+            r = r.computed(
+                &format!("quadratic in the squares of {}", group.join(", ")),
+                *q,
+            );
         }
-        if sz.agreeing == sz.points {
-            it.verdict = if quadratic {
-                verdict
-            } else {
-                Verdict::Contradicted
-            };
+        r = points_details(r.tolerance(points_tolerance(&a.points)), &a.points);
+        if let Some(m) = &a.mutant {
+            r = r
+                .detail("mutant: exact comparison rejects", m.exact_rejected)
+                .detail(
+                    "mutant: random points agreeing",
+                    Value::count_of(m.points.agreeing, m.points.points),
+                );
         }
     } else {
-        finding.push("neither the printed nor a corrected formula equals the derivation".into());
-        it.verdict = Verdict::Contradicted;
+        r = r.tolerance(Tolerance::exact("exact comparison over ℚ"));
     }
     if verdict == Verdict::Erratum {
-        finding.insert(
-            0,
-            match &f.printed {
-                Some(_) => "the printed formula differs from the derivation".into(),
-                None => "the printed text is not a formula".into(),
-            },
-        );
+        r = r.correction(should_be.clone());
+    } else {
+        r = r.detail("should be", Value::formula(should_be.clone()));
     }
-    it.method = "exact expansion over ℚ (rational functions compared by cross-multiplication), then Schwartz–Zippel evaluation at seeded random rational points".into();
-    it.finding = finding.join("; ");
-    Ok(it)
+    let shown = Shown {
+        place: f.place.clone(),
+        printed: f
+            .printed
+            .clone()
+            .or_else(|| f.printed_text.clone())
+            .unwrap_or_default(),
+        defect: f.defect.clone(),
+        should_be,
+    };
+    (r.verdict(verdict), shown)
 }
 
-fn arithmetic(a: &ArithmeticItem) -> AuditItem {
-    let mut it = item(&a.claim, &a.id, &a.place);
-    let vals: BTreeMap<String, BigRational> = a
-        .values
-        .iter()
-        .map(|(k, v)| (k.clone(), BigRational::from_integer((*v).into())))
-        .collect();
-    let results: Vec<Option<BigRational>> = a
-        .steps
-        .iter()
-        .map(|s| Poly::parse(s).ok().and_then(|p| p.eval(&vals)))
-        .collect();
-    let ok = results.iter().all(|r| r.as_ref() == Some(&a.equals.value));
-    it.printed = format!("{} = {}", a.steps.join(" = "), a.equals.text);
-    it.should_be = results
-        .iter()
-        .map(|r| r.as_ref().map_or("?".into(), |v| v.to_string()))
-        .collect::<Vec<_>>()
-        .join(" = ");
-    it.method = format!(
-        "exact evaluation of every printed step{}",
-        if vals.is_empty() {
-            String::new()
-        } else {
-            format!(
-                " at {}",
-                a.values
-                    .iter()
-                    .map(|(k, v)| format!("{k} = {v}"))
-                    .collect::<Vec<_>>()
-                    .join(", ")
-            )
-        }
-    );
-    it.finding = format!("every step equals {}: {ok}", a.equals.text);
-    it.verdict = if ok {
+/// The judge of printed arithmetic: every step equals the printed value exactly.
+fn arithmetic_verdict(x: &ArithmeticFinding, printed: &BigRational) -> Verdict {
+    let ok = !x.steps.is_empty() && x.steps.iter().all(|s| s.as_ref() == Some(printed));
+    if ok {
         Verdict::Reproduced
     } else {
         Verdict::Erratum
+    }
+}
+
+fn arithmetic_result(b: &ResultBuilder, a: &ArithmeticItem) -> (ClaimResult, Shown) {
+    let x = arithmetic(a);
+    let verdict = arithmetic_verdict(&x, &a.equals.value);
+    let mut r = b
+        .claim(&a.claim)
+        .suffix(&a.id)
+        .printed("steps", Value::formula(a.steps.join(" = ")))
+        .printed("value", &a.equals)
+        .tolerance(Tolerance::exact("exact rational arithmetic"))
+        .power(Power::exact_value(
+            "only the exact value passes: a printed value off by any amount, even in the last digit, is an erratum",
+        ))
+        .method("exact evaluation of every printed step over ℚ")
+        .detail("where", a.place.to_string());
+    for (k, v) in &a.values {
+        r = r.detail(k, *v);
+    }
+    let values: Vec<Value> = x
+        .steps
+        .iter()
+        .map(|s| {
+            s.as_ref()
+                .map_or(Value::label("does not evaluate"), Value::exact)
+        })
+        .collect();
+    for (s, v) in a.steps.iter().zip(&values) {
+        r = r.computed(s, v.clone());
+    }
+    let should_be = values
+        .iter()
+        .map(value_text)
+        .collect::<Vec<_>>()
+        .join(" = ");
+    if verdict == Verdict::Erratum {
+        r = r.correction(should_be.clone());
+    }
+    let shown = Shown {
+        place: a.place.clone(),
+        printed: format!("{} = {}", a.steps.join(" = "), a.equals.text),
+        defect: None,
+        should_be,
     };
-    it
+    (r.verdict(verdict), shown)
 }
 
-fn computed(c: &ComputedItem) -> AuditItem {
-    let mut it = item(&c.claim, &c.id, &c.place);
-    it.printed = c.printed.clone();
-    match &c.test {
-        ComputedTest::FourthRelation { seed } => {
-            let r = fourth_relation(*seed);
-            let values: Vec<String> = r
-                .counterexample_values
-                .iter()
-                .map(|v| v.to_string())
-                .collect();
-            it.should_be =
-                "the fourth relation is neither a linear combination of the other three \
-                            nor implied by them; it holds on real bodies because one set of depths \
-                            serves all four triangles (a consistent choice of the signs)"
-                    .into();
-            it.method = format!(
-                "(1) F_PQR = λ₁F_PQT + λ₂F_QRT + λ₃F_RPT solved for λ over the rational functions of \
-                 the projections, monomial by monomial, exactly; (2) an exact point where the three \
-                 relations hold and the fourth does not; (3) exact ranks of the frame-differenced \
-                 equations of two frames at a rational scene (seed {seed})"
-            );
-            it.finding = format!(
-                "linear dependence: {}{}; at the squared depth differences {} the four equations are \
-                 ({}), so the three do not imply the fourth; ranks of the differenced equations: {} \
-                 for the three triangles, {} with PQR added",
-                r.linear,
-                r.obstruction.map_or(String::new(), |o| format!(" ({o})")),
-                r.counterexample
-                    .iter()
-                    .map(|(k, v)| format!("{k} = {v}"))
-                    .collect::<Vec<_>>()
-                    .join(", "),
-                values.join(", "),
-                r.rank_three,
-                r.rank_four
-            );
-            let zero = BigRational::from_integer(0.into());
-            let independent = !r.linear
-                && r.counterexample_values[..3].iter().all(|v| *v == zero)
-                && r.counterexample_values[3] != zero;
-            it.verdict = if independent {
-                Verdict::Contradicted
-            } else {
-                Verdict::IdentityVerified
-            };
-        }
-        ComputedTest::BFormula => {
-            // X = (−B ± s)/(2A) with s² = Δ = B² − 4AC must solve A X² + B X + C = 0
-            let ok = [1i64, -1].iter().all(|sign| {
-                let (a, b, c, s) = (
-                    Poly::var("A"),
-                    Poly::var("B"),
-                    Poly::var("C"),
-                    Poly::var("s"),
-                );
-                let x2a = &(-&b) + &s.scale(&BigRational::from_integer((*sign).into()));
-                // 4A·(A X² + B X + C) with X = x2a / (2A): x2a² + 2B·x2a + 4AC
-                let e = &(&(&x2a * &x2a)
-                    + &(&b * &x2a).scale(&BigRational::from_integer(2.into())))
-                    + &(&a * &c).scale(&BigRational::from_integer(4.into()));
-                let delta = &(&b * &b) - &(&a * &c).scale(&BigRational::from_integer(4.into()));
-                let reduced = crate::derivations::appendix_a::in_squares(&e, "s", "S")
-                    .map(|p| p.substitute("S", &delta));
-                reduced.is_some_and(|p| p.is_zero())
-            });
-            it.should_be = "b² = (−(c² f_cb + f_b) ± √Δ_b) / (2 f_{b²}) solves f_{b²} b⁴ + b² (c² f_cb + f_b) + (…) = 0; b is its square root where that is non-negative".into();
-            it.method = "with A = f_{b²}, B = c² f_cb + f_b, C = the constant part and s = √Δ_b: 4A(AX² + BX + C) for X = (−B ± s)/(2A), reduced by s² = B² − 4AC, exactly over ℚ".into();
-            it.finding = format!("both signs solve the quadratic: {ok}");
-            it.verdict = if ok {
-                Verdict::IdentityVerified
-            } else {
-                Verdict::Contradicted
-            };
-        }
-        ComputedTest::SignedRelation { edges } => {
-            let e: Vec<&str> = edges.iter().map(String::as_str).collect();
-            let ok = e.len() == 3 && {
-                let e3 = [e[0], e[1], e[2]];
-                let target = frame_equation(e3, "i");
-                [(1, 1), (1, -1), (-1, 1), (-1, -1)]
-                    .iter()
-                    .all(|&(s1, s2)| {
-                        // √X₀ = s₁√X₁ + s₂√X₂, i.e. √X₀ − s₁√X₁ − s₂√X₂ = 0
-                        relation_squared(e3, [1, -s1, -s2]) == target
-                    })
-            };
-            it.should_be = format!(
-                "eq. p3f3sqr of the triangle with edges {} (every sign choice)",
-                edges.join(", ")
-            );
-            it.method = "each of the four sign choices squared twice symbolically, against the triangle's twofold-squared polynomial, exactly over ℚ".into();
-            it.finding = format!("all four sign choices give the polynomial: {ok}");
-            it.verdict = if ok {
-                Verdict::IdentityVerified
-            } else {
-                Verdict::Contradicted
-            };
-        }
-        ComputedTest::ConstantSymbols { listed, used } => {
-            let missing: Vec<&String> = used.iter().filter(|u| !listed.contains(u)).collect();
-            let extra: Vec<&String> = listed.iter().filter(|l| !used.contains(l)).collect();
-            it.should_be = format!("the symbols the expression uses: {}", used.join(", "));
-            it.method = "the listed symbols against those of the printed expression".into();
-            it.finding = format!(
-                "not listed: {}; listed but not in the expression: {}",
-                join_or_none(&missing),
-                join_or_none(&extra)
-            );
-            it.verdict = if missing.is_empty() && extra.is_empty() {
-                Verdict::Reproduced
-            } else {
-                Verdict::Erratum
-            };
-        }
-        ComputedTest::OrderedQuadruples { n, printed } => {
-            let rows: Vec<(usize, usize, usize)> = n
-                .iter()
-                .map(|&n| {
-                    let formula =
-                        n * n.saturating_sub(1) * n.saturating_sub(2) * n.saturating_sub(3);
-                    // enumerate the ordered choices of four distinct points
-                    let mut count = 0;
-                    for a in 0..n {
-                        for b in (0..n).filter(|b| *b != a) {
-                            for c in (0..n).filter(|c| *c != a && *c != b) {
-                                count += (0..n).filter(|d| *d != a && *d != b && *d != c).count();
-                            }
-                        }
-                    }
-                    (n, formula, count)
-                })
-                .collect();
-            let ok = rows.iter().all(|r| r.1 == r.2)
-                && rows
-                    .first()
-                    .is_some_and(|r| printed.to_integer().and_then(|v| v.to_usize()) == Some(r.1));
-            it.should_be = "n(n−1)(n−2)(n−3) ordered choices of four of n points".into();
-            it.method = "the formula against an enumeration of the ordered choices".into();
-            it.finding = rows
-                .iter()
-                .map(|(n, f, c)| format!("n = {n}: formula {f}, enumerated {c}"))
-                .collect::<Vec<_>>()
-                .join("; ");
-            it.verdict = Verdict::holds(ok);
-        }
+fn text_result(b: &ResultBuilder, t: &TextItem) -> (ClaimResult, Shown) {
+    let r = b
+        .claim(&t.claim)
+        .suffix(&t.id)
+        .printed("text", Value::label(t.printed.clone()))
+        .computed("effect", Value::label(t.effect.clone()))
+        .correction(t.corrected.clone())
+        .power(Power::none("a reading, not a computation"))
+        .method("reading against the rest of the paper and the computations")
+        .detail("where", t.place.to_string());
+    let shown = Shown {
+        place: t.place.clone(),
+        printed: t.printed.clone(),
+        defect: None,
+        should_be: t.corrected.clone(),
+    };
+    (r.verdict(Verdict::Erratum), shown)
+}
+
+/// Every item of the audit, judged, with what its audit line shows.
+fn judged(b: &ResultBuilder, case: &FormulaAuditCase) -> Result<Vec<(ClaimResult, Shown)>> {
+    let mut out = Vec::new();
+    for (f, x) in case.formulas.iter().zip(formulas(case)?) {
+        out.push(formula_result(b, f, &x));
     }
-    it
-}
-
-fn join_or_none(v: &[&String]) -> String {
-    if v.is_empty() {
-        "none".into()
-    } else {
-        v.iter().map(|s| s.as_str()).collect::<Vec<_>>().join(", ")
+    out.extend(case.arithmetic.iter().map(|a| arithmetic_result(b, a)));
+    out.extend(
+        case.computed
+            .iter()
+            .map(|c| computed_result(b, c, &computed(&c.test))),
+    );
+    out.extend(case.text.iter().map(|t| text_result(b, t)));
+    for (r, s) in &mut out {
+        // the audit spans the paper: each item belongs to its own section
+        r.section = s.place.section.clone();
     }
-}
-
-fn text(t: &TextItem) -> AuditItem {
-    let mut it = item(&t.claim, &t.id, &t.place);
-    it.printed = t.printed.clone();
-    it.should_be = t.corrected.clone();
-    it.method = "reading against the rest of the paper and the computations".into();
-    it.finding = t.effect.clone();
-    it.verdict = Verdict::Erratum;
-    it
+    Ok(out)
 }
 
 /// The audit as claim results (one per item).
 pub(super) fn check(b: &ResultBuilder, case: &FormulaAuditCase) -> Result<Vec<ClaimResult>> {
-    let claims: BTreeMap<String, &ClaimRef> = case
-        .formulas
-        .iter()
-        .map(|f| (&f.claim, &f.id))
-        .chain(case.arithmetic.iter().map(|a| (&a.claim, &a.id)))
-        .chain(case.computed.iter().map(|c| (&c.claim, &c.id)))
-        .chain(case.text.iter().map(|t| (&t.claim, &t.id)))
-        .map(|(c, id)| (format!("{}/{id}", c.claim), c))
-        .collect();
-    Ok(audit(case)?
-        .into_iter()
-        .filter_map(|it| {
-            let claim = claims.get(&it.id)?;
-            let suffix = it.id.split_once('/').map(|x| x.1.to_string());
-            let mut ev = Evidence::new(&it.method).with("where", it.place.to_string());
-            if let Some(d) = &it.defect {
-                ev = ev.with("defect", d);
-            }
-            ev = ev.with("should be", &it.should_be);
-            let mut r = b.result(
-                claim,
-                suffix.as_deref(),
-                it.verdict,
-                it.printed.clone(),
-                it.finding.clone(),
-                Some(OldTolerance::exact("exact arithmetic over ℚ")),
-                ev,
-            );
-            // the audit spans the paper: each item belongs to its own section
-            r.section = it.place.section.clone();
-            Some(r)
-        })
-        .collect())
+    Ok(judged(b, case)?.into_iter().map(|(r, _)| r).collect())
+}
+
+fn item(r: &ClaimResult, s: Shown) -> AuditItem {
+    AuditItem {
+        id: r.id.clone(),
+        claim: r.claim.clone(),
+        place: s.place,
+        lines: r.lines.clone(),
+        printed: s.printed,
+        defect: s.defect,
+        should_be: s.should_be,
+        method: r.evidence.method.clone(),
+        finding: quantities_text(&r.computed),
+        verdict: r.verdict,
+    }
 }
 
 /// Every audit item of the given cases: the formula audit's items and eq. p3f3sqr.
-pub fn audit_all(cases: &[crate::cases::Case]) -> Result<Vec<AuditItem>> {
-    use crate::cases::CaseCheck;
+pub fn audit_all(cases: &[Case]) -> Result<Vec<AuditItem>> {
     let mut out = Vec::new();
     for case in cases {
+        let b = ResultBuilder::new(case);
         match &case.check {
-            CaseCheck::FormulaAudit(c) => out.extend(audit(c)?),
+            CaseCheck::FormulaAudit(c) => {
+                out.extend(judged(&b, c)?.into_iter().map(|(r, s)| item(&r, s)));
+            }
             CaseCheck::TwofoldSquared(t) => {
+                let r = super::twofold::polynomial(&b, t)?;
                 let a = super::twofold::audit(t)?;
-                let claim = &t.polynomial.claim;
-                out.push(AuditItem {
-                    id: claim.claim.clone(),
-                    claim: claim.claim.clone(),
+                let shown = Shown {
                     place: Place {
                         section: case.source.section.clone(),
                         label: case.source.label.clone(),
                         macros: Vec::new(),
                     },
-                    lines: claim.lines.clone(),
                     printed: format!("{} = 0", a.transcription),
                     defect: None,
                     should_be: format!(
                         "±√(a²−aᵢ²) ± √(b²−bᵢ²) ± √(c²−cᵢ²) = 0 squared twice: {} = 0",
                         a.derived
                     ),
-                    method: "symbolic twofold squaring with √A, √B, √C as variables reduced by (√X)² = X; exact expansion over ℚ; Schwartz–Zippel evaluation".into(),
-                    finding: format!(
-                        "derived / printed per sign pattern: {}; quadratic in a², b², c²: {}; {} of {} random rational points agree (seed {})",
-                        a.ratios
-                            .iter()
-                            .map(|r| r.clone().unwrap_or_else(|| "not a multiple".into()))
-                            .collect::<Vec<_>>()
-                            .join(", "),
-                        a.quadratic_in_squares,
-                        a.evaluation.2,
-                        a.evaluation.0,
-                        a.evaluation.1
-                    ),
-                    verdict: a.verdict,
-                });
+                };
+                out.push(item(&r, shown));
             }
             _ => {}
         }
@@ -518,28 +351,109 @@ pub fn counts(items: &[AuditItem]) -> Vec<(Verdict, usize)> {
         .collect()
 }
 
+mod computed;
+use computed::computed_result;
+
 #[cfg(test)]
 mod tests {
+    use super::computed::computed_verdict;
     use super::*;
+    use crate::algebra::rat;
+    use crate::cases::ComputedTest;
+    use crate::studies::audit::ComputedFinding;
+
+    fn points(agreeing: usize) -> PointCheck {
+        PointCheck {
+            points: 4,
+            seed: 1,
+            agreeing,
+            degree: 2,
+        }
+    }
+
+    fn finding(form: Form, agreeing: usize, quadratic: bool) -> FormulaFinding {
+        FormulaFinding {
+            target: RatFn::var("x"),
+            printed_matches: Some(form == Form::Printed),
+            corrected_matches: None,
+            accepted: Some(crate::studies::audit::Accepted {
+                form,
+                ratio: rat(1, 1),
+                points: points(agreeing),
+                quadratic: vec![(vec!["c".into()], quadratic)],
+                mutant: None,
+            }),
+        }
+    }
 
     #[test]
-    fn the_b_formula_solves_its_quadratic() {
-        let c = ComputedItem {
-            claim: ClaimRef {
-                claim: "x".into(),
-                section: None,
-                lines: "1".into(),
-                quote: "q".into(),
-            },
-            id: "b".into(),
-            place: Place {
-                section: "A".into(),
-                label: None,
-                macros: vec![],
-            },
-            printed: "b = …".into(),
-            test: ComputedTest::BFormula,
+    fn the_formula_judge_on_both_sides() {
+        assert_eq!(
+            formula_verdict(&finding(Form::Printed, 4, true)),
+            Verdict::IdentityVerified
+        );
+        assert_eq!(
+            formula_verdict(&finding(Form::Corrected, 4, true)),
+            Verdict::Erratum
+        );
+        // one random point disagreeing, or a formula not quadratic, contradicts
+        assert_eq!(
+            formula_verdict(&finding(Form::Printed, 3, true)),
+            Verdict::Contradicted
+        );
+        assert_eq!(
+            formula_verdict(&finding(Form::Printed, 4, false)),
+            Verdict::Contradicted
+        );
+        let mut none = finding(Form::Printed, 4, true);
+        none.accepted = None;
+        assert_eq!(formula_verdict(&none), Verdict::Contradicted);
+    }
+
+    #[test]
+    fn the_arithmetic_judge_on_both_sides() {
+        let x = ArithmeticFinding {
+            steps: vec![Some(rat(18, 1)), Some(rat(18, 1))],
         };
-        assert_eq!(computed(&c).verdict, Verdict::IdentityVerified);
+        assert_eq!(arithmetic_verdict(&x, &rat(18, 1)), Verdict::Reproduced);
+        assert_eq!(arithmetic_verdict(&x, &rat(17, 1)), Verdict::Erratum);
+        let bad = ArithmeticFinding {
+            steps: vec![Some(rat(18, 1)), None],
+        };
+        assert_eq!(arithmetic_verdict(&bad, &rat(18, 1)), Verdict::Erratum);
+    }
+
+    #[test]
+    fn the_b_formula_solves_its_quadratic_and_its_mutant_does_not() {
+        let x = computed(&ComputedTest::BFormula);
+        assert!(matches!(
+            x,
+            ComputedFinding::BFormula {
+                solves: true,
+                mutant_rejected: true
+            }
+        ));
+        assert_eq!(computed_verdict(&x), Verdict::IdentityVerified);
+    }
+
+    #[test]
+    fn the_quadruple_judge_on_both_sides() {
+        let ok = ComputedFinding::OrderedQuadruples {
+            rows: vec![(4, 24, 24)],
+            printed_matches: true,
+        };
+        assert_eq!(computed_verdict(&ok), Verdict::Reproduced);
+        let off = ComputedFinding::OrderedQuadruples {
+            rows: vec![(4, 24, 24)],
+            printed_matches: false,
+        };
+        assert_eq!(computed_verdict(&off), Verdict::Contradicted);
+    }
+
+    #[test]
+    fn a_flipped_term_is_rejected() {
+        let e = RatFn::parse("(x^2 - y)/(x + 1)").unwrap();
+        let (_, m) = crate::studies::audit::flip_one_term(&e).unwrap();
+        assert!(!m.equals(&e) && m.ratio_to(&e).is_none());
     }
 }

@@ -1,31 +1,33 @@
 //! Claims of §2.1 and the abstract's minimality and two-frame statements.
 
-use std::collections::BTreeMap;
-
 use num_bigint::BigInt;
-use num_rational::BigRational;
 
-use super::{ClaimResult, Evidence, OldTolerance, Power, ResultBuilder, Tolerance, Verdict};
+use super::figure::{Figure, Layer, Plot, Shape, Style};
+use super::{ClaimBuilder, ClaimResult, Evidence, Power, ResultBuilder, Tolerance, Value, Verdict};
 use crate::algebra::Poly;
 use crate::cases::{DofCountCase, DofIdentifiabilityCase};
-use crate::derivations::dof::{count, identifiability, table, Identifiability};
+use crate::derivations::dof::{
+    count, deficient_for_every_p, formulas_count_the_jacobian, identifiability, identifiable_at,
+    is_minimum, smallest_identifiable, table, Identifiability, SHAPE_POINTS,
+};
 use crate::error::{Error, Result};
-use crate::numfmt::sig;
 
 fn rank_evidence(e: Evidence, r: &Identifiability) -> Evidence {
-    e.with(
-        "jacobian",
-        format!("{} × {}", r.count.measurements, r.parameters),
-    )
-    .with("svd rank", r.jacobian_rank)
-    .with("exact rank", r.exact_rank)
-    .with("exact rank method", format!("{:?}", r.exact_method))
-    .with("deficiency (dimension of the ambiguity)", r.deficiency)
-    .with(
-        "condition number",
-        r.condition.map_or("— (rank-deficient)".into(), sig),
-    )
-    .with("scene seed", r.seed)
+    let e = e
+        .with(
+            "jacobian rows",
+            usize::try_from(r.count.measurements).unwrap_or_default(),
+        )
+        .with("jacobian columns", r.parameters)
+        .with("svd rank", r.jacobian_rank)
+        .with("exact rank", r.exact_rank)
+        .with("exact rank method", format!("{:?}", r.exact_method))
+        .with("deficiency (dimension of the ambiguity)", r.deficiency);
+    let e = match r.condition {
+        Some(c) => e.with("condition number", Value::real(c)),
+        None => e.with("condition number", Value::label("none (rank-deficient)")),
+    };
+    e.with("scene seed", r.seed)
 }
 
 /// The printed worked counts.
@@ -72,56 +74,52 @@ fn parse_formula(text: &str) -> Result<Poly> {
     })
 }
 
-fn eval_pk(p: &Poly, points: usize, frames: usize) -> Option<BigRational> {
-    let values = BTreeMap::from([
-        ("p".to_string(), BigRational::from_integer(points.into())),
-        ("k".to_string(), BigRational::from_integer(frames.into())),
-    ]);
-    p.eval(&values)
-}
+/// The claim "no number of points suffices" is about two frames; the number is the claim's.
+const TWO_FRAMES: usize = 2;
 
-fn cells(list: &[&Identifiability]) -> String {
+fn cells<'b>(b: ClaimBuilder<'b>, name: &str, list: &[&Identifiability]) -> ClaimBuilder<'b> {
     if list.is_empty() {
-        return "none".into();
+        return b.detail(name, Value::label("none"));
     }
-    list.iter()
-        .map(|r| format!("(p={}, k={})", r.count.points, r.count.frames))
-        .collect::<Vec<_>>()
-        .join(", ")
+    list.iter().fold(b, |b, r| {
+        b.detail(
+            name,
+            Value::label(format!("(p={}, k={})", r.count.points, r.count.frames)),
+        )
+    })
 }
 
-/// The count formula, the minimum, and two-frame insufficiency, over the grid.
-pub(super) fn check_identifiability(
-    b: &ResultBuilder,
-    case: &DofIdentifiabilityCase,
-) -> Result<Vec<ClaimResult>> {
-    let grid = table(case.max_points, case.max_frames, case.seed)?;
-    let grid_desc = format!(
-        "p = 1..{}, k = 1..{}, seed {}",
-        case.max_points, case.max_frames, case.seed
-    );
-    let mut out = Vec::new();
-    let cat = |pred: &dyn Fn(&crate::derivations::dof::Identifiability) -> bool| -> Vec<[f64; 2]> {
+fn grid_details<'b>(b: ClaimBuilder<'b>, case: &DofIdentifiabilityCase) -> ClaimBuilder<'b> {
+    b.detail("grid: largest p", case.max_points)
+        .detail("grid: largest k", case.max_frames)
+        .detail("grid: scene seed", case.seed)
+}
+
+fn figure(b: &ResultBuilder, case: &DofIdentifiabilityCase, grid: &[Identifiability]) {
+    let cat = |pred: &dyn Fn(&Identifiability) -> bool| -> Vec<[f64; 2]> {
         grid.iter()
             .filter(|r| pred(r))
             .map(|r| [r.count.points as f64, r.count.frames as f64])
             .collect()
     };
-    b.figure(super::figure::Figure {
+    b.figure(Figure {
         id: "fig-dof-grid".into(),
         claim: case.formula.claim.claim.clone(),
         title: "§2.1: the count against the Jacobian rank".into(),
-        caption: format!("Every p and k of the grid ({grid_desc}): what the paper's count says, and what the exact rank of the Jacobian decides."),
-        panels: vec![super::figure::Plot {
+        caption: format!(
+            "Every p and k of the grid (p = 1..{}, k = 1..{}, seed {}): what the paper's count says, and what the exact rank of the Jacobian decides.",
+            case.max_points, case.max_frames, case.seed
+        ),
+        panels: vec![Plot {
             title: "points and frames".into(),
             x_label: "points p".into(),
             y_label: "frames k".into(),
             equal_aspect: false,
             log_x: false,
             layers: vec![
-                super::figure::Layer::new("count: too few", super::figure::Shape::Points, super::figure::Style::Other, cat(&|r| r.count.balance < 0)),
-                super::figure::Layer::new("count: enough, rank: ambiguous", super::figure::Shape::Points, super::figure::Style::Mark, cat(&|r| r.count.balance >= 0 && r.deficiency > 0)),
-                super::figure::Layer::new("count: enough, rank: identifiable", super::figure::Shape::Points, super::figure::Style::Computed, cat(&|r| r.count.balance >= 0 && r.deficiency == 0)),
+                Layer::new("count: too few", Shape::Points, Style::Other, cat(&|r| r.count.balance < 0)),
+                Layer::new("count: enough, rank: ambiguous", Shape::Points, Style::Mark, cat(&|r| r.count.balance >= 0 && r.deficiency > 0)),
+                Layer::new("count: enough, rank: identifiable", Shape::Points, Style::Computed, cat(&|r| r.count.balance >= 0 && r.deficiency == 0)),
             ],
             // room below the grid for the legend
             window: Some((
@@ -130,20 +128,26 @@ pub(super) fn check_identifiability(
             )),
         }],
     });
+}
 
-    // The printed formula against the parametrisation's size, and balance as a necessary
-    // (not sufficient) condition.
+/// The judge of the count formula: it counts the Jacobian in every cell, the float and exact
+/// ranks agree, and no identifiable cell is unbalanced (balance is necessary).
+fn formula_holds(counts: bool, ranks_agree: bool, identifiable_unbalanced: usize) -> bool {
+    counts && ranks_agree && identifiable_unbalanced == 0
+}
+
+fn formula_claim(
+    b: &ResultBuilder,
+    case: &DofIdentifiabilityCase,
+    grid: &[Identifiability],
+) -> Result<ClaimResult> {
     let unknowns = parse_formula(&case.formula.unknowns)?;
     let measurements = parse_formula(&case.formula.measurements)?;
-    let formula_matches = grid.iter().all(|r| {
-        eval_pk(&unknowns, r.count.points, r.count.frames)
-            == Some(BigRational::from_integer(r.parameters.into()))
-            && eval_pk(&measurements, r.count.points, r.count.frames)
-                == Some(BigRational::from_integer(
-                    (2 * r.count.points * r.count.frames).into(),
-                ))
-    });
-    let identifiable_unbalanced: Vec<&Identifiability> = grid
+    let counts = formulas_count_the_jacobian(grid, &unknowns, &measurements);
+    // the mutant: the coefficient of k in the unknowns raised by one
+    let mutant = &unknowns + &Poly::var("k");
+    let mutant_counts = formulas_count_the_jacobian(grid, &mutant, &measurements);
+    let unbalanced: Vec<&Identifiability> = grid
         .iter()
         .filter(|r| r.deficiency == 0 && r.count.balance < 0)
         .collect();
@@ -152,100 +156,135 @@ pub(super) fn check_identifiability(
         .filter(|r| r.count.balance >= 0 && r.deficiency > 0)
         .collect();
     let ranks_agree = grid.iter().all(|r| r.jacobian_rank == r.exact_rank);
-    out.push(
-        b.result(
-            &case.formula.claim,
-            None,
-            Verdict::holds(formula_matches && identifiable_unbalanced.is_empty() && ranks_agree),
-            format!(
-                "unknowns {}, measurements {}; balance needed",
-                case.formula.unknowns, case.formula.measurements
-            ),
-            format!(
-            "the formulas count the Jacobian's columns and rows in every cell: {formula_matches}; \
-             identifiable yet unbalanced cells: {}; balance is necessary but not sufficient \
-             (balanced yet rank-deficient: {})",
-            cells(&identifiable_unbalanced),
-            cells(&balanced_deficient)
-        ),
-            Some(OldTolerance::exact("integer counts and exact ranks")),
-            Evidence::new(
-                "printed formulas evaluated exactly over the grid; exact Jacobian rank per cell",
-            )
-            .with("grid", &grid_desc)
-            .with("float rank = exact rank in every cell", ranks_agree),
-        ),
+    let holds = formula_holds(counts, ranks_agree, unbalanced.len());
+    let r = b
+        .claim(&case.formula.claim)
+        .printed("unknowns", Value::formula(case.formula.unknowns.clone()))
+        .printed("measurements", Value::formula(case.formula.measurements.clone()))
+        .computed("the formulas count the Jacobian's columns and rows in every cell", counts)
+        .computed("identifiable yet unbalanced cells", unbalanced.len())
+        .computed("balanced yet rank-deficient cells (balance is necessary, not sufficient)", balanced_deficient.len())
+        .tolerance(Tolerance::exact("integer counts and exact ranks"))
+        .power(Power::mutant(
+            !formula_holds(mutant_counts, ranks_agree, unbalanced.len()),
+            &format!("the unknowns formula with the coefficient of k raised by one ({mutant}): it no longer counts the Jacobian's columns"),
+        ))
+        .method("printed formulas evaluated exactly over the grid; exact Jacobian rank per cell")
+        .detail("float rank = exact rank in every cell", ranks_agree);
+    let r = cells(
+        grid_details(r, case),
+        "identifiable yet unbalanced",
+        &unbalanced,
     );
+    Ok(cells(r, "balanced yet rank-deficient", &balanced_deficient).verdict(Verdict::holds(holds)))
+}
 
-    // The minimum: the smallest p and k with deficiency 0, among bodies with a shape (p ≥ 2).
-    // A single point has nothing to recover but its image position, so (p=1, k=1) is
-    // trivially "identifiable" and says nothing about structure and motion.
-    let identifiable: Vec<&Identifiability> = grid
-        .iter()
-        .filter(|r| r.deficiency == 0 && r.count.points >= 2)
-        .collect();
+fn minimum_claim(
+    b: &ResultBuilder,
+    case: &DofIdentifiabilityCase,
+    grid: &[Identifiability],
+) -> ClaimResult {
+    let (p, k) = (case.minimum.points, case.minimum.frames);
+    let (min_p, min_k) = smallest_identifiable(grid);
+    // the same check for a claimed minimum one frame or one point smaller
+    let fewer_frames = is_minimum(grid, p, k.saturating_sub(1));
+    let fewer_points = is_minimum(grid, p.saturating_sub(1), k);
     let trivial: Vec<&Identifiability> = grid
         .iter()
-        .filter(|r| r.deficiency == 0 && r.count.points < 2)
+        .filter(|r| r.deficiency == 0 && r.count.points < SHAPE_POINTS)
         .collect();
-    let min_p = identifiable.iter().map(|r| r.count.points).min();
-    let min_k = identifiable.iter().map(|r| r.count.frames).min();
-    let claimed_ok = grid.iter().any(|r| {
-        r.count.points == case.minimum.points
-            && r.count.frames == case.minimum.frames
-            && r.deficiency == 0
-    });
-    let minimal = min_p == Some(case.minimum.points) && min_k == Some(case.minimum.frames);
-    out.push(b.result(
-        &case.minimum.claim,
-        None,
-        Verdict::holds(claimed_ok && minimal),
-        format!(
-            "{} points and {} frames are the minimum",
-            case.minimum.points, case.minimum.frames
-        ),
-        format!(
-            "smallest identifiable p = {}, smallest identifiable k = {}; (p={}, k={}) identifiable: {}",
-            min_p.map_or("none".into(), |v| v.to_string()),
-            min_k.map_or("none".into(), |v| v.to_string()),
-            case.minimum.points,
-            case.minimum.frames,
-            claimed_ok
-        ),
-        Some(OldTolerance::exact("exact ranks")),
-        Evidence::new("deficiency 0 (finitely many solutions near a generic scene) decided by exact Jacobian rank over the grid")
-            .with("grid", &grid_desc)
-            .with("identifiable cells (p ≥ 2)", cells(&identifiable))
-            .with("excluded single-point cells with deficiency 0 (nothing to recover)", cells(&trivial)),
-    ));
+    let identifiable: Vec<&Identifiability> = grid
+        .iter()
+        .filter(|r| r.deficiency == 0 && r.count.points >= SHAPE_POINTS)
+        .collect();
+    let opt = |v: Option<usize>| v.map_or(Value::label("none"), Value::count);
+    let r = b
+        .claim(&case.minimum.claim)
+        .printed("points", case.minimum.points)
+        .printed("frames", case.minimum.frames)
+        .computed("smallest identifiable p", opt(min_p))
+        .computed("smallest identifiable k", opt(min_k))
+        .computed("the printed cell is identifiable", identifiable_at(grid, p, k))
+        .tolerance(Tolerance::exact("exact ranks"))
+        .power(Power::mutant(
+            !fewer_frames && !fewer_points,
+            "a claimed minimum of one frame fewer, or of one point fewer, than printed: the same check rejects both",
+        ))
+        .method("deficiency 0 (finitely many solutions near a generic scene) decided by exact Jacobian rank over the grid, among bodies with a shape (p ≥ 2)")
+        .detail("mutant with one frame fewer accepted", fewer_frames)
+        .detail("mutant with one point fewer accepted", fewer_points);
+    let r = cells(
+        grid_details(r, case),
+        "identifiable cell (p ≥ 2)",
+        &identifiable,
+    );
+    cells(
+        r,
+        "excluded single-point cell with deficiency 0 (nothing to recover)",
+        &trivial,
+    )
+    .verdict(Verdict::holds(is_minimum(grid, p, k)))
+}
 
-    // Two frames: deficient for every p, although the count balances from p = 4.
-    let two: Vec<&Identifiability> = grid.iter().filter(|r| r.count.frames == 2).collect();
-    let all_deficient = two.iter().all(|r| r.deficiency > 0);
-    let balanced_two: Vec<&Identifiability> = two
+fn two_frames_claim(
+    b: &ResultBuilder,
+    case: &DofIdentifiabilityCase,
+    grid: &[Identifiability],
+) -> ClaimResult {
+    let two: Vec<&Identifiability> = grid
+        .iter()
+        .filter(|r| r.count.frames == TWO_FRAMES)
+        .collect();
+    let balanced: Vec<&Identifiability> = two
         .iter()
         .copied()
         .filter(|r| r.count.balance >= 0)
         .collect();
-    let deficiencies: Vec<String> = two
-        .iter()
-        .map(|r| format!("p={}: {}", r.count.points, r.deficiency))
-        .collect();
-    out.push(
-        b.result(
-            &case.two_frames,
-            None,
-            Verdict::holds(all_deficient),
-            "no number of points recovers structure and motion from two frames".into(),
-            format!(
-            "k = 2 is rank-deficient for every p in the grid, although the count balances for {}",
-            cells(&balanced_two)
-        ),
-            Some(OldTolerance::exact("exact ranks")),
-            Evidence::new("exact Jacobian rank for k = 2 and each p of the grid")
-                .with("grid", &grid_desc)
-                .with("deficiency by p", deficiencies.join("; ")),
-        ),
-    );
-    Ok(out)
+    let holds = deficient_for_every_p(grid, TWO_FRAMES);
+    let mutant_holds = deficient_for_every_p(grid, TWO_FRAMES + 1);
+    let mut r = b
+        .claim(&case.two_frames)
+        .printed("statement", Value::label(case.two_frames.quote.clone()))
+        .computed("rank-deficient for every p of the grid", holds)
+        .computed("cells where the count balances nevertheless", balanced.len())
+        .tolerance(Tolerance::exact("exact ranks"))
+        .power(Power::mutant(
+            !mutant_holds,
+            "the same statement for one frame more: the same check rejects it (some p is identifiable)",
+        ))
+        .method("exact Jacobian rank for two frames and each p of the grid");
+    r = grid_details(r, case);
+    for c in &two {
+        r = r
+            .detail("p", c.count.points)
+            .detail("deficiency", c.deficiency);
+    }
+    r.verdict(Verdict::holds(holds))
+}
+
+/// The count formula, the minimum, and two-frame insufficiency, over the grid.
+pub(super) fn check_identifiability(
+    b: &ResultBuilder,
+    case: &DofIdentifiabilityCase,
+) -> Result<Vec<ClaimResult>> {
+    let grid = table(case.max_points, case.max_frames, case.seed)?;
+    figure(b, case, &grid);
+    Ok(vec![
+        formula_claim(b, case, &grid)?,
+        minimum_claim(b, case, &grid),
+        two_frames_claim(b, case, &grid),
+    ])
+}
+
+#[cfg(test)]
+mod tests {
+    use super::formula_holds;
+
+    #[test]
+    fn the_formula_judge_on_both_sides() {
+        assert!(formula_holds(true, true, 0));
+        assert!(!formula_holds(false, true, 0));
+        assert!(!formula_holds(true, false, 0));
+        assert!(!formula_holds(true, true, 1));
+    }
 }

@@ -12,7 +12,7 @@ mod p4f3;
 mod two_frames;
 mod twofold;
 
-pub use audit::{audit as audit_formulas, audit_all, counts as audit_counts, AuditItem};
+pub use audit::{audit_all, counts as audit_counts, AuditItem};
 pub use noise::{run_study, study_of};
 pub use twofold::{audit as audit_twofold, TwofoldAudit};
 

@@ -136,6 +136,36 @@ impl Eliminated {
     }
 }
 
+/// The root formula of a quadratic, checked symbolically: with X = (σ·B ± s)/(2A) and
+/// s² = B² − κ·A·C, whether 4A·(A X² + B X + C) reduces to zero for both signs of s. The
+/// quadratic formula is σ = −1, κ = 4 (Appendix A's b² with A = f_{b²}, B = c² f_cb + f_b);
+/// other values are its mutants.
+///
+/// # Example
+/// ```
+/// use orthocheck::derivations::appendix_a::quadratic_formula_solves;
+/// assert!(quadratic_formula_solves(-1, 4));
+/// assert!(!quadratic_formula_solves(1, 4));
+/// ```
+pub fn quadratic_formula_solves(sigma: i64, kappa: i64) -> bool {
+    let (a, b, c, s) = (
+        Poly::var("A"),
+        Poly::var("B"),
+        Poly::var("C"),
+        Poly::var("s"),
+    );
+    let int = |k: i64| Poly::int(k);
+    let delta = &(&b * &b) - &(&int(kappa) * &(&a * &c));
+    [1i64, -1].iter().all(|pm| {
+        // 2A·X = σB ± s, and 4A·(A X² + B X + C) = (2AX)² + 2B·(2AX) + 4AC
+        let x2a = &(&int(sigma) * &b) + &(&int(*pm) * &s);
+        let e = &(&(&x2a * &x2a) + &(&int(2) * &(&b * &x2a))) + &(&int(4) * &(&a * &c));
+        in_squares(&e, "s", "S")
+            .map(|p| p.substitute("S", &delta))
+            .is_some_and(|p| p.is_zero())
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

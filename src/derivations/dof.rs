@@ -35,8 +35,8 @@ pub struct DofCount {
 ///
 /// # Example
 /// ```
-/// let c = orthocheck::derivations::dof::count(4, 2);
-/// assert_eq!((c.unknowns, c.measurements), (16, 16));
+/// let c = orthocheck::derivations::dof::count(5, 4);
+/// assert_eq!((c.unknowns, c.measurements), (29, 40));
 /// ```
 pub fn count(p: usize, k: usize) -> DofCount {
     let (pi, ki) = (p as i64, k as i64);
@@ -146,9 +146,9 @@ pub struct Identifiability {
 ///
 /// # Example
 /// ```
-/// let r = orthocheck::derivations::dof::identifiability(4, 2, 1).unwrap();
-/// assert_eq!(r.count.balance, 0);   // the count says "enough"
-/// assert_eq!(r.deficiency, 1);      // the Jacobian says one-parameter ambiguity
+/// let r = orthocheck::derivations::dof::identifiability(6, 2, 1).unwrap();
+/// assert!(r.count.balance > 0);   // the count says "enough"
+/// assert!(r.deficiency > 0);      // the Jacobian says the images leave an ambiguity
 /// ```
 pub fn identifiability(p: usize, k: usize, seed: u64) -> Result<Identifiability> {
     if p == 0 || k == 0 {
@@ -183,6 +183,67 @@ pub fn table(max_points: usize, max_frames: usize, seed: u64) -> Result<Vec<Iden
         }
     }
     Ok(out)
+}
+
+/// Whether two count formulas in `p` and `k` give, in every cell of `grid`, the number of
+/// parameters (Jacobian columns) and of image coordinates (rows, 2kp).
+pub fn formulas_count_the_jacobian(
+    grid: &[Identifiability],
+    unknowns: &crate::algebra::Poly,
+    measurements: &crate::algebra::Poly,
+) -> bool {
+    let at = |f: &crate::algebra::Poly, r: &Identifiability| {
+        let values = std::collections::BTreeMap::from([
+            (
+                "p".to_string(),
+                BigRational::from_integer(r.count.points.into()),
+            ),
+            (
+                "k".to_string(),
+                BigRational::from_integer(r.count.frames.into()),
+            ),
+        ]);
+        f.eval(&values)
+    };
+    let int = |n: usize| Some(BigRational::from_integer(n.into()));
+    grid.iter().all(|r| {
+        at(unknowns, r) == int(r.parameters)
+            // the Jacobian's rows: two image coordinates per point and frame
+            && at(measurements, r) == int(2 * r.count.points * r.count.frames)
+    })
+}
+
+/// Fewest points of a body with a shape: a single point has nothing to recover but its image
+/// position, so its "identifiability" says nothing about structure and motion.
+pub const SHAPE_POINTS: usize = 2;
+
+/// The cell (p, k) of `grid` is identifiable (deficiency 0).
+pub fn identifiable_at(grid: &[Identifiability], p: usize, k: usize) -> bool {
+    grid.iter()
+        .any(|r| r.count.points == p && r.count.frames == k && r.deficiency == 0)
+}
+
+/// The smallest p and the smallest k among identifiable cells of bodies with a shape.
+pub fn smallest_identifiable(grid: &[Identifiability]) -> (Option<usize>, Option<usize>) {
+    let ok = || {
+        grid.iter()
+            .filter(|r| r.deficiency == 0 && r.count.points >= SHAPE_POINTS)
+    };
+    (
+        ok().map(|r| r.count.points).min(),
+        ok().map(|r| r.count.frames).min(),
+    )
+}
+
+/// (p, k) is identifiable and no identifiable body with a shape has fewer points or frames.
+pub fn is_minimum(grid: &[Identifiability], p: usize, k: usize) -> bool {
+    identifiable_at(grid, p, k) && smallest_identifiable(grid) == (Some(p), Some(k))
+}
+
+/// Every cell with `k` frames is rank-deficient (and there is at least one).
+pub fn deficient_for_every_p(grid: &[Identifiability], k: usize) -> bool {
+    let cells: Vec<&Identifiability> = grid.iter().filter(|r| r.count.frames == k).collect();
+    !cells.is_empty() && cells.iter().all(|r| r.deficiency > 0)
 }
 
 #[cfg(test)]
@@ -250,6 +311,30 @@ mod tests {
                 );
             }
         }
+    }
+
+    #[test]
+    fn the_grid_queries_on_both_sides() {
+        let grid = table(4, 4, 1).unwrap();
+        let f = |t: &str| crate::algebra::Poly::parse(t).unwrap();
+        assert!(formulas_count_the_jacobian(
+            &grid,
+            &f("-1+3*p+5*(k-1)"),
+            &f("2*k*p")
+        ));
+        assert!(!formulas_count_the_jacobian(
+            &grid,
+            &f("-1+3*p+6*(k-1)"),
+            &f("2*k*p")
+        ));
+        let (Some(p), Some(k)) = smallest_identifiable(&grid) else {
+            panic!("nothing identifiable on the grid");
+        };
+        assert!(is_minimum(&grid, p, k));
+        assert!(!is_minimum(&grid, p, k + 1) && !is_minimum(&grid, p, k - 1));
+        assert!(!is_minimum(&grid, p - 1, k));
+        assert!(deficient_for_every_p(&grid, 2));
+        assert!(!deficient_for_every_p(&grid, 3));
     }
 
     #[test]

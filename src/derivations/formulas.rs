@@ -164,3 +164,41 @@ pub fn quadratic_in_squares(p: &Poly, vars: &[&str]) -> bool {
             && vars.iter().map(|v| m.exponent(v)).sum::<u32>() <= 4
     })
 }
+
+/// The number of ordered choices of `r` distinct items out of `n`: n(n−1)⋯(n−r+1).
+pub fn ordered_choices(n: usize, r: usize) -> usize {
+    (0..r).map(|i| n.saturating_sub(i)).product()
+}
+
+/// The same number by enumeration: every sequence of `r` distinct indices below `n`.
+pub fn ordered_choices_enumerated(n: usize, r: usize) -> usize {
+    fn extend(n: usize, r: usize, used: &mut Vec<usize>) -> usize {
+        if used.len() == r {
+            return 1;
+        }
+        let mut count = 0;
+        for i in 0..n {
+            if !used.contains(&i) {
+                used.push(i);
+                count += extend(n, r, used);
+                used.pop();
+            }
+        }
+        count
+    }
+    extend(n, r, &mut Vec::new())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn ordered_choices_agree_with_enumeration() {
+        for n in 0..7 {
+            for r in 0..4 {
+                assert_eq!(ordered_choices(n, r), ordered_choices_enumerated(n, r));
+            }
+        }
+    }
+}
