@@ -66,7 +66,8 @@ pub struct NoiseLevel {
     pub statement: Option<Statement>,
 }
 
-/// "error below 0.2 %", "deviates more than 15 %", "average performance within 20 %".
+/// "error below 0.2 %", "deviates more than 15 %", "average performance within 20 %"
+/// (how each is read: `docs/verdicts.md`).
 #[derive(Clone, Debug, Deserialize, PartialEq)]
 #[serde(deny_unknown_fields)]
 pub struct Statement {
@@ -79,6 +80,10 @@ pub struct Statement {
     /// How the edges' errors combine: the worst edge (default) or their mean ("on average").
     #[serde(default)]
     pub over_edges: OverEdges,
+    /// What the error is measured in when the paper names it ("errors for edge lengths");
+    /// absent: the quantity the printed values are.
+    #[serde(default)]
+    pub quantity: Option<Quantity>,
 }
 
 /// How a statement combines the errors of the edges.
@@ -98,8 +103,8 @@ pub enum OverEdges {
 pub enum StatementSubject {
     /// The printed run.
     Example,
-    /// The mean error over all trials.
-    TrialMean,
+    /// The trials as a whole ("the average performance"): judged by the median trial.
+    TypicalTrial,
 }
 
 /// Below or above.

@@ -12,8 +12,8 @@ mod p4f3;
 mod two_frames;
 mod twofold;
 
+pub use crate::studies::noise::{run_study, study_of};
 pub use audit::{audit_all, counts as audit_counts, AuditItem};
-pub use noise::{run_study, study_of};
 pub use twofold::{audit as audit_twofold, TwofoldAudit};
 
 mod result;

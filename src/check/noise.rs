@@ -1,68 +1,23 @@
-//! Claims of the noise studies (§2, §3): where the paper's runs fall in seeded distributions.
+//! Claims of the noise studies (§2, §3, §4): the paper's words about its noisy runs, judged
+//! against seeded distributions by the rule of `docs/verdicts.md` ("Statistical claims").
 
 use super::figure::{ecdf, Figure, Layer, Plot, Shape, Style};
-use super::{ClaimResult, Evidence, OldTolerance, ResultBuilder, Verdict};
-use crate::cases::{
-    Direction, NoiseLevel, NoiseStudyCase, OverEdges, Printed, Quantity, StatementSubject,
+use super::{
+    ClaimResult, Evidence, Power, ResultBuilder, Tolerance, ToleranceSource, Value, Verdict,
 };
-use crate::derivations::noise::{models, run_level, stream, LevelResult, Study, TrialError};
-use crate::derivations::p4f3::realize;
+use crate::cases::{Direction, NoiseLevel, NoiseStudyCase, OverEdges, Quantity as Symbols};
+use crate::derivations::noise::{LevelResult, Study, METRICS, QUANTILES};
+use crate::derivations::solver::default_edge_names;
 use crate::error::Result;
 use crate::model::Body;
-use crate::numfmt::{sig, sig_list};
-
-fn pct(x: f64) -> String {
-    format!("{}%", sig(100.0 * x))
-}
-
-/// The study a noise case describes: its body, solver, frames, trials and seed.
-pub fn study_of(case: &NoiseStudyCase) -> Result<Study> {
-    let l: Vec<f64> = case.body.lengths.iter().map(|p| p.to_f64()).collect();
-    let body = if l.len() == 3 {
-        Body::triangle(l[0], l[1], l[2])?
-    } else {
-        // more points: realize the printed squares (or the squares of the printed lengths)
-        let squares: Vec<f64> = if case.body.squares.is_empty() {
-            l.iter().map(|x| x * x).collect()
-        } else {
-            case.body.squares.iter().map(|p| p.to_f64()).collect()
-        };
-        let p = (1..)
-            .find(|p| p * (p - 1) / 2 >= squares.len())
-            .unwrap_or(2);
-        let r = realize(&squares, p);
-        if !r.realizable {
-            return Err(crate::error::Error::InvalidInput(format!(
-                "the printed edges are not realizable in 3-D (Gram eigenvalues {:?})",
-                r.eigenvalues
-            )));
-        }
-        Body::new(r.points)
-    };
-    Ok(Study {
-        solver: case.solver,
-        body,
-        frames: case.frames,
-        trials: case.trials,
-        seed: case.seed,
-        motions: None,
-    })
-}
-
-/// The studies a case asks for, one per level and noise model (coordinate model first).
-/// Level `i` under model `m` uses random stream `2i + m`.
-pub fn run_study(case: &NoiseStudyCase) -> Result<Vec<[LevelResult; 2]>> {
-    let study = study_of(case)?;
-    Ok(case
-        .levels
-        .iter()
-        .enumerate()
-        .map(|(i, lv)| {
-            let models = models(lv.level.to_f64());
-            std::array::from_fn(|m| run_level(&study, models[m], stream(i, m), &|_| {}))
-        })
-        .collect())
-}
+use crate::studies::noise::{
+    edge_medians, run_both, run_errors, run_study, RunErrors, SymbolDistances,
+};
+use judge::{
+    claim_of, decide, judge_bound, margin, metric_of, metric_phrase, power, Claim, Decision, Facts,
+    TYPICAL_BAND,
+};
+mod judge;
 
 pub(super) fn check(b: &ResultBuilder, case: &NoiseStudyCase) -> Result<Vec<ClaimResult>> {
     let mut out = Vec::new();
@@ -74,58 +29,17 @@ pub(super) fn check(b: &ResultBuilder, case: &NoiseStudyCase) -> Result<Vec<Clai
     } else {
         case.body.squares.iter().map(|p| p.to_f64()).collect()
     };
-    let names = crate::derivations::solver::default_edge_names(truth.len());
-
     if let Some(claim) = &case.body.claim {
-        let digits = case.body.significant_digits.unwrap_or(6);
-        let agree: Vec<bool> = case
-            .body
-            .lengths
-            .iter()
-            .zip(&case.body.squares)
-            .map(|(l, s)| {
-                let sq = l.to_f64() * l.to_f64();
-                (sq - s.to_f64()).abs() <= s.half_unit_significant(digits)
-            })
-            .collect();
-        out.push(
-            b.result(
-                claim,
-                None,
-                Verdict::holds(agree.iter().all(|a| *a)),
-                format!(
-                    "lengths {}, squares {}",
-                    Printed::join(&case.body.lengths),
-                    Printed::join(&case.body.squares)
-                ),
-                format!("squares of the printed lengths: {}", sig_list(&truth)),
-                Some(OldTolerance {
-                    value: sig_list(
-                        &case
-                            .body
-                            .squares
-                            .iter()
-                            .map(|s| s.half_unit_significant(digits))
-                            .collect::<Vec<_>>(),
-                    ),
-                    source: format!(
-                        "half a unit in the {digits}th significant digit of the printed squares"
-                    ),
-                }),
-                Evidence::new("squares of the printed lengths against the printed squares"),
-            ),
-        );
+        out.push(body_result(b, claim, case));
     }
-
     let results = run_study(case)?;
-    let judge = Judge {
+    let ctx = Context {
         truth: &truth,
-        lengths: &lengths,
-        names: &names,
+        names: &default_edge_names(truth.len()),
         trials: case.trials,
         seed: case.seed,
     };
-    for (lv, res) in case.levels.iter().zip(&results) {
+    for (i, (lv, res)) in case.levels.iter().zip(&results).enumerate() {
         // one claim quoted at several levels gets one result per level
         let repeated = case
             .levels
@@ -133,17 +47,75 @@ pub(super) fn check(b: &ResultBuilder, case: &NoiseStudyCase) -> Result<Vec<Clai
             .filter(|l| l.claim.claim == lv.claim.claim)
             .count()
             > 1;
-        out.extend(judge.level(b, lv, repeated, res));
+        let neighbour = results
+            .get(i + 1)
+            .or(i.checked_sub(1).and_then(|j| results.get(j)));
+        out.extend(ctx.level(b, lv, repeated, res, neighbour.map(|n| n.as_slice())));
     }
     Ok(out)
 }
 
-/// What a printed noise level is judged against.
-pub(super) struct Judge<'a> {
+/// The printed body: its squares against the squares of its printed lengths.
+fn body_result(
+    b: &ResultBuilder,
+    claim: &crate::cases::ClaimRef,
+    case: &NoiseStudyCase,
+) -> ClaimResult {
+    let digits = case.body.significant_digits.unwrap_or(6);
+    let pairs: Vec<(f64, f64, f64)> = case
+        .body
+        .lengths
+        .iter()
+        .zip(&case.body.squares)
+        .map(|(l, s)| {
+            (
+                l.to_f64() * l.to_f64(),
+                s.to_f64(),
+                s.half_unit_significant(digits),
+            )
+        })
+        .collect();
+    let agree = pairs.iter().all(|(sq, s, h)| (sq - s).abs() <= *h);
+    // the acceptance region of the edge with the widest half unit: the printed squares the
+    // same check would pass there
+    let widest = pairs
+        .iter()
+        .copied()
+        .max_by(|a, b| a.2.total_cmp(&b.2))
+        .unwrap_or((0.0, 0.0, 0.0));
+    let mut r = b.claim(claim);
+    for l in &case.body.lengths {
+        r = r.printed("length", l);
+    }
+    for s in &case.body.squares {
+        r = r.printed("square", s);
+    }
+    let squares: Vec<f64> = pairs.iter().map(|p| p.0).collect();
+    let halves: Vec<f64> = pairs.iter().map(|p| p.2).collect();
+    r.computed("squares of the printed lengths", Value::reals(&squares))
+        .tolerance(Tolerance::bound(
+            widest.2,
+            ToleranceSource::PrintedPrecision,
+            "half a unit in the last significant digit the program printed, per square",
+        ))
+        // the region is the printed squares within half a unit of the computed square: exactly
+        // those the printed digits would call right, so it is centred on the computed square
+        .power(Power::interval(
+            widest.0 - widest.2,
+            widest.0 + widest.2,
+            widest.0,
+            widest.2,
+            "printed squares the same check accepts for the edge with the widest half unit",
+        ))
+        .method("squares of the printed lengths against the printed squares")
+        .detail("half units of the printed squares", Value::reals(&halves))
+        .verdict(Verdict::holds(agree))
+}
+
+/// What every level of a study is judged against.
+pub(super) struct Context<'a> {
     /// True squared edges.
     pub truth: &'a [f64],
-    /// True lengths.
-    pub lengths: &'a [f64],
     /// Edge names.
     pub names: &'a [String],
     /// Trials per distribution.
@@ -152,274 +124,268 @@ pub(super) struct Judge<'a> {
     pub seed: u64,
 }
 
-impl Judge<'_> {
-    /// The results for one printed level against the distributions `res` (one per noise
-    /// model or scene); `repeated` when the claim is quoted at several levels, so each
-    /// level's result gets its own id.
+impl Context<'_> {
+    /// The results of one printed level against its distributions `res` (one per noise model
+    /// or scene); `repeated` when the claim is quoted at several levels (each gets its own
+    /// id); `neighbour` the distributions of the next printed level, for the power.
     pub(super) fn level(
         &self,
         b: &ResultBuilder,
         lv: &NoiseLevel,
         repeated: bool,
         res: &[LevelResult],
+        neighbour: Option<&[LevelResult]>,
     ) -> Vec<ClaimResult> {
-        let (truth, lengths, names) = (self.truth, self.lengths, self.names);
-        let mut out = Vec::new();
         let level_id = format!("eps-{}", lv.level.text);
         let suffix = |s: Option<&str>| match (repeated, s) {
             (true, Some(s)) => Some(format!("{level_id}/{s}")),
             (true, None) => Some(level_id.clone()),
             (false, s) => s.map(str::to_string),
         };
-        let first: Vec<f64> = lv.printed[0].iter().map(|p| p.to_f64()).collect();
-        // What are the printed numbers: squares or lengths? Decide by which truth they are near.
-        let near = |t: &[f64]| {
-            first
-                .iter()
-                .zip(t)
-                .map(|(a, b)| ((a - b) / b).abs())
-                .fold(0.0, f64::max)
-        };
-        let as_squares = near(truth) <= near(lengths);
-        let quantity = if as_squares {
-            Quantity::Squares
+        let first = lv.printed.first().map_or(&[][..], |v| v.as_slice());
+        let values: Vec<f64> = first.iter().map(|p| p.to_f64()).collect();
+        let half: Vec<f64> = first.iter().map(|p| p.half_unit()).collect();
+        let dist = SymbolDistances::of(&values, self.truth);
+        let read_as = if dist.are_squares() {
+            Symbols::Squares
         } else {
-            Quantity::Lengths
+            Symbols::Lengths
         };
-        if quantity != lv.labelled_as {
-            out.push(b.result(
-                &lv.claim,
-                suffix(Some("symbols")).as_deref(),
-                Verdict::Erratum,
-                format!(
-                    "printed as {} = {}",
-                    if lv.labelled_as == Quantity::Lengths { "a, b, c" } else { "a², b², c²" },
-                    Printed::join(&lv.printed[0])
-                ),
-                format!(
-                    "the values are {}: within {} of the true {} {}, but {} from the true {} {}; read them as {}",
-                    if as_squares { "squared lengths" } else { "lengths" },
-                    pct(near(if as_squares { truth } else { lengths })),
-                    if as_squares { "squares" } else { "lengths" },
-                    sig_list(if as_squares { truth } else { lengths }),
-                    pct(near(if as_squares { lengths } else { truth })),
-                    if as_squares { "lengths" } else { "squares" },
-                    sig_list(if as_squares { lengths } else { truth }),
-                    if as_squares { "a², b², c²" } else { "a, b, c" }
-                ),
-                None,
-                Evidence::new("relative distance of the printed values to the true lengths and to the true squares"),
-            ));
+        let mut out = Vec::new();
+        if read_as != lv.labelled_as {
+            out.push(self.symbols_result(b, lv, suffix(Some("symbols")), dist, read_as));
         }
-        let squares_of_first: Vec<f64> = if as_squares {
-            first.clone()
-        } else {
-            first.iter().map(|x| x * x).collect()
+        let run = run_errors(&values, &half, dist.are_squares(), self.truth);
+        let (quantity, edges) = match &lv.statement {
+            Some(st) => (st.quantity.unwrap_or(read_as), st.over_edges),
+            None => (read_as, OverEdges::Max),
         };
-        let example = TrialError::of(&squares_of_first, truth);
-        let mut ev = Evidence::new(
-            "seeded Monte Carlo: the body under uniformly random rotations in every frame (or at the \
-             paper's own scene where the model says so), P at the origin, noise, the solver, and the real \
-             solution nearest the truth; errors relative to the truth, largest over the edges unless said otherwise",
+        let facts = Facts {
+            metric: metric_of(quantity, edges),
+            run: run.as_ref(),
+            dists: res,
+        };
+        let result = self.main_result(b, lv, suffix(None), read_as, &facts, neighbour);
+        b.figure(self.figure(&result.id, lv, res, run.as_ref()));
+        out.push(result);
+        out
+    }
+
+    /// The printed symbols (a, b, c or a², b², c²) against what the values are.
+    fn symbols_result(
+        &self,
+        b: &ResultBuilder,
+        lv: &NoiseLevel,
+        suffix: Option<String>,
+        dist: SymbolDistances,
+        read_as: Symbols,
+    ) -> ClaimResult {
+        let lengths: Vec<f64> = self.truth.iter().map(|t| t.sqrt()).collect();
+        // the same test on the true lengths must read them as lengths
+        let control = !SymbolDistances::of(&lengths, self.truth).are_squares();
+        let mut r = b.claim(&lv.claim);
+        if let Some(s) = &suffix {
+            r = r.suffix(s);
+        }
+        r = r.printed("symbols", symbols_name(lv.labelled_as));
+        for p in lv.printed.first().into_iter().flatten() {
+            r = r.printed("value", p);
+        }
+        r.computed(
+            "largest relative distance to the true squares",
+            dist.to_squares,
         )
-        .with("trials per model (seed)", format!("{} ({})", self.trials, self.seed))
-        .with("printed values read as", if as_squares { "squared lengths" } else { "lengths" });
-        if let Some(e) = example {
-            ev = ev.with(
-                "printed run: largest error in squares / in lengths",
-                format!("{} / {}", pct(e.max_squares), pct(e.max_lengths)),
-            );
+        .computed(
+            "largest relative distance to the true lengths",
+            dist.to_lengths,
+        )
+        .computed("the values are", symbols_name(read_as))
+        .correction(format!("read the values as {}", symbols_name(read_as)))
+        .tolerance(Tolerance::exact("the nearer of the two readings"))
+        .power(Power::mutant(
+            control,
+            "the same test reads the true lengths themselves as lengths",
+        ))
+        .method(
+            "relative distance of the printed values to the true lengths and to the true squares",
+        )
+        .detail("true squares", Value::reals(self.truth))
+        .detail("true lengths", Value::reals(&lengths))
+        .verdict(Verdict::Erratum)
+    }
+
+    /// The level's claim, decided by [`decide`].
+    fn main_result(
+        &self,
+        b: &ResultBuilder,
+        lv: &NoiseLevel,
+        suffix: Option<String>,
+        read_as: Symbols,
+        f: &Facts,
+        neighbour: Option<&[LevelResult]>,
+    ) -> ClaimResult {
+        let claim = claim_of(lv);
+        let decision = decide(claim, f);
+        let mut r = b.claim(&lv.claim).printed("ε", &lv.level);
+        if let Some(s) = &suffix {
+            r = r.suffix(s);
         }
-        // with more than three edges, say which edges err how much
-        let per_edge = truth.len() > 3;
-        if let (true, Some(sq)) = (per_edge, Some(&squares_of_first)) {
-            let errs: Vec<String> = names
-                .iter()
-                .zip(sq.iter().zip(truth))
-                .map(|(n, (x, t))| {
-                    format!(
-                        "{n} {} / {}",
-                        pct((x / t - 1.0).abs()),
-                        pct(((x / t).sqrt() - 1.0).abs())
-                    )
-                })
-                .collect();
-            ev = ev.with(
-                "printed run, per edge: error in squares / in lengths",
-                errs.join("; "),
-            );
-        }
-        let mut summary = Vec::new();
-        for r in res {
-            let q = |m: usize, p: f64| r.quantile(m, p).map_or("-".into(), pct);
-            if per_edge {
-                let med: Vec<String> = names
-                    .iter()
-                    .enumerate()
-                    .map(|(e, n)| {
-                        let m = |l: bool| {
-                            crate::derivations::rounding::quantile(&r.edge_errors(e, l), 0.5)
-                                .map_or("-".into(), pct)
-                        };
-                        format!("{n} {} / {}", m(false), m(true))
-                    })
-                    .collect();
-                ev = ev.with(
-                    &format!(
-                        "{} model: median error per edge, squares / lengths",
-                        r.model
-                    ),
-                    med.join("; "),
-                );
-            }
-            ev = ev.with(
-                &format!("{} model: failures", r.model),
-                format!("{} of {}", r.failures, r.trials),
-            );
-            for (m, name) in [(0, "squares"), (2, "lengths")] {
-                ev = ev.with(
-                    &format!(
-                        "{} model: largest error in {name}, 5/25/50/75/95/99 %",
-                        r.model
-                    ),
-                    [0.05, 0.25, 0.5, 0.75, 0.95, 0.99]
-                        .map(|p| q(m, p))
-                        .join(" / "),
-                );
-                ev = ev.with(
-                    &format!(
-                        "{} model: mean over trials of the largest error in {name}",
-                        r.model
-                    ),
-                    pct(r.mean(m)),
-                );
-            }
-            if let Some(e) = example {
-                let (ps, pl) = (r.rank_of(0, e.max_squares), r.rank_of(2, e.max_lengths));
-                ev = ev.with(
-                    &format!(
-                        "{} model: percentile of the printed run (squares / lengths)",
-                        r.model
-                    ),
-                    format!("{} / {}", pct(ps), pct(pl)),
-                );
-                summary.push(format!(
-                    "{} model: printed run at percentile {} (squares), {} (lengths)",
-                    r.model,
-                    pct(ps),
-                    pct(pl)
-                ));
+        for (k, sol) in lv.printed.iter().enumerate() {
+            for (p, n) in sol.iter().zip(self.names) {
+                r = r.printed(&format!("run, solution {}, {n}", k + 1), p);
             }
         }
-        // The statement, decided in squares and in lengths.
-        let mut paper_value = format!(
-            "ε = {}: {}",
-            lv.level.text,
-            lv.printed
-                .iter()
-                .map(|p| format!("({})", Printed::join(p)))
-                .collect::<Vec<_>>()
-                .join(", ")
-        );
         if let Some(st) = &lv.statement {
-            let bound = st.bound.to_f64();
-            let holds = |x: f64| match st.direction {
-                Direction::Below => x < bound,
-                Direction::Above => x > bound,
-            };
-            let word = match st.direction {
-                Direction::Below => "below",
-                Direction::Above => "above",
-            };
-            paper_value.push_str(&format!("; error {word} {}", pct(bound)));
-            match st.about {
-                StatementSubject::Example => {
-                    let (ms, ml, how) = match st.over_edges {
-                        OverEdges::Max => (0, 2, "largest over the edges"),
-                        OverEdges::Mean => (1, 3, "mean over the edges"),
-                    };
-                    if let Some(e) = example {
-                        let m = e.metrics();
-                        summary.push(format!(
-                            "the printed run's error ({how}) is {} in squares ({word} {}: {}), {} in lengths ({})",
-                            pct(m[ms]),
-                            pct(bound),
-                            holds(m[ms]),
-                            pct(m[ml]),
-                            holds(m[ml])
-                        ));
-                    }
-                    if per_edge {
-                        let which = |lengths: bool| {
-                            let v: Vec<&str> = names
-                                .iter()
-                                .zip(squares_of_first.iter().zip(truth))
-                                .filter(|(_, (x, t))| {
-                                    let r = *x / *t;
-                                    holds(if lengths {
-                                        (r.sqrt() - 1.0).abs()
-                                    } else {
-                                        (r - 1.0).abs()
-                                    })
-                                })
-                                .map(|(n, _)| n.as_str())
-                                .collect();
-                            if v.is_empty() {
-                                "none".to_string()
-                            } else {
-                                v.join(", ")
-                            }
-                        };
-                        summary.push(format!(
-                            "edges whose own error is {word} {}: {} in squares, {} in lengths",
-                            pct(bound),
-                            which(false),
-                            which(true)
-                        ));
-                    }
-                    for r in res {
-                        let frac = |m: usize| {
-                            r.sorted[m].iter().filter(|x| holds(**x)).count() as f64
-                                / r.trials as f64
-                        };
-                        ev = ev.with(
-                            &format!(
-                                "{} model: trials whose error ({how}) is {word} {} (squares / lengths)",
-                                r.model,
-                                pct(bound)
-                            ),
-                            format!("{} / {}", pct(frac(ms)), pct(frac(ml))),
-                        );
-                    }
+            r = r.printed(direction_name(st.direction), &st.bound);
+        }
+        let m = f.metric;
+        r = r
+            .computed("the values are", symbols_name(read_as))
+            .computed("reading", metric_phrase(m));
+        if let Some(run) = f.run {
+            r = r.computed("printed run: error", run.metrics[m]);
+            for d in f.dists {
+                r = r.computed(
+                    &format!("{}: percentile of the printed run", d.model),
+                    100.0 * d.rank_of(m, run.metrics[m]),
+                );
+            }
+        }
+        if let Claim::Median(bound, _) = claim {
+            for d in f.dists {
+                if let Some(q) = d.quantile(m, 0.5) {
+                    r = r.computed(&format!("{}: median trial's error", d.model), q);
                 }
-                StatementSubject::TrialMean => {
-                    // "average performance": the mean over trials, of the worst edge and of
-                    // the mean over the edges, in squares and in lengths
-                    for r in res {
-                        let said = |m: usize| format!("{} ({})", pct(r.mean(m)), holds(r.mean(m)));
-                        summary.push(format!(
-                            "{} model: mean error, worst edge: {} in squares, {} in lengths; \
-                             mean over edges: {} in squares, {} in lengths ({word} {}?)",
-                            r.model,
-                            said(0),
-                            said(2),
-                            said(1),
-                            said(3),
-                            pct(bound),
-                        ));
-                        ev = ev.with(
-                            &format!(
-                                "{} model: median of the mean-over-edges error (squares / lengths)",
-                                r.model
-                            ),
-                            format!(
-                                "{} / {}",
-                                r.quantile(1, 0.5).map_or("-".into(), pct),
-                                r.quantile(3, 0.5).map_or("-".into(), pct)
-                            ),
+                r = r.computed(
+                    &format!("{}: percentile rank of the bound", d.model),
+                    100.0 * d.rank_of(m, bound),
+                );
+            }
+        }
+        let r = r
+            .tolerance(self.tolerance(claim, f))
+            .power(power(claim, f, neighbour))
+            .evidence(self.evidence(lv, claim, f, decision, neighbour));
+        r.verdict(decision.verdict())
+    }
+
+    /// The Monte Carlo tolerance of a decision: the sampling margin at the threshold that
+    /// decides it (a band edge, or the median).
+    fn tolerance(&self, claim: Claim, f: &Facts) -> Tolerance {
+        let n = f
+            .dists
+            .iter()
+            .map(|d| d.sorted[f.metric].len())
+            .min()
+            .unwrap_or(0)
+            .max(1);
+        let (p, how) = match claim {
+            Claim::Median(..) => (
+                0.5,
+                "the bound's percentile rank must differ from 50 by more than two binomial standard errors (the bound, in percentile points)",
+            ),
+            _ => (
+                TYPICAL_BAND.1,
+                "the printed run's percentile must lie inside the 2.5–97.5 band of one model by more than two binomial standard errors (the bound, in percentile points, at the upper edge)",
+            ),
+        };
+        Tolerance::bound(
+            100.0 * margin(p, n),
+            ToleranceSource::MonteCarlo {
+                percentile: super::Real(100.0 * p),
+                trials: self.trials as u64,
+            },
+            how,
+        )
+    }
+}
+
+fn symbols_name(q: Symbols) -> &'static str {
+    match q {
+        Symbols::Squares => "a², b², c² (squared lengths)",
+        Symbols::Lengths => "a, b, c (lengths)",
+    }
+}
+
+fn direction_name(d: Direction) -> &'static str {
+    match d {
+        Direction::Below => "error below",
+        Direction::Above => "error above",
+    }
+}
+
+const METHOD: &str =
+    "seeded Monte Carlo: the body under uniformly random rotations in every frame \
+(or at the paper's own scene where the model says so), P at the origin, noise, the solver, and the \
+real solution nearest the truth; errors relative to the truth; percentiles among the trials with a \
+real solution";
+
+impl Context<'_> {
+    /// The evidence of a level: the printed run under every reading, the distributions.
+    fn evidence(
+        &self,
+        lv: &NoiseLevel,
+        claim: Claim,
+        f: &Facts,
+        decision: Decision,
+        neighbour: Option<&[LevelResult]>,
+    ) -> Evidence {
+        let m = f.metric;
+        let mut ev = Evidence::new(METHOD)
+            .with("trials per model", self.trials)
+            .with("seed", self.seed)
+            .with("decision", decision.name());
+        if let Some(run) = f.run {
+            ev = ev.with(
+                "printed run: error over the rounding of its digits",
+                Value::interval(run.ranges[m].0, run.ranges[m].1),
+            );
+            if let Claim::Example(bound, d) = claim {
+                ev = ev.with(
+                    "bound on the printed run",
+                    judge_bound(run.ranges[m], bound, d).name(),
+                );
+                // the other readings, for comparison (they do not decide)
+                for (k, phrase) in METRICS.iter().enumerate() {
+                    ev = ev
+                        .with(&format!("printed run, {phrase}"), run.metrics[k])
+                        .with(
+                            &format!("printed run, {phrase}: bound holds"),
+                            judge_bound(run.ranges[k], bound, d) == Decision::Holds,
                         );
-                    }
                 }
+            }
+            if !matches!(claim, Claim::Median(..)) {
+                let band = decide(Claim::Typical, f);
+                ev = ev.with("printed run inside the typical band", band.name());
+            }
+            if self.truth.len() > 3 {
+                ev = ev
+                    .with(
+                        "printed run, per edge: error in squares",
+                        Value::reals(&run.edge_squares),
+                    )
+                    .with(
+                        "printed run, per edge: error in lengths",
+                        Value::reals(&run.edge_lengths),
+                    );
+            }
+        }
+        for d in f.dists {
+            ev = self.dist_evidence(ev, claim, m, d);
+        }
+        if let Some(mb) = claim.mutant().and_then(Claim::bound) {
+            ev = ev.with("mutant bound", mb);
+        }
+        if let (Claim::Typical, Some(run), Some(ns)) = (claim, f.run, neighbour) {
+            if let Some(d) = ns.first() {
+                ev = ev.with("mutant: the neighbouring level's ε", d.level);
+            }
+            for d in ns {
+                ev = ev.with(
+                    &format!("mutant: percentile of the printed run there, {}", d.model),
+                    100.0 * d.rank_of(m, run.metrics[m]),
+                );
             }
         }
         if lv.printed.len() > 1 {
@@ -428,16 +394,70 @@ impl Judge<'_> {
                 "cannot be checked: the paper does not print the noisy projections of its runs",
             );
         }
-        let result = b.result(
-            &lv.claim,
-            suffix(None).as_deref(),
-            Verdict::StatisticalHolds,
-            paper_value,
-            summary.join("; "),
-            None,
-            ev,
+        ev
+    }
+
+    /// One distribution's evidence: failures, quantiles and mean of the reading's metric,
+    /// the share of trials the bound holds for, the medians under every reading.
+    fn dist_evidence(&self, mut ev: Evidence, claim: Claim, m: usize, d: &LevelResult) -> Evidence {
+        let model = &d.model;
+        ev = ev.with(
+            &format!("{model}: trials without a real solution"),
+            Value::count_of(d.failures, d.trials),
         );
-        // the distributions, with the printed run marked
+        let qs: Vec<f64> = QUANTILES.iter().filter_map(|&q| d.quantile(m, q)).collect();
+        ev = ev.with(
+            &format!("{model}: 5/25/50/75/95/99 % quantiles"),
+            Value::reals(&qs),
+        );
+        if !d.sorted[m].is_empty() {
+            ev = ev.with(&format!("{model}: mean over the trials"), d.mean(m));
+        }
+        if let Some(bound) = claim.bound() {
+            let below = d.rank_of(m, bound);
+            let share = match claim {
+                Claim::Example(_, Direction::Above) | Claim::Median(_, Direction::Above) => {
+                    1.0 - below
+                }
+                _ => below,
+            };
+            ev = ev.with(
+                &format!("{model}: share of trials for which the bound holds"),
+                share,
+            );
+        }
+        if matches!(claim, Claim::Median(..)) {
+            let med: Vec<f64> = (0..METRICS.len())
+                .filter_map(|k| d.quantile(k, 0.5))
+                .collect();
+            ev = ev.with(
+                &format!("{model}: median trial under every reading (max/mean in squares, max/mean in lengths)"),
+                Value::reals(&med),
+            );
+        }
+        if self.truth.len() > 3 {
+            let [sq, ln] = edge_medians(d);
+            ev = ev
+                .with(
+                    &format!("{model}: median error per edge, squares"),
+                    Value::reals(&sq),
+                )
+                .with(
+                    &format!("{model}: median error per edge, lengths"),
+                    Value::reals(&ln),
+                );
+        }
+        ev
+    }
+
+    /// The distributions of the worst edge's error, with the printed run marked.
+    fn figure(
+        &self,
+        id: &str,
+        lv: &NoiseLevel,
+        res: &[LevelResult],
+        run: Option<&RunErrors>,
+    ) -> Figure {
         let panel = |m: usize, what: &str| {
             let mut layers: Vec<Layer> = res
                 .iter()
@@ -448,20 +468,16 @@ impl Judge<'_> {
                     } else {
                         Style::Other
                     };
-                    Layer::new(
-                        &format!("{} model", r.model),
-                        Shape::Line,
-                        style,
-                        ecdf(&r.sorted[m], 200),
-                    )
+                    let name = format!("{} model", r.model);
+                    Layer::new(&name, Shape::Line, style, ecdf(&r.sorted[m], 200))
                 })
                 .collect();
-            if let Some(e) = example {
+            if let Some(e) = run {
                 layers.push(Layer::new(
                     "the paper's run",
                     Shape::Verticals,
                     Style::Mark,
-                    vec![[e.metrics()[m], 0.5]],
+                    vec![[e.metrics[m], 0.5]],
                 ));
             }
             Plot {
@@ -474,17 +490,59 @@ impl Judge<'_> {
                 window: None,
             }
         };
-        b.figure(Figure {
-            id: format!("fig-{}", result.id.replace('/', "-")),
-            claim: result.id.clone(),
+        Figure {
+            id: format!("fig-{}", id.replace('/', "-")),
+            claim: id.to_string(),
             title: format!("Noise {}: error distributions", lv.level.text),
             caption: format!(
                 "Empirical distributions of the worst edge's relative error over {} seeded trials per model (seed {}), and the paper's printed run.",
                 self.trials, self.seed
             ),
             panels: vec![panel(0, "squares"), panel(2, "lengths")],
-        });
-        out.push(result);
-        out
+        }
     }
+}
+
+/// The §4 printed runs: the body under random motions (both noise models) and, when given,
+/// at the paper's own scene (`scene[i]` for level `i`), judged like every noise level;
+/// `study` is (trials, seed).
+pub(super) fn check_runs_of_body(
+    b: &ResultBuilder,
+    levels: &[NoiseLevel],
+    truth: &[f64],
+    body: Body,
+    study: (usize, u64),
+    scene: &[LevelResult],
+) -> Vec<ClaimResult> {
+    let (trials, seed) = study;
+    let random = Study {
+        solver: crate::model::StudySolver::P4f3,
+        body,
+        frames: 3,
+        trials,
+        seed,
+        motions: None,
+    };
+    let eps: Vec<f64> = levels.iter().map(|l| l.level.to_f64()).collect();
+    let all: Vec<Vec<LevelResult>> = run_both(&random, &eps)
+        .into_iter()
+        .enumerate()
+        .map(|(i, pair)| {
+            let mut v = pair.to_vec();
+            v.extend(scene.get(i).cloned());
+            v
+        })
+        .collect();
+    let ctx = Context {
+        truth,
+        names: &default_edge_names(truth.len()),
+        trials,
+        seed,
+    };
+    let mut out = Vec::new();
+    for (i, (lv, res)) in levels.iter().zip(&all).enumerate() {
+        let neighbour = all.get(i + 1).or(i.checked_sub(1).and_then(|j| all.get(j)));
+        out.extend(ctx.level(b, lv, false, res, neighbour.map(|n| n.as_slice())));
+    }
+    out
 }

@@ -6,11 +6,10 @@ use num_rational::BigRational;
 use num_traits::ToPrimitive;
 
 use super::figure::{Figure, Layer, Plot, Shape, Style};
-use super::noise::Judge;
 use super::{ClaimResult, Evidence, OldTolerance, ResultBuilder, Verdict};
 use crate::algebra::{exact_solve, svd_rank};
 use crate::cases::{CensusCase, P4f3ExampleCase, Printed};
-use crate::derivations::noise::{models, run_level, stream, LevelResult, Study, StudySolver};
+use crate::derivations::noise::{run_level, stream, Study, StudySolver};
 use crate::derivations::p4f3::{
     census, first_order_spread, fit, identify_rows, realize, row_enclosure, view_residual,
 };
@@ -523,31 +522,14 @@ pub(super) fn check_example(b: &ResultBuilder, case: &P4f3ExampleCase) -> Result
     ));
 
     // 6. The printed noise runs, against random motions (both noise models) and the scene.
-    let random = Study {
-        solver: StudySolver::P4f3,
-        body: Body::new(real.points.clone()),
-        frames: 3,
-        trials: case.trials,
-        seed: case.seed,
-        motions: None,
-    };
-    let lengths: Vec<f64> = squares.iter().map(|v| v.sqrt()).collect();
-    let judge = Judge {
-        truth: &squares,
-        lengths: &lengths,
-        names: &names,
-        trials: case.trials,
-        seed: case.seed,
-    };
-    for (i, lv) in case.noise.iter().enumerate() {
-        let mut all: Vec<LevelResult> = models(lv.level.to_f64())
-            .into_iter()
-            .enumerate()
-            .map(|(m, model)| run_level(&random, model, stream(i, m), &|_| {}))
-            .collect();
-        all.extend(scene_results.get(i).cloned());
-        out.extend(judge.level(b, lv, false, &all));
-    }
+    out.extend(super::noise::check_runs_of_body(
+        b,
+        &case.noise,
+        &squares,
+        Body::new(real.points.clone()),
+        (case.trials, case.seed),
+        &scene_results,
+    ));
     Ok(out)
 }
 

@@ -337,7 +337,7 @@ mod tests {
 
     #[test]
     fn zero_noise_recovers_the_body_and_threads_do_not_matter() {
-        let body = Body::triangle(2.0, 3.0, 4.0).unwrap();
+        let body = Body::triangle(3.0, 4.0, 5.0).unwrap();
         let s3 = Study {
             solver: StudySolver::P3f3,
             body: body.clone(),

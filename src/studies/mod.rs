@@ -3,6 +3,7 @@
 
 pub mod audit;
 pub mod family_samples;
+pub mod noise;
 pub mod noise_request;
 pub mod points;
 pub mod twofold;
