@@ -16,6 +16,24 @@ pub struct CensusCase {
     pub trials: usize,
     /// Seed.
     pub seed: u64,
+    /// Result suffixes per claim id, for a claim whose result sits beside others of the same
+    /// claim (`abstract-linear: four-frames` gives the id `abstract-linear/four-frames`).
+    #[serde(default)]
+    pub suffixes: std::collections::BTreeMap<String, String>,
+    /// A degenerate configuration the census finds and the paper never names: which claim it
+    /// qualifies, and the suffix of the result that states it.
+    #[serde(default)]
+    pub exception: Option<CensusException>,
+}
+
+/// A degenerate configuration qualifying one claim of a census.
+#[derive(Clone, Debug, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct CensusException {
+    /// The claim id it qualifies (one of the case's claims).
+    pub qualifies: String,
+    /// The suffix of the result that states it.
+    pub suffix: String,
 }
 
 /// §2.1 worked examples.
@@ -175,6 +193,9 @@ pub struct P4f3ExampleCase {
     /// The printed noise runs: each level is judged against random motions of the body and
     /// against the figure's own scene.
     pub noise: Vec<NoiseLevel>,
+    /// Shift of each single-entry mutant of the printed matrix, in half units of the entry:
+    /// the same witness search must fail for every one of them.
+    pub matrix_mutant_half_units: f64,
     /// Monte Carlo trials per level, noise model and scene.
     pub trials: usize,
     /// Seed.
