@@ -12,15 +12,15 @@ mod rank;
 mod ratfn;
 mod sturm;
 
+pub use diff::central_jacobian;
 pub use float_roots::{
     closed_form_real, companion_roots, compare_methods, quadratic, quadratic_roots, EigenMethod,
     RootAgreement,
 };
-pub use diff::central_jacobian;
 pub use gram::gram;
 pub use interval::Interval;
 pub use lanczos::largest_eigenvalue;
-pub use newton::min_norm_newton;
+pub use newton::{min_norm_newton, min_norm_newton_step};
 pub use poly::{parse_decimal, Monomial, Poly};
 pub use procrustes::{complete_rotation, kabsch, orthonormal_rows};
 pub use rank::{exact_rank, exact_solve, svd_rank, svd_rank_above, ExactRankMethod, SvdRank};

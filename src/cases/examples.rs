@@ -193,9 +193,10 @@ pub struct P4f3ExampleCase {
     /// The printed noise runs: each level is judged against random motions of the body and
     /// against the figure's own scene.
     pub noise: Vec<NoiseLevel>,
-    /// Shift of each single-entry mutant of the printed matrix, in half units of the entry:
-    /// the same witness search must fail for every one of them.
-    pub matrix_mutant_half_units: f64,
+    /// Shifts of the single-entry mutants of the printed matrix, in half units of the entry:
+    /// the same witness search must fail for every mutant at the largest shift; the counts
+    /// at each shift are reported.
+    pub matrix_mutant_half_units: Vec<f64>,
     /// Monte Carlo trials per level, noise model and scene.
     pub trials: usize,
     /// Seed.

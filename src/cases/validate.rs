@@ -228,10 +228,14 @@ pub(super) fn validate(case: &Case, text: &str, path: &Path) -> Result<()> {
                     "needs solutions of 6 values".into(),
                 );
             }
-            if !(c.matrix_mutant_half_units > 1.0 && c.matrix_mutant_half_units.is_finite()) {
+            if c.matrix_mutant_half_units.is_empty()
+                || c.matrix_mutant_half_units
+                    .iter()
+                    .any(|m| !(*m > 1.0 && m.is_finite()))
+            {
                 return err(
                     "check.p4f3_example.matrix_mutant_half_units",
-                    "needs a shift of more than one half unit".into(),
+                    "needs shifts of more than one half unit".into(),
                 );
             }
             if c.solution.values.len() != 1 || c.solution.values[0].len() != 6 {

@@ -8,9 +8,9 @@ use crate::algebra::Interval;
 use crate::cases::{CensusCase, P3f3ExampleCase, Printed};
 use crate::derivations::solver::{first_violation, Degenerate};
 use crate::error::{Error, Result};
+use crate::studies::census;
 use crate::studies::ex2::{self, Study};
 use crate::studies::rounding::{Acceptance, RoundingBox};
-use crate::studies::census;
 
 /// The verdict on printed solutions: agreement at the printed coordinates themselves, else a
 /// witness point of the rounding box, else contradiction.
@@ -54,7 +54,9 @@ fn triples(v: &[Vec<Printed>]) -> Result<Vec<[f64; 3]>> {
     v.iter()
         .map(|t| match t.as_slice() {
             [a, b, c] => Ok([a.to_f64(), b.to_f64(), c.to_f64()]),
-            _ => Err(Error::InvalidInput("a p3f3 solution has three squares".into())),
+            _ => Err(Error::InvalidInput(
+                "a p3f3 solution has three squares".into(),
+            )),
         })
         .collect()
 }
@@ -102,10 +104,14 @@ fn body_result(b: &ResultBuilder, case: &P3f3ExampleCase) -> ClaimResult {
     for q in &squares {
         r = r.computed("square of the printed length", q.clone());
     }
-    r.tolerance(Tolerance::exact("exact rational squares of the printed digits"))
-        .power(Power::exact_value("only the exact square of each printed length passes"))
-        .method("exact arithmetic on the printed digits")
-        .verdict(Verdict::holds(ok))
+    r.tolerance(Tolerance::exact(
+        "exact rational squares of the printed digits",
+    ))
+    .power(Power::exact_value(
+        "only the exact square of each printed length passes",
+    ))
+    .method("exact arithmetic on the printed digits")
+    .verdict(Verdict::holds(ok))
 }
 
 fn solutions_result(
@@ -123,7 +129,11 @@ fn solutions_result(
     // the weakest component: the widest acceptance relative to its own half unit
     let (k, e) = (0..targets.len())
         .flat_map(|k| (0..3).map(move |e| (k, e)))
-        .max_by(|x, y| s.acceptance[x.0][x.1].outer().total_cmp(&s.acceptance[y.0][y.1].outer()))
+        .max_by(|x, y| {
+            s.acceptance[x.0][x.1]
+                .outer()
+                .total_cmp(&s.acceptance[y.0][y.1].outer())
+        })
         .unwrap_or((0, 0));
     let power = acceptance_power(
         &s.acceptance[k][e],
@@ -150,18 +160,45 @@ fn solutions_result(
         .detail("printed significant digits", case.solutions.significant_digits);
     if let Some(w) = &s.witness {
         r = r
-            .detail("witness: largest shift (units of half a unit)", w.shift_ratio)
-            .detail("witness: largest residual (units of half a unit)", w.residual);
+            .detail(
+                "witness: largest shift (units of half a unit)",
+                w.shift_ratio,
+            )
+            .detail(
+                "witness: largest residual (units of half a unit)",
+                w.residual,
+            );
     }
     if let Some(v) = &s.witness_routes {
         r = r
-            .detail("witness: exact c² roots (Sturm)", Value::reals(v.exact.as_deref().unwrap_or(&[])))
-            .detail("witness: largest relative disagreement of routes", Value::below(v.max_relative_disagreement));
+            .detail(
+                "witness: exact c² roots (Sturm)",
+                Value::reals(v.exact.as_deref().unwrap_or(&[])),
+            )
+            .detail(
+                "witness: largest relative disagreement of routes",
+                Value::below(v.max_relative_disagreement),
+            );
     }
+    r = spread_details(r, case, s, targets, half);
+    r.verdict(solutions_verdict(direct, s.witness.is_some()))
+}
+
+/// The acceptance regions and the Monte Carlo spread, as evidence.
+fn spread_details<'b>(
+    mut r: super::ClaimBuilder<'b>,
+    case: &P3f3ExampleCase,
+    s: &Study,
+    targets: &[[f64; 3]],
+    half: &[[f64; 3]],
+) -> super::ClaimBuilder<'b> {
     for (k, acc) in s.acceptance.iter().enumerate() {
         for (e, a) in acc.iter().enumerate() {
             let (lo, hi) = a.interval(targets[k][e], half[k][e]);
-            r = r.detail(&format!("solution {} component {}: accepted region", k + 1, e + 1), Value::interval(lo, hi));
+            r = r.detail(
+                &format!("solution {} component {}: accepted region", k + 1, e + 1),
+                Value::interval(lo, hi),
+            );
         }
     }
     r = r
@@ -170,10 +207,17 @@ fn solutions_result(
         .detail("samples with two real roots", s.cloud.len());
     for (k, sp) in s.spread.iter().enumerate() {
         for (e, q) in sp.iter().enumerate() {
-            r = r.detail(&format!("root {} component {}: 5 / 50 / 95 % over the box", k + 1, e + 1), Value::reals(q));
+            r = r.detail(
+                &format!(
+                    "root {} component {}: 5 / 50 / 95 % over the box",
+                    k + 1,
+                    e + 1
+                ),
+                Value::reals(q),
+            );
         }
     }
-    r.verdict(solutions_verdict(direct, s.witness.is_some()))
+    r
 }
 
 fn bx_half(case: &P3f3ExampleCase) -> Value {
@@ -181,10 +225,19 @@ fn bx_half(case: &P3f3ExampleCase) -> Value {
     Value::real(h.iter().fold(0.0, |a: f64, b| a.max(*b)))
 }
 
-fn figure_result(b: &ResultBuilder, case: &P3f3ExampleCase, s: &Study, body_half: &[f64; 3]) -> ClaimResult {
+fn figure_result(
+    b: &ResultBuilder,
+    case: &P3f3ExampleCase,
+    s: &Study,
+    body_half: &[f64; 3],
+) -> ClaimResult {
     let sq = &case.body.squares;
     let e = (0..3)
-        .max_by(|x, y| s.body_acceptance[*x].outer().total_cmp(&s.body_acceptance[*y].outer()))
+        .max_by(|x, y| {
+            s.body_acceptance[*x]
+                .outer()
+                .total_cmp(&s.body_acceptance[*y].outer())
+        })
         .unwrap_or(0);
     let power = acceptance_power(
         &s.body_acceptance[e],
@@ -210,7 +263,10 @@ fn figure_result(b: &ResultBuilder, case: &P3f3ExampleCase, s: &Study, body_half
         .detail("figure coordinates: half a unit", bx_half(case));
     for (k, a) in s.body_acceptance.iter().enumerate() {
         let (lo, hi) = a.interval(sq[k].to_f64(), body_half[k]);
-        r = r.detail(&format!("body square {}: accepted region", k + 1), Value::interval(lo, hi));
+        r = r.detail(
+            &format!("body square {}: accepted region", k + 1),
+            Value::interval(lo, hi),
+        );
     }
     r.verdict(if s.body_fit.is_some() {
         Verdict::ReproducedWithinRounding
@@ -233,38 +289,63 @@ fn feasibility_verdict(over_box: &[Option<bool>], at_witness: Option<bool>) -> V
     }
 }
 
-fn feasibility_result(b: &ResultBuilder, case: &P3f3ExampleCase, s: &Study, targets: &[[f64; 3]]) -> ClaimResult {
+fn feasibility_result(
+    b: &ResultBuilder,
+    case: &P3f3ExampleCase,
+    s: &Study,
+    targets: &[[f64; 3]],
+) -> ClaimResult {
     let judged: Vec<Option<bool>> = targets
         .iter()
         .flat_map(|t| (0..3).map(move |e| feasible_within(t[e], &s.longest_projection[e])))
         .collect();
-    let rules = |t: &[f64; 3], proj: &[[f64; 3]]| first_violation(t, proj.iter().map(|p| &p[..])).is_none();
-    let at_witness = s.witness_projections.as_ref().map(|p| targets.iter().all(|t| rules(t, p)));
+    let rules =
+        |t: &[f64; 3], proj: &[[f64; 3]]| first_violation(t, proj.iter().map(|p| &p[..])).is_none();
+    let at_witness = s
+        .witness_projections
+        .as_ref()
+        .map(|p| targets.iter().all(|t| rules(t, p)));
     // the control at the witness: the component closest to its longest projection there,
     // mirrored to as far below it as it lies above, must be judged infeasible
     let control = s.witness_projections.as_ref().map(|p| {
         let longest = |e: usize| p.iter().map(|f| f[e]).fold(0.0, f64::max);
         let (k, e) = (0..targets.len())
             .flat_map(|k| (0..3).map(move |e| (k, e)))
-            .min_by(|x, y| (targets[x.0][x.1] - longest(x.1)).total_cmp(&(targets[y.0][y.1] - longest(y.1))))
+            .min_by(|x, y| {
+                (targets[x.0][x.1] - longest(x.1)).total_cmp(&(targets[y.0][y.1] - longest(y.1)))
+            })
             .unwrap_or((0, 0));
         let mut m = targets[k];
         m[e] = longest(e) - (targets[k][e] - longest(e)).abs();
         !rules(&m, p)
     });
-    let mut r = b.claim(&case.feasibility).printed("feasible solutions", targets.len());
+    let mut r = b
+        .claim(&case.feasibility)
+        .printed("feasible solutions", targets.len());
     for (t, v) in targets.iter().zip(judged.chunks(3)) {
         r = r
-            .computed("solution feasible over the whole box", Value::flag(v.iter().all(|j| *j == Some(true))))
+            .computed(
+                "solution feasible over the whole box",
+                Value::flag(v.iter().all(|j| *j == Some(true))),
+            )
             .detail("solution", Value::reals(t));
     }
-    r = r.computed("both feasible at the witness point", Value::flag(at_witness == Some(true)));
+    r = r.computed(
+        "both feasible at the witness point",
+        Value::flag(at_witness == Some(true)),
+    );
     for (k, lp) in s.longest_projection.iter().enumerate() {
-        r = r.detail(&format!("longest projection of edge {} over the box", k + 1), Value::interval(lp.lo, lp.hi));
+        r = r.detail(
+            &format!("longest projection of edge {} over the box", k + 1),
+            Value::interval(lp.lo, lp.hi),
+        );
     }
     if let Some(p) = &s.witness_projections {
         for e in 0..3 {
-            r = r.detail(&format!("longest projection of edge {} at the witness", e + 1), p.iter().map(|f| f[e]).fold(0.0, f64::max));
+            r = r.detail(
+                &format!("longest projection of edge {} at the witness", e + 1),
+                p.iter().map(|f| f[e]).fold(0.0, f64::max),
+            );
         }
     }
     for root in &s.at_printed {
@@ -279,16 +360,34 @@ fn feasibility_result(b: &ResultBuilder, case: &P3f3ExampleCase, s: &Study, targ
         .verdict(feasibility_verdict(&judged, at_witness))
 }
 
-fn figures(b: &ResultBuilder, case: &P3f3ExampleCase, bx: &RoundingBox, s: &Study, targets: &[[f64; 3]]) {
+fn figures(
+    b: &ResultBuilder,
+    case: &P3f3ExampleCase,
+    bx: &RoundingBox,
+    s: &Study,
+    targets: &[[f64; 3]],
+) {
     let frame_points = |x: &[f64], i: usize| -> Vec<[f64; 2]> {
-        (0..3).map(|j| [x[6 * i + 2 * j], x[6 * i + 2 * j + 1]]).collect()
+        (0..3)
+            .map(|j| [x[6 * i + 2 * j], x[6 * i + 2 * j + 1]])
+            .collect()
     };
     let panels = (0..case.figure.frames.len())
         .map(|i| {
-            let mut layers = vec![Layer::new("printed", Shape::Polygon, Style::Printed, frame_points(&bx.center, i))
-                .labelled(&["P", "Q", "R"])];
+            let mut layers = vec![Layer::new(
+                "printed",
+                Shape::Polygon,
+                Style::Printed,
+                frame_points(&bx.center, i),
+            )
+            .labelled(&["P", "Q", "R"])];
             if let Some(w) = &s.body_fit {
-                layers.push(Layer::new("exact view inside the rounding box", Shape::Polygon, Style::Computed, frame_points(&w.point, i)));
+                layers.push(Layer::new(
+                    "exact view inside the rounding box",
+                    Shape::Polygon,
+                    Style::Computed,
+                    frame_points(&w.point, i),
+                ));
             }
             Plot::image(&format!("frame {}", i + 1), layers)
         })
@@ -303,16 +402,54 @@ fn figures(b: &ResultBuilder, case: &P3f3ExampleCase, bx: &RoundingBox, s: &Stud
         ),
         panels,
     });
-    let root = |k: usize| thin(&s.cloud.iter().map(|m| [m[k][0], m[k][2]]).collect::<Vec<_>>(), 1500);
+    rounding_figure(b, case, s, targets);
+}
+
+fn rounding_figure(b: &ResultBuilder, case: &P3f3ExampleCase, s: &Study, targets: &[[f64; 3]]) {
+    let root = |k: usize| {
+        thin(
+            &s.cloud
+                .iter()
+                .map(|m| [m[k][0], m[k][2]])
+                .collect::<Vec<_>>(),
+            1500,
+        )
+    };
     let mut layers: Vec<Layer> = (0..targets.len())
         .map(|k| {
-            let style = if k == 0 { Style::Computed } else { Style::Other };
-            Layer::new(&format!("root near printed solution {}", k + 1), Shape::Points, style, root(k))
+            let style = if k == 0 {
+                Style::Computed
+            } else {
+                Style::Other
+            };
+            Layer::new(
+                &format!("root near printed solution {}", k + 1),
+                Shape::Points,
+                style,
+                root(k),
+            )
         })
         .collect();
-    layers.push(Layer::new("at the printed coordinates", Shape::Points, Style::Printed, s.at_printed.iter().map(|r| [r[0], r[2]]).collect()));
-    layers.push(Layer::new("the paper's solutions", Shape::Points, Style::Mark, targets.iter().map(|t| [t[0], t[2]]).collect()));
-    let window = central_window(&layers.iter().take(2).flat_map(|l| l.points.iter().copied()).collect::<Vec<_>>(), 0.02);
+    layers.push(Layer::new(
+        "at the printed coordinates",
+        Shape::Points,
+        Style::Printed,
+        s.at_printed.iter().map(|r| [r[0], r[2]]).collect(),
+    ));
+    layers.push(Layer::new(
+        "the paper's solutions",
+        Shape::Points,
+        Style::Mark,
+        targets.iter().map(|t| [t[0], t[2]]).collect(),
+    ));
+    let window = central_window(
+        &layers
+            .iter()
+            .take(2)
+            .flat_map(|l| l.points.iter().copied())
+            .collect::<Vec<_>>(),
+        0.02,
+    );
     b.figure(Figure {
         id: "fig-ex2-rounding".into(),
         claim: case.solutions.claim.claim.clone(),
@@ -334,7 +471,11 @@ fn figures(b: &ResultBuilder, case: &P3f3ExampleCase, bx: &RoundingBox, s: &Stud
 }
 
 /// The result id of `claim` in a census case: its suffix from the case, when it has one.
-fn census_claim<'b>(b: &'b ResultBuilder, case: &'b CensusCase, claim: &'b crate::cases::ClaimRef) -> super::ClaimBuilder<'b> {
+fn census_claim<'b>(
+    b: &'b ResultBuilder,
+    case: &'b CensusCase,
+    claim: &'b crate::cases::ClaimRef,
+) -> super::ClaimBuilder<'b> {
     match case.suffixes.get(&claim.claim) {
         Some(s) => b.claim(claim).suffix(s),
         None => b.claim(claim),
@@ -354,7 +495,12 @@ pub(super) fn check_census(b: &ResultBuilder, case: &CensusCase) -> Result<Vec<C
     let ok = count_holds(&c);
     // the control: the same census rejects "at most one solution" whenever it sees two
     let two = c.feasible_counts[2];
-    let motions = c.motions_per_edge_solution.iter().copied().max().unwrap_or(0);
+    let motions = c
+        .motions_per_edge_solution
+        .iter()
+        .copied()
+        .max()
+        .unwrap_or(0);
     Ok(case
         .claims
         .iter()
@@ -418,7 +564,10 @@ mod tests {
     #[test]
     fn solutions_verdict_prefers_direct_agreement() {
         assert_eq!(solutions_verdict(true, true), Verdict::Reproduced);
-        assert_eq!(solutions_verdict(false, true), Verdict::ReproducedWithinRounding);
+        assert_eq!(
+            solutions_verdict(false, true),
+            Verdict::ReproducedWithinRounding
+        );
         assert_eq!(solutions_verdict(false, false), Verdict::Contradicted);
     }
 
@@ -435,19 +584,37 @@ mod tests {
         let yes = [Some(true), Some(true)];
         let open = [Some(true), None];
         assert_eq!(feasibility_verdict(&yes, None), Verdict::Reproduced);
-        assert_eq!(feasibility_verdict(&open, Some(true)), Verdict::ReproducedWithinRounding);
-        assert_eq!(feasibility_verdict(&open, Some(false)), Verdict::Contradicted);
+        assert_eq!(
+            feasibility_verdict(&open, Some(true)),
+            Verdict::ReproducedWithinRounding
+        );
+        assert_eq!(
+            feasibility_verdict(&open, Some(false)),
+            Verdict::Contradicted
+        );
         assert_eq!(feasibility_verdict(&open, None), Verdict::Inconclusive);
-        assert_eq!(feasibility_verdict(&[Some(false)], Some(true)), Verdict::Contradicted);
+        assert_eq!(
+            feasibility_verdict(&[Some(false)], Some(true)),
+            Verdict::Contradicted
+        );
     }
 
     #[test]
     fn acceptance_beyond_the_half_unit_is_weak() {
-        let tight = Acceptance { accepted: [0.0, 0.0], rejected: [Some(1.0), Some(1.0)] };
+        let tight = Acceptance {
+            accepted: [0.0, 0.0],
+            rejected: [Some(1.0), Some(1.0)],
+        };
         assert!(!acceptance_power(&tight, 4.0, 0.5, 0.5, "x").weak);
-        let loose = Acceptance { accepted: [1.0, 1.0], rejected: [Some(3.0), Some(3.0)] };
+        let loose = Acceptance {
+            accepted: [1.0, 1.0],
+            rejected: [Some(3.0), Some(3.0)],
+        };
         assert!(acceptance_power(&loose, 4.0, 0.5, 0.5, "x").weak);
-        let open = Acceptance { accepted: [1.0, 1e5], rejected: [Some(3.0), None] };
+        let open = Acceptance {
+            accepted: [1.0, 1e5],
+            rejected: [Some(3.0), None],
+        };
         assert!(acceptance_power(&open, 4.0, 0.5, 0.5, "x").weak);
     }
 
@@ -463,7 +630,10 @@ mod tests {
             max_route_disagreement: 0.0,
             routes_checked: (2, 2),
             collinear: Some(Degenerate::Collinear),
-            identical_frames: Some(Degenerate::IdenticalFrames { first: 1, second: 2 }),
+            identical_frames: Some(Degenerate::IdenticalFrames {
+                first: 1,
+                second: 2,
+            }),
         };
         assert!(count_holds(&c));
         c.collinear = None;

@@ -53,28 +53,54 @@ pub(super) fn check_example(b: &ResultBuilder, case: &P4f3ExampleCase) -> Result
     let names = default_edge_names(6);
     let digits = case.body.significant_digits.unwrap_or(6);
     let squares: Vec<f64> = case.body.squares.iter().map(Printed::to_f64).collect();
-    let sq_half: Vec<f64> = case.body.squares.iter().map(|s| s.half_unit_significant(digits)).collect();
+    let sq_half: Vec<f64> = case
+        .body
+        .squares
+        .iter()
+        .map(|s| s.half_unit_significant(digits))
+        .collect();
     let (center, halves) = case.figure.rounding_box();
-    let bx = RoundingBox { center, half: halves };
+    let bx = RoundingBox {
+        center,
+        half: halves,
+    };
     let fit = ex4::figure_fit(&bx, &squares, &sq_half);
-    let mut out = vec![body_result(b, case, &fit), figure_result(b, case, &fit, &sq_half)];
+    let mut out = vec![
+        body_result(b, case, &fit),
+        figure_result(b, case, &fit, &sq_half),
+    ];
     figure(b, case, &bx, &fit);
     let mdig = case.matrix.significant_digits;
-    let rows: Vec<[f64; 7]> = case.matrix.rows.iter().map(|r| std::array::from_fn(|j| r[j].to_f64())).collect();
-    let rh: Vec<[f64; 7]> = case.matrix.rows.iter().map(|r| std::array::from_fn(|j| half(&r[j], mdig))).collect();
+    let rows: Vec<[f64; 7]> = case
+        .matrix
+        .rows
+        .iter()
+        .map(|r| std::array::from_fn(|j| r[j].to_f64()))
+        .collect();
+    let rh: Vec<[f64; 7]> = case
+        .matrix
+        .rows
+        .iter()
+        .map(|r| std::array::from_fn(|j| half(&r[j], mdig)))
+        .collect();
     let audit = printed_matrix::run(&printed_matrix::Input {
         bx: &bx,
         points: 4,
         rows: &rows,
         half: &rh,
-        mutant_half_units: case.matrix_mutant_half_units,
+        mutant_half_units: &case.matrix_mutant_half_units,
     });
     out.push(matrix_result(b, case, &audit));
     let xs = &case.solution.values[0];
     let sdig = case.solution.significant_digits;
     let x: Vec<f64> = xs.iter().map(Printed::to_f64).collect();
     let xh: Vec<f64> = xs.iter().map(|p| p.half_unit_significant(sdig)).collect();
-    let aq: Vec<Vec<_>> = case.matrix.rows.iter().map(|r| r.iter().map(|p| p.value.clone()).collect()).collect();
+    let aq: Vec<Vec<_>> = case
+        .matrix
+        .rows
+        .iter()
+        .map(|r| r.iter().map(|p| p.value.clone()).collect())
+        .collect();
     let sol = ex4::solution_check(&aq, &rh, &x, &xh);
     out.push(solution_result(b, case, &sol, &x, &xh));
     let levels: Vec<f64> = case.noise.iter().map(|l| l.level.to_f64()).collect();
@@ -83,8 +109,17 @@ pub(super) fn check_example(b: &ResultBuilder, case: &P4f3ExampleCase) -> Result
         .as_ref()
         .map(|w| ex4::conditioning(&w.point, &squares, &levels, case.trials, case.seed));
     out.push(conditioning_result(b, case, cond.as_ref(), sol.condition));
-    let scene_results: Vec<LevelResult> = cond.map(|c| c.levels.into_iter().map(|l| l.2).collect()).unwrap_or_default();
-    out.extend(noise_results(b, case, &fit.realization.points, &squares, &names, &scene_results));
+    let scene_results: Vec<LevelResult> = cond
+        .map(|c| c.levels.into_iter().map(|l| l.2).collect())
+        .unwrap_or_default();
+    out.extend(noise_results(
+        b,
+        case,
+        &fit.realization.points,
+        &squares,
+        &names,
+        &scene_results,
+    ));
     Ok(out)
 }
 
@@ -96,22 +131,32 @@ fn body_result(b: &ResultBuilder, case: &P4f3ExampleCase, fit: &FigureFit) -> Cl
     // the weakest pair: the widest interval of squares a printed length allows
     let mut worst: Option<(f64, f64, f64, f64)> = None;
     for (l, s) in t.lengths.iter().zip(&t.squares) {
-        let (hl, hs) = (l.half_unit_significant(digits), s.half_unit_significant(digits));
+        let (hl, hs) = (
+            l.half_unit_significant(digits),
+            s.half_unit_significant(digits),
+        );
         let (lo, hi) = ex4::common_square(l.to_f64(), hl, s.to_f64(), hs);
         all &= lo <= hi;
-        let (alo, ahi) = ((l.to_f64() - hl).powi(2) - hs, (l.to_f64() + hl).powi(2) + hs);
-        // allowed: the length's own rounding carried to its square, plus the square's
-        let allowed = 2.0 * l.to_f64() * hl + hl * hl + hs;
+        let (alo, ahi) = (
+            (l.to_f64() - hl).powi(2) - hs,
+            (l.to_f64() + hl).powi(2) + hs,
+        );
+        // allowed: the length's own rounding carried to its square, plus the square's — the
+        // acceptance is exactly the printed precision, so this check is never weak
+        let allowed = (l.to_f64().powi(2) - alo).max(ahi - l.to_f64().powi(2));
         if worst.is_none_or(|w| ahi - alo > w.1 - w.0) {
-            worst = Some((alo, ahi, s.to_f64(), allowed));
+            worst = Some((alo, ahi, l.to_f64().powi(2), allowed));
         }
-        r = r.printed("length", l).printed("square", s).computed("common true square", Value::interval(lo, hi));
+        r = r
+            .printed("length", l)
+            .printed("square", s)
+            .computed("common true square", Value::interval(lo, hi));
     }
     let (alo, ahi, sv, allowed) = worst.unwrap_or((0.0, 0.0, 0.0, 0.0));
     r.computed("Gram eigenvalues of the squares", Value::reals(&fit.realization.eigenvalues))
         .computed("realizable in 3-D", Value::flag(fit.realization.realizable))
         .tolerance(Tolerance::bound(digits as f64, ToleranceSource::PrintedPrecision, "half a unit in the last of this many significant digits, on both the length and the square"))
-        .power(Power::interval(alo, ahi, sv, allowed, "printed squares accepted beside the widest printed length: exactly those its rounding allows"))
+        .power(Power::interval(alo, ahi, sv, allowed, "printed squares accepted beside the widest printed length, around its square: exactly what its rounding and the square's allow"))
         .method("interval of each printed length squared against the interval of its printed square; classical scaling of the squares (Gram matrix of the edges from P), eigenvalues above the derived rounding floor")
         .detail("Gram rounding floor", fit.realization.floor)
         .verdict(Verdict::holds(all))
@@ -119,7 +164,9 @@ fn body_result(b: &ResultBuilder, case: &P4f3ExampleCase, fit: &FigureFit) -> Cl
 
 /// The acceptance interval of the widest of `acc` as a power statement (allowed: one half unit).
 fn widest_power(acc: &[Acceptance], values: &[f64], units: &[f64], what: &str) -> Power {
-    let k = (0..acc.len()).max_by(|x, y| acc[*x].outer().total_cmp(&acc[*y].outer())).unwrap_or(0);
+    let k = (0..acc.len())
+        .max_by(|x, y| acc[*x].outer().total_cmp(&acc[*y].outer()))
+        .unwrap_or(0);
     match acc.get(k) {
         Some(a) => {
             let (lo, hi) = a.interval(values[k], units[k]);
@@ -129,7 +176,12 @@ fn widest_power(acc: &[Acceptance], values: &[f64], units: &[f64], what: &str) -
     }
 }
 
-fn figure_result(b: &ResultBuilder, case: &P4f3ExampleCase, fit: &FigureFit, sq_half: &[f64]) -> ClaimResult {
+fn figure_result(
+    b: &ResultBuilder,
+    case: &P4f3ExampleCase,
+    fit: &FigureFit,
+    sq_half: &[f64],
+) -> ClaimResult {
     let squares: Vec<f64> = case.body.squares.iter().map(Printed::to_f64).collect();
     let mut r = b
         .claim(&case.figure.claim)
@@ -140,20 +192,40 @@ fn figure_result(b: &ResultBuilder, case: &P4f3ExampleCase, fit: &FigureFit, sq_
         .power(widest_power(&fit.acceptance, &squares, sq_half, "square"))
         .method("per frame the affine camera fitted to the body, its misfit and the orthonormality of its rows; minimum-norm Gauss–Newton over the rounding box for coordinates where they vanish; the same search for the body with one square moved");
     if let Some(w) = &fit.witness {
-        r = r.detail("largest shift of the exact views (units of half a unit)", w.shift_ratio);
+        r = r.detail(
+            "largest shift of the exact views (units of half a unit)",
+            w.shift_ratio,
+        );
     }
     for (e, a) in fit.acceptance.iter().enumerate() {
         let (lo, hi) = a.interval(squares[e], sq_half[e]);
-        r = r.detail(&format!("square {}: accepted region", e + 1), Value::interval(lo, hi));
+        r = r.detail(
+            &format!("square {}: accepted region", e + 1),
+            Value::interval(lo, hi),
+        );
     }
-    r.verdict(if fit.witness.is_some() { Verdict::ReproducedWithinRounding } else { Verdict::Contradicted })
+    r.verdict(if fit.witness.is_some() {
+        Verdict::ReproducedWithinRounding
+    } else {
+        Verdict::Contradicted
+    })
 }
 
 fn figure(b: &ResultBuilder, case: &P4f3ExampleCase, bx: &RoundingBox, fit: &FigureFit) {
-    let unflat = |x: &[f64], f: usize| -> Vec<[f64; 2]> { (0..4).map(|j| [x[8 * f + 2 * j], x[8 * f + 2 * j + 1]]).collect() };
+    let unflat = |x: &[f64], f: usize| -> Vec<[f64; 2]> {
+        (0..4)
+            .map(|j| [x[8 * f + 2 * j], x[8 * f + 2 * j + 1]])
+            .collect()
+    };
     let tetra = |fr: &[[f64; 2]], name: &str, style: Style| -> Vec<Layer> {
         vec![
-            Layer::new(name, Shape::Line, style, vec![fr[0], fr[1], fr[2], fr[0], fr[3], fr[1]]).labelled(&["P", "Q", "R", "", "T", ""]),
+            Layer::new(
+                name,
+                Shape::Line,
+                style,
+                vec![fr[0], fr[1], fr[2], fr[0], fr[3], fr[1]],
+            )
+            .labelled(&["P", "Q", "R", "", "T", ""]),
             Layer::new(name, Shape::Line, style, vec![fr[2], fr[3]]),
         ]
     };
@@ -161,7 +233,11 @@ fn figure(b: &ResultBuilder, case: &P4f3ExampleCase, bx: &RoundingBox, fit: &Fig
         .map(|i| {
             let mut layers = tetra(&unflat(&bx.center, i), "printed", Style::Printed);
             if let Some(w) = &fit.witness {
-                layers.extend(tetra(&unflat(&w.point, i), "exact view inside the rounding box", Style::Computed));
+                layers.extend(tetra(
+                    &unflat(&w.point, i),
+                    "exact view inside the rounding box",
+                    Style::Computed,
+                ));
             }
             Plot::image(&format!("frame {}", i + 1), layers)
         })
@@ -176,44 +252,92 @@ fn figure(b: &ResultBuilder, case: &P4f3ExampleCase, bx: &RoundingBox, fit: &Fig
 }
 
 fn matrix_result(b: &ResultBuilder, case: &P4f3ExampleCase, a: &Audit) -> ClaimResult {
-    let rejected = a.mutants.iter().filter(|m| m.rejected).count();
-    let all_rejected = rejected == a.mutants.len() && !a.mutants.is_empty();
-    let widest = a.enclosure_half_units.iter().flatten().fold(0.0, |m: f64, v| m.max(*v));
+    let largest = case
+        .matrix_mutant_half_units
+        .iter()
+        .fold(0.0, |m: f64, v| m.max(*v));
+    let at_largest: Vec<_> = a
+        .mutants
+        .iter()
+        .filter(|m| m.shift.abs() == largest)
+        .collect();
+    let rejected = at_largest.iter().filter(|m| m.rejected).count();
+    let all_rejected = rejected == at_largest.len() && !at_largest.is_empty();
+    let widest = a
+        .enclosure_half_units
+        .iter()
+        .flatten()
+        .fold(0.0, |m: f64, v| m.max(*v));
     let mut r = b
         .claim(&case.matrix.claim)
         .printed("significant digits", case.matrix.significant_digits)
         .computed("largest deviation at the printed coordinates (half units)", a.at_printed)
         .computed("a point of the rounding box reproduces every entry within its half unit", Value::flag(a.witness.is_some()))
         .tolerance(Tolerance::bound(1.0, ToleranceSource::PrintedPrecision, "half a unit in the last significant digit of every nonzero entry, at one point of the figure's rounding box"))
-        .power(Power::mutant(all_rejected, &format!("every nonzero entry moved alone by ± {} of its half units: the same search finds no point of the box ({rejected} of {} mutants rejected)", case.matrix_mutant_half_units, a.mutants.len())))
+        .power(Power::mutant(all_rejected, &format!("every nonzero entry moved alone by ± {largest} of its half units: the same search finds no point of the box ({rejected} of {} mutants rejected; those accepted at smaller shifts are listed)", at_largest.len())))
         .method("each printed row matched against every triangle, ordered frame pair and factor ±1, ±½, ±2 at the printed coordinates; then a witness search (minimum-norm Gauss–Newton over the box of half a unit of each coordinate) for coordinates whose rows reproduce all 24 nonzero entries within half a unit of their sixth significant digit; the same search for single-entry mutants")
         .detail("old check: widest interval enclosure over the box, in half units of its entry", widest);
     for (i, m) in a.matches.iter().enumerate() {
         r = r
-            .detail(&format!("row {}: triangle edges", i + 1), Value::label(format!("{:?}", m.triangle)))
-            .detail(&format!("row {}: frames (first − second)", i + 1), Value::label(format!("F{} − F{}", m.first, m.second)))
+            .detail(
+                &format!("row {}: triangle edges", i + 1),
+                Value::label(format!("{:?}", m.triangle)),
+            )
+            .detail(
+                &format!("row {}: frames (first − second)", i + 1),
+                Value::label(format!("F{} − F{}", m.first, m.second)),
+            )
             .detail(&format!("row {}: factor", i + 1), m.factor);
     }
     if let Some(w) = &a.witness {
         r = r
-            .detail("witness: largest shift (units of half a unit)", w.shift_ratio)
+            .detail(
+                "witness: largest shift (units of half a unit)",
+                w.shift_ratio,
+            )
             .detail("witness: largest entry residual (half units)", w.residual);
     }
+    for shift in &case.matrix_mutant_half_units {
+        let of: Vec<_> = a
+            .mutants
+            .iter()
+            .filter(|m| m.shift.abs() == *shift)
+            .collect();
+        let n = of.iter().filter(|m| m.rejected).count();
+        r = r.detail(
+            &format!("mutants rejected at ± {shift} half units"),
+            Value::count_of(n, of.len()),
+        );
+    }
     for m in a.mutants.iter().filter(|m| !m.rejected) {
-        r = r.detail("mutant accepted (row, column, shift)", Value::reals(&[m.row as f64 + 1.0, m.column as f64 + 1.0, m.shift]));
+        r = r.detail(
+            "mutant accepted (row, column, shift in half units)",
+            Value::reals(&[m.row as f64 + 1.0, m.column as f64 + 1.0, m.shift]),
+        );
     }
     r.verdict(matrix_verdict(a.witness.is_some()))
 }
 
-fn solution_result(b: &ResultBuilder, case: &P4f3ExampleCase, s: &SolutionCheck, x: &[f64], xh: &[f64]) -> ClaimResult {
+fn solution_result(
+    b: &ResultBuilder,
+    case: &P4f3ExampleCase,
+    s: &SolutionCheck,
+    x: &[f64],
+    xh: &[f64],
+) -> ClaimResult {
     let xs = &case.solution.values[0];
     let res_ok = all_within(&s.residuals, &s.residual_bounds);
     let exact = s.exact.clone().unwrap_or_default();
     let diff: Vec<f64> = exact.iter().zip(x).map(|(a, b)| a - b).collect();
     let solve_ok = all_within(&diff, &s.bounds);
-    let table_equal = xs.iter().zip(&case.body.squares).all(|(a, b)| a.value == b.value);
+    let table_equal = xs
+        .iter()
+        .zip(&case.body.squares)
+        .all(|(a, b)| a.value == b.value);
     // the weakest unknown: the widest acceptance relative to its half unit
-    let k = (0..s.bounds.len()).max_by(|a, b| (s.bounds[*a] / xh[*a]).total_cmp(&(s.bounds[*b] / xh[*b]))).unwrap_or(0);
+    let k = (0..s.bounds.len())
+        .max_by(|a, b| (s.bounds[*a] / xh[*a]).total_cmp(&(s.bounds[*b] / xh[*b])))
+        .unwrap_or(0);
     let centre = exact.get(k).copied().unwrap_or(x[k]);
     let mut r = b.claim(&case.solution.claim);
     for p in xs {
@@ -234,14 +358,26 @@ fn solution_result(b: &ResultBuilder, case: &P4f3ExampleCase, s: &SolutionCheck,
         .verdict(Verdict::holds(res_ok && solve_ok && table_equal))
 }
 
-fn conditioning_result(b: &ResultBuilder, case: &P4f3ExampleCase, c: Option<&Conditioning>, printed_cond: Option<f64>) -> ClaimResult {
-    let r = b.claim(&case.conditioning).suffix("conditioning").printed("statement", Value::label(case.conditioning.quote.clone()));
+fn conditioning_result(
+    b: &ResultBuilder,
+    case: &P4f3ExampleCase,
+    c: Option<&Conditioning>,
+    printed_cond: Option<f64>,
+) -> ClaimResult {
+    let r = b
+        .claim(&case.conditioning)
+        .suffix("conditioning")
+        .printed("statement", Value::label(case.conditioning.quote.clone()));
     let Some(c) = c else {
-        return r.method("no exact scene inside the rounding box: nothing to propagate").power(Power::none("no scene")).verdict(Verdict::Inconclusive);
+        return r
+            .method("no exact scene inside the rounding box: nothing to propagate")
+            .power(Power::none("no scene"))
+            .verdict(Verdict::Inconclusive);
     };
     // the rule at the smallest printed level: the median worst-edge error against ε
     let first = c.levels.iter().min_by(|a, b| a.0.total_cmp(&b.0));
-    let holds = first.is_some_and(|(eps, _, res)| res.quantile(0, 0.5).is_some_and(|m| sensitive(m, *eps)));
+    let holds =
+        first.is_some_and(|(eps, _, res)| res.quantile(0, 0.5).is_some_and(|m| sensitive(m, *eps)));
     let mut r = r
         .computed("condition number at the paper's scene", c.condition.unwrap_or(f64::MAX))
         .computed("condition number of the printed matrix", printed_cond.unwrap_or(f64::MAX))
@@ -254,9 +390,18 @@ fn conditioning_result(b: &ResultBuilder, case: &P4f3ExampleCase, c: Option<&Con
     for (eps, pred, res) in &c.levels {
         r = r
             .detail("ε", *eps)
-            .detail("predicted relative σ per squared edge", Value::reals(pred.as_ref().map_or(&[][..], |p| &p[..])))
-            .detail("Monte Carlo median of the worst edge's relative error", res.quantile(0, 0.5).unwrap_or(f64::MAX))
-            .detail("Monte Carlo 95 % of the worst edge's relative error", res.quantile(0, 0.95).unwrap_or(f64::MAX))
+            .detail(
+                "predicted relative σ per squared edge",
+                Value::reals(pred.as_ref().map_or(&[][..], |p| &p[..])),
+            )
+            .detail(
+                "Monte Carlo median of the worst edge's relative error",
+                res.quantile(0, 0.5).unwrap_or(f64::MAX),
+            )
+            .detail(
+                "Monte Carlo 95 % of the worst edge's relative error",
+                res.quantile(0, 0.95).unwrap_or(f64::MAX),
+            )
             .detail("failed trials", Value::count_of(res.failures, res.trials));
     }
     r.verdict(Verdict::statistical(holds))
@@ -316,20 +461,28 @@ pub(super) fn check_census(b: &ResultBuilder, case: &CensusCase) -> Result<Vec<C
     let planar = planar_degenerate(&c);
     let mut out = Vec::new();
     for claim in &case.claims {
-        let exception = case.exception.as_ref().filter(|e| e.qualifies == claim.claim);
+        let exception = case
+            .exception
+            .as_ref()
+            .filter(|e| e.qualifies == claim.claim);
         let mut r = match case.suffixes.get(&claim.claim) {
             Some(s) => b.claim(claim).suffix(s),
             None => b.claim(claim),
         };
-        r = census_numbers(r, &c)
-            .power(Power::mutant(c.viewing_axis_rank < 6, "the same rank test reports a rank below 6 for motions about the viewing axis"));
+        r = census_numbers(r, &c).power(Power::mutant(
+            c.viewing_axis_rank < 6,
+            "the same rank test reports a rank below 6 for motions about the viewing axis",
+        ));
         let verdict = match (generic, exception.is_some() && planar) {
             (false, _) => Verdict::Contradicted,
             (true, true) => Verdict::HoldsGenerically,
             (true, false) => Verdict::Reproduced,
         };
         if exception.is_some() {
-            r = r.detail("exception (never named by the paper)", Value::label("a planar body: the six equations lose rank whatever the motion"));
+            r = r.detail(
+                "exception (never named by the paper)",
+                Value::label("a planar body: the six equations lose rank whatever the motion"),
+            );
         }
         out.push(r.verdict(verdict));
         if let Some(e) = exception {
@@ -339,7 +492,10 @@ pub(super) fn check_census(b: &ResultBuilder, case: &CensusCase) -> Result<Vec<C
     Ok(out)
 }
 
-fn census_numbers<'b>(r: super::ClaimBuilder<'b>, c: &census::P4f3Census) -> super::ClaimBuilder<'b> {
+fn census_numbers<'b>(
+    r: super::ClaimBuilder<'b>,
+    c: &census::P4f3Census,
+) -> super::ClaimBuilder<'b> {
     r.printed("solutions", Value::label("at most one, of a linear system (unless the motion is degenerate)"))
         .computed("unique feasible, realizable solutions", Value::count_of(c.unique, c.trials))
         .computed("equal to the truth within the rounding bound", Value::count_of(c.truth_found, c.trials))
@@ -351,9 +507,19 @@ fn census_numbers<'b>(r: super::ClaimBuilder<'b>, c: &census::P4f3Census) -> sup
         .detail("median condition number", c.median_condition)
 }
 
-fn planar_result(b: &ResultBuilder, claim: &crate::cases::ClaimRef, suffix: &str, c: &census::P4f3Census, holds: bool) -> ClaimResult {
+fn planar_result(
+    b: &ResultBuilder,
+    claim: &crate::cases::ClaimRef,
+    suffix: &str,
+    c: &census::P4f3Census,
+    holds: bool,
+) -> ClaimResult {
     let ranks: Vec<f64> = c.planar_ranks.iter().map(|r| *r as f64).collect();
-    let all: Vec<f64> = c.planar_ranks_all_triangles.iter().map(|r| *r as f64).collect();
+    let all: Vec<f64> = c
+        .planar_ranks_all_triangles
+        .iter()
+        .map(|r| *r as f64)
+        .collect();
     let mut r = b
         .claim(claim)
         .suffix(suffix)
@@ -367,7 +533,11 @@ fn planar_result(b: &ResultBuilder, claim: &crate::cases::ClaimRef, suffix: &str
     if let Some(d) = &c.planar_outcome {
         r = r.detail("planar body: the solver says", Value::label(d.to_string()));
     }
-    r.verdict(if holds { Verdict::HoldsGenerically } else { Verdict::Contradicted })
+    r.verdict(if holds {
+        Verdict::HoldsGenerically
+    } else {
+        Verdict::Contradicted
+    })
 }
 
 #[cfg(test)]
@@ -379,7 +549,7 @@ mod tests {
         let z = Printed::parse("0").unwrap_or_else(|| unreachable!());
         let v = Printed::parse("-0.423132").unwrap_or_else(|| unreachable!());
         assert_eq!(half(&z, 6), 0.0);
-        approx::assert_relative_eq!(half(&v, 6), 5e-7, max_relative = 1e-12);
+        approx::assert_relative_eq!(half(&v, 6), 5e-7, max_relative = 4.0 * f64::EPSILON);
     }
 
     #[test]

@@ -109,7 +109,8 @@ pub fn solve_core(l: &[[f64; 3]; 3]) -> Core {
             // a real root: polish, then the paper's rules
             let v = polish(&f, core.squares[k]);
             core.squares[k] = v;
-            core.feasible[k] = super::solver::first_violation(&v, l.iter().map(|f| &f[..])).is_none();
+            core.feasible[k] =
+                super::solver::first_violation(&v, l.iter().map(|f| &f[..])).is_none();
         }
     }
     core

@@ -10,7 +10,7 @@ use nalgebra::{DMatrix, DVector, Matrix2x3, Matrix3, SMatrix, SVector, Symmetric
 
 use super::solver::{feasibility, Degenerate, Feasibility, Solution, SolverOutput, SquaredLengths};
 use super::twofold::FrameCoefficients;
-use crate::algebra::{largest_eigenvalue, svd_rank_above, Interval, SvdRank, NEGLIGIBLE_ULPS};
+use crate::algebra::{largest_eigenvalue, svd_rank_above, SvdRank, NEGLIGIBLE_ULPS};
 use crate::error::{Error, Result};
 use crate::model::Tracks;
 
@@ -507,123 +507,6 @@ fn rank_by_eigen(ata: &DMatrix<f64>, floor_for: &dyn Fn(f64) -> f64) -> usize {
     sv.iter().filter(|s| **s > floor).count()
 }
 
-/// How a printed row of the paper's matrix arises from the figure: which triangle, which
-/// pair of frames (`first` − `second`), and the factor applied.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct RowMatch {
-    /// The triangle (edge indices).
-    pub triangle: Triangle,
-    /// The frame whose equation comes first (1-based).
-    pub first: usize,
-    /// The frame subtracted (1-based).
-    pub second: usize,
-    /// The factor on F_first − F_second (±1, ±1/2 or ±2).
-    pub factor: f64,
-    /// Largest |printed − recomputed| over the row, at the printed coordinates.
-    pub deviation: f64,
-}
-
-/// The row `factor · (F_first − F_second)` of `triangle` from image points
-/// (`frames[f][point] = [x, y]`), as seven intervals (coefficients of x1 … x6 and the
-/// constant) enclosing every value over the rounding box `[x ± half]`. The constant uses
-/// K = −4 (2·area)², the squared cross product, which keeps the enclosure tight.
-pub fn row_enclosure(
-    frames: &[Vec<[f64; 2]>],
-    half: f64,
-    triangle: Triangle,
-    first: usize,
-    second: usize,
-    factor: f64,
-) -> [Interval; 7] {
-    let p = frames[0].len();
-    let all = edges_of(p);
-    let points = |f: usize| -> Vec<[Interval; 2]> {
-        frames[f]
-            .iter()
-            .map(|c| [Interval::around(c[0], half), Interval::around(c[1], half)])
-            .collect()
-    };
-    // coefficients 2α, 2β, 2γ and K of one frame's equation for the triangle
-    let frame_terms = |f: usize| -> ([Interval; 3], Interval) {
-        let pts = points(f);
-        let sq = |e: usize| {
-            let (i, j) = all[e];
-            (pts[i][0] - pts[j][0]).square() + (pts[i][1] - pts[j][1]).square()
-        };
-        let [u, v, w] = triangle.map(sq);
-        let lin = [
-            (v + w - u).scale(2.0),
-            (u + w - v).scale(2.0),
-            (u + v - w).scale(2.0),
-        ];
-        // the triangle's three points: the first edge's two, and the one it lacks
-        let (a, b) = all[triangle[0]];
-        let (c0, c1) = all[triangle[1]];
-        let c = if c0 == a || c0 == b { c1 } else { c0 };
-        let cross = (pts[b][0] - pts[a][0]) * (pts[c][1] - pts[a][1])
-            - (pts[c][0] - pts[a][0]) * (pts[b][1] - pts[a][1]);
-        (lin, cross.square().scale(-4.0))
-    };
-    let (l1, k1) = frame_terms(first - 1);
-    let (l2, k2) = frame_terms(second - 1);
-    let mut row = [Interval::point(0.0); 7];
-    for (i, e) in triangle.iter().enumerate() {
-        row[*e] = (l1[i] - l2[i]).scale(factor);
-    }
-    row[6] = (k1 - k2).scale(factor);
-    row
-}
-
-/// The edges of `p` points (as in [`edges`](super::solver::edges)).
-fn edges_of(p: usize) -> Vec<(usize, usize)> {
-    super::solver::edges(p)
-}
-
-/// Identify each printed row (seven numbers: x1 … x6 and the constant) among every triangle,
-/// ordered frame pair and factor ±1, ±1/2, ±2, by the smallest largest deviation at the
-/// printed coordinates.
-pub fn identify_rows(printed: &[[f64; 7]], frames: &[Vec<[f64; 2]>]) -> Vec<RowMatch> {
-    let k = frames.len();
-    let tris = all_triangles(frames[0].len());
-    printed
-        .iter()
-        .map(|row| {
-            let mut best: Option<RowMatch> = None;
-            // positive factors first: a tie between −(F₁ − F₂) and F₂ − F₁ names the latter
-            for factor in [1.0, 0.5, 2.0, -1.0, -0.5, -2.0] {
-                for &triangle in &tris {
-                    for first in 1..=k {
-                        for second in (1..=k).filter(|s| *s != first) {
-                            let r = row_enclosure(frames, 0.0, triangle, first, second, factor);
-                            let deviation = r
-                                .iter()
-                                .zip(row)
-                                .map(|(iv, x)| (iv.mid() - x).abs())
-                                .fold(0.0, f64::max);
-                            if best.is_none_or(|b| deviation < b.deviation) {
-                                best = Some(RowMatch {
-                                    triangle,
-                                    first,
-                                    second,
-                                    factor,
-                                    deviation,
-                                });
-                            }
-                        }
-                    }
-                }
-            }
-            best.unwrap_or(RowMatch {
-                triangle: [0, 1, 2],
-                first: 1,
-                second: 1,
-                factor: 0.0,
-                deviation: f64::INFINITY,
-            })
-        })
-        .collect()
-}
-
 /// Residuals that vanish exactly when `frame` (image points) is an orthographic view of
 /// `body`: the affine camera's misfit Y − A X (centred) and A Aᵀ − I (its rows orthonormal).
 pub fn view_residual(body: &[Vector3<f64>], frame: &[[f64; 2]]) -> Vec<f64> {
@@ -674,7 +557,11 @@ pub fn first_order_spread(frames: &[Vec<[f64; 2]>], eps: f64) -> Option<[f64; 6]
     let p = frames.first().map_or(0, Vec::len);
     let unflat = |c: &[f64]| -> Vec<Vec<[f64; 2]>> {
         (0..frames.len())
-            .map(|f| (0..p).map(|j| [c[2 * (p * f + j)], c[2 * (p * f + j) + 1]]).collect())
+            .map(|f| {
+                (0..p)
+                    .map(|j| [c[2 * (p * f + j)], c[2 * (p * f + j) + 1]])
+                    .collect()
+            })
             .collect()
     };
     let flat: Vec<f64> = frames.iter().flatten().flatten().copied().collect();
@@ -682,7 +569,9 @@ pub fn first_order_spread(frames: &[Vec<[f64; 2]>], eps: f64) -> Option<[f64; 6]
     // a relative step of 1e-6: well above the solve's rounding, well inside its curvature
     let jac = crate::algebra::central_jacobian(&solve, &flat, |_, c| 1e-6 * c.abs())?;
     Some(std::array::from_fn(|j| {
-        let acc: f64 = (0..flat.len()).map(|k| (jac[(j, k)] * flat[k]).powi(2)).sum();
+        let acc: f64 = (0..flat.len())
+            .map(|k| (jac[(j, k)] * flat[k]).powi(2))
+            .sum();
         eps * (acc / 3.0).sqrt() / x0[j].abs()
     }))
 }

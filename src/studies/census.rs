@@ -3,10 +3,10 @@
 
 use nalgebra::{DMatrix, Rotation3, Vector2, Vector3};
 
+use crate::algebra::svd_rank_above;
 use crate::derivations::p3f3::{self, forward_error_bound, reconstructions, validate};
 use crate::derivations::solver::{edges, Degenerate, Solution, SquaredLengths, REPROJECTION_EXACT};
 use crate::derivations::{p3f4, p4f3};
-use crate::algebra::svd_rank_above;
 use crate::model::{Body, Motion, Scene};
 
 /// Solution counts over seeded generic scenes (three points, three frames).
@@ -92,7 +92,11 @@ pub fn p3f3(trials: usize, seed: u64) -> P3f3Census {
             for s in &feasible {
                 let sq = [s.squared_edges[0], s.squared_edges[1], s.squared_edges[2]];
                 let n = reconstructions(&tracks, &sq)
-                    .map(|r| r.iter().filter(|x| x.reprojection_error < REPROJECTION_EXACT).count())
+                    .map(|r| {
+                        r.iter()
+                            .filter(|x| x.reprojection_error < REPROJECTION_EXACT)
+                            .count()
+                    })
                     .unwrap_or(0);
                 if !c.motions_per_edge_solution.contains(&n) {
                     c.motions_per_edge_solution.push(n);
@@ -100,6 +104,12 @@ pub fn p3f3(trials: usize, seed: u64) -> P3f3Census {
             }
         }
     }
+    degenerate_p3f3(&mut c, seed);
+    c
+}
+/// The two degenerate cases §2.2 names: a collinear body, two frames identical up to an
+/// in-plane rotation.
+fn degenerate_p3f3(c: &mut P3f3Census, seed: u64) {
     let mut collinear = Scene::random(3, 3, seed);
     let d = collinear.body.points[1] - collinear.body.points[0];
     collinear.body = Body::new(vec![
@@ -118,8 +128,8 @@ pub fn p3f3(trials: usize, seed: u64) -> P3f3Census {
     c.identical_frames = p3f3::solve(&SquaredLengths::from_tracks(&same.tracks()))
         .ok()
         .and_then(|o| o.degenerate);
-    c
 }
+
 /// Uniqueness over seeded generic scenes, and the special motions.
 #[derive(Clone, Debug, serde::Serialize)]
 pub struct P3f4Census {
@@ -195,7 +205,6 @@ pub fn p3f4(trials: usize, frames: usize, seed: u64) -> P3f4Census {
     c.fixed_axis_rank = rank_for(Unit::new_normalize(nalgebra::Vector3::new(0.3, -0.8, 0.5)));
     c
 }
-
 
 /// Uniqueness of the paper's system over seeded generic scenes, and its degenerate cases.
 #[derive(Clone, Debug, serde::Serialize)]
@@ -274,6 +283,12 @@ pub fn p4f3(trials: usize, seed: u64) -> P4f3Census {
     }
     conds.sort_by(f64::total_cmp);
     c.median_condition = conds.get(conds.len() / 2).copied().unwrap_or(f64::INFINITY);
+    degenerate_p4f3(&mut c, trials, seed);
+    c
+}
+
+/// Planar bodies (z an affine function of x and y) and motions about the viewing axis.
+fn degenerate_p4f3(c: &mut P4f3Census, trials: usize, seed: u64) {
     // planar bodies: z an affine function of x and y
     c.planar_trials = trials.clamp(1, 200);
     for t in 0..c.planar_trials {
@@ -310,6 +325,4 @@ pub fn p4f3(trials: usize, seed: u64) -> P4f3Census {
     let (noise_m, _) = p4f3::noise(&l, 6);
     let (g, _) = p4f3::general_system(&l);
     c.viewing_axis_rank = svd_rank_above(&g, noise_m).rank;
-    c
 }
-

@@ -5,9 +5,13 @@
 
 use num_rational::BigRational;
 
-use super::rounding::{acceptance, monte_carlo, quantile, reproduce, Acceptance, RoundingBox, Witness};
+use super::rounding::{
+    acceptance, monte_carlo, quantile, reproduce, Acceptance, RoundingBox, Witness,
+};
 use crate::algebra::{Interval, NEGLIGIBLE_ULPS};
-use crate::derivations::p3f3::{match_solutions, real_solutions_from_coordinates, validate, Validation};
+use crate::derivations::p3f3::{
+    match_solutions, real_solutions_from_coordinates, validate, Validation,
+};
 use crate::derivations::twofold::FrameCoefficients;
 
 /// What the study needs: the figure's box and what the paper printed, as numbers.
@@ -64,7 +68,9 @@ pub struct Study {
 fn frame_lengths(x: &[f64]) -> Vec<[f64; 3]> {
     (0..x.len() / 6)
         .map(|i| {
-            let pts: Vec<[f64; 2]> = (0..3).map(|j| [x[6 * i + 2 * j], x[6 * i + 2 * j + 1]]).collect();
+            let pts: Vec<[f64; 2]> = (0..3)
+                .map(|j| [x[6 * i + 2 * j], x[6 * i + 2 * j + 1]])
+                .collect();
             let l = crate::model::squared_lengths(&pts);
             [l[0], l[1], l[2]]
         })
@@ -95,7 +101,11 @@ fn scaled_body(x: &[f64], body: [f64; 3]) -> Vec<f64> {
         .collect()
 }
 
-fn mutant_acceptance(bx: &RoundingBox, targets: &[[f64; 3]], half: &[[f64; 3]]) -> Vec<[Acceptance; 3]> {
+fn mutant_acceptance(
+    bx: &RoundingBox,
+    targets: &[[f64; 3]],
+    half: &[[f64; 3]],
+) -> Vec<[Acceptance; 3]> {
     (0..targets.len())
         .map(|k| {
             std::array::from_fn(|e| {

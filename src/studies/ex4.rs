@@ -9,7 +9,9 @@ use num_traits::ToPrimitive;
 use super::rounding::{acceptance, reproduce, Acceptance, RoundingBox, Witness};
 use crate::algebra::{complete_rotation, exact_solve, svd_rank, NEGLIGIBLE_ULPS};
 use crate::derivations::noise::{run_level, stream, LevelResult, Study, StudySolver};
-use crate::derivations::p4f3::{first_order_spread, fit, paper_system, realize, view_residual, Realization};
+use crate::derivations::p4f3::{
+    first_order_spread, fit, paper_system, realize, view_residual, Realization,
+};
 use crate::model::{Body, Motion, NoiseModel, Tracks};
 
 /// The interval of true squares both a printed length (± `hl`) and its printed square (± `hs`)
@@ -37,7 +39,10 @@ fn frames_of(x: &[f64], points: usize) -> Vec<Vec<[f64; 2]>> {
 fn scaled_views(x: &[f64], body: &[Vector3<f64>]) -> Option<Vec<f64>> {
     let p = body.len();
     let centre = body.iter().sum::<Vector3<f64>>() / p as f64;
-    let xxt: nalgebra::Matrix3<f64> = body.iter().map(|v| (v - centre) * (v - centre).transpose()).sum();
+    let xxt: nalgebra::Matrix3<f64> = body
+        .iter()
+        .map(|v| (v - centre) * (v - centre).transpose())
+        .sum();
     let cond = svd_rank(&DMatrix::from_fn(3, 3, |i, j| xxt[(i, j)])).condition?;
     let size = body.iter().map(|v| (v - centre).norm()).fold(1.0, f64::max);
     let unit = cond * NEGLIGIBLE_ULPS * f64::EPSILON * size;
@@ -106,22 +111,44 @@ pub struct SolutionCheck {
 
 /// Check the printed `x` (half units `xh`) against printed rows `a` (exact values `aq`,
 /// half units `ah`; the last column is the constant).
-pub fn solution_check(aq: &[Vec<BigRational>], ah: &[[f64; 7]], x: &[f64], xh: &[f64]) -> SolutionCheck {
-    let a: Vec<Vec<f64>> = aq.iter().map(|r| r.iter().map(|q| q.to_f64().unwrap_or(0.0)).collect()).collect();
-    let residuals = a.iter().map(|r| (0..6).map(|j| r[j] * x[j]).sum::<f64>() + r[6]).collect();
+pub fn solution_check(
+    aq: &[Vec<BigRational>],
+    ah: &[[f64; 7]],
+    x: &[f64],
+    xh: &[f64],
+) -> SolutionCheck {
+    let a: Vec<Vec<f64>> = aq
+        .iter()
+        .map(|r| r.iter().map(|q| q.to_f64().unwrap_or(0.0)).collect())
+        .collect();
+    let residuals = a
+        .iter()
+        .map(|r| (0..6).map(|j| r[j] * x[j]).sum::<f64>() + r[6])
+        .collect();
     let residual_bounds = a
         .iter()
         .zip(ah)
-        .map(|(r, h)| (0..6).map(|j| x[j].abs() * h[j] + r[j].abs() * xh[j]).sum::<f64>() + h[6])
+        .map(|(r, h)| {
+            (0..6)
+                .map(|j| x[j].abs() * h[j] + r[j].abs() * xh[j])
+                .sum::<f64>()
+                + h[6]
+        })
         .collect();
     let lhs: Vec<Vec<BigRational>> = aq.iter().map(|r| r[..6].to_vec()).collect();
     let rhs: Vec<BigRational> = aq.iter().map(|r| -r[6].clone()).collect();
-    let exact = exact_solve(&lhs, &rhs).map(|v| v.iter().map(|q| q.to_f64().unwrap_or(0.0)).collect());
+    let exact =
+        exact_solve(&lhs, &rhs).map(|v| v.iter().map(|q| q.to_f64().unwrap_or(0.0)).collect());
     let af = DMatrix::from_fn(6, 6, |i, j| a[i][j]);
     // first-order bound of the solution's change over the matrix's rounding
-    let db: Vec<f64> = ah.iter().map(|h| h[6] + (0..6).map(|j| h[j] * x[j].abs()).sum::<f64>()).collect();
+    let db: Vec<f64> = ah
+        .iter()
+        .map(|h| h[6] + (0..6).map(|j| h[j] * x[j].abs()).sum::<f64>())
+        .collect();
     let bounds = match af.clone().try_inverse() {
-        Some(inv) => (0..6).map(|i| (0..6).map(|k| inv[(i, k)].abs() * db[k]).sum::<f64>() + xh[i]).collect(),
+        Some(inv) => (0..6)
+            .map(|i| (0..6).map(|k| inv[(i, k)].abs() * db[k]).sum::<f64>() + xh[i])
+            .collect(),
         None => vec![f64::INFINITY; 6],
     };
     SolutionCheck {
@@ -146,11 +173,20 @@ pub struct Conditioning {
 }
 
 /// The scene: the body and each frame's camera fitted to the exact views at `point`.
-pub fn conditioning(point: &[f64], squares: &[f64], levels: &[f64], trials: usize, seed: u64) -> Conditioning {
+pub fn conditioning(
+    point: &[f64],
+    squares: &[f64],
+    levels: &[f64],
+    trials: usize,
+    seed: u64,
+) -> Conditioning {
     let fr = frames_of(point, 4);
     let tracks = Tracks {
         names: crate::model::default_names(4),
-        frames: fr.iter().map(|f| f.iter().map(|c| Vector2::new(c[0], c[1])).collect()).collect(),
+        frames: fr
+            .iter()
+            .map(|f| f.iter().map(|c| Vector2::new(c[0], c[1])).collect())
+            .collect(),
     };
     let fitted = fit(&tracks, squares);
     let motions: Vec<Motion> = fitted
@@ -165,10 +201,14 @@ pub fn conditioning(point: &[f64], squares: &[f64], levels: &[f64], trials: usiz
         .iter()
         .map(|m| {
             let o = m.project(&fitted.points[0]);
-            fitted.points.iter().map(|x| {
-                let y = m.project(x) - o;
-                [y.x, y.y]
-            }).collect()
+            fitted
+                .points
+                .iter()
+                .map(|x| {
+                    let y = m.project(x) - o;
+                    [y.x, y.y]
+                })
+                .collect()
         })
         .collect();
     let l: [[f64; 6]; 3] = std::array::from_fn(|f| {
@@ -189,7 +229,12 @@ pub fn conditioning(point: &[f64], squares: &[f64], levels: &[f64], trials: usiz
         .iter()
         .enumerate()
         .map(|(i, &eps)| {
-            let mut res = run_level(&study, NoiseModel::RelativeCoordinate { eps }, stream(i, 0), &|_| {});
+            let mut res = run_level(
+                &study,
+                NoiseModel::RelativeCoordinate { eps },
+                stream(i, 0),
+                &|_| {},
+            );
             res.model = format!("{} at the paper's scene", res.model);
             (eps, first_order_spread(&scene_frames, eps), res)
         })
@@ -214,6 +259,13 @@ fn direct_amplification(frame: &[[f64; 2]]) -> f64 {
     };
     let l = f(&flat).unwrap_or_default();
     (0..l.len())
-        .map(|e| ((0..flat.len()).map(|k| (j[(e, k)] * flat[k]).powi(2)).sum::<f64>() / 3.0).sqrt() / l[e])
+        .map(|e| {
+            ((0..flat.len())
+                .map(|k| (j[(e, k)] * flat[k]).powi(2))
+                .sum::<f64>()
+                / 3.0)
+                .sqrt()
+                / l[e]
+        })
         .fold(0.0, f64::max)
 }

@@ -1,16 +1,55 @@
 //! Witness searches with tolerances from the printed precision, and the acceptance region of
 //! such a search (its power): how far a printed target may move before the search fails.
 
-pub use crate::derivations::rounding::{monte_carlo, quantile, witness, RoundingBox, Witness};
+pub use crate::derivations::rounding::{
+    monte_carlo, quantile, witness, witness_step, RoundingBox, Witness,
+};
 
 /// Shifts of a mutant target, in units of the target's own tolerance (half a unit of its last
 /// printed digit), tried in turn on each side until the search fails.
 pub const LADDER: [f64; 8] = [1.0, 3.0, 10.0, 30.0, 100.0, 1e3, 1e4, 1e5];
 
+/// Weight of the shift (in units of the box) appended to the residuals by
+/// [`reproduce_gauged`]: it makes the linearised system full rank where the targets leave
+/// some coordinates free (a frame's translation, an in-plane turn) and the targets outnumber
+/// the coordinates, and costs at most this fraction of one tolerance inside the box, so it
+/// never decides whether a target is met.
+const SHIFT_WEIGHT: f64 = 1e-2;
+
+/// The difference step of [`reproduce_gauged`], in units of the box: residuals divided by
+/// half units of six-digit numbers are ~10⁸ times their own rounding, so the default step
+/// (10⁻⁷) would bury the Jacobian in noise; they are polynomials of low degree, so a step of
+/// 10⁻³ of the box leaves a truncation error far below one tolerance.
+const GAUGED_STEP: f64 = 1e-3;
+
+fn finite(r: Option<Vec<f64>>) -> Option<Vec<f64>> {
+    r.filter(|r| r.iter().all(|v| v.is_finite()))
+}
+
 /// A point of the box where every residual, already divided by its own tolerance, is at most
-/// 1 in magnitude; `None` when the search finds none inside the box.
+/// 1 in magnitude; `None` when the search finds none inside the box (or a residual stops
+/// being finite on the way). For fewer targets than coordinates: the minimum-norm steps find
+/// the nearest point.
 pub fn reproduce(b: &RoundingBox, scaled: &dyn Fn(&[f64]) -> Option<Vec<f64>>) -> Option<Witness> {
-    witness(b, scaled, 1.0).filter(inside)
+    witness(b, &|x| finite(scaled(x)), 1.0).filter(inside)
+}
+
+/// [`reproduce`] for more targets than free coordinates, with directions the targets do not
+/// see: the shift, weighted by [`SHIFT_WEIGHT`], joins the residuals.
+pub fn reproduce_gauged(
+    b: &RoundingBox,
+    scaled: &dyn Fn(&[f64]) -> Option<Vec<f64>>,
+) -> Option<Witness> {
+    let free: Vec<usize> = (0..b.center.len()).filter(|&i| b.half[i] > 0.0).collect();
+    let with_shift = |x: &[f64]| {
+        let mut r = finite(scaled(x))?;
+        r.extend(
+            free.iter()
+                .map(|&i| SHIFT_WEIGHT * (x[i] - b.center[i]) / b.half[i]),
+        );
+        Some(r)
+    };
+    witness_step(b, &with_shift, 1.0, GAUGED_STEP).filter(inside)
 }
 
 /// Whether a witness lies in the box and meets every tolerance.
