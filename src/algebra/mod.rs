@@ -1,22 +1,28 @@
 //! Exact and floating algebra: polynomials over ℚ, exact root isolation, float roots, rank.
 
+mod diff;
 mod float_roots;
+mod gram;
 mod interval;
 mod lanczos;
 mod newton;
 mod poly;
+mod procrustes;
 mod rank;
 mod ratfn;
 mod sturm;
 
+pub use diff::central_jacobian;
 pub use float_roots::{
     closed_form_real, companion_roots, compare_methods, quadratic, quadratic_roots, EigenMethod,
     RootAgreement,
 };
+pub use gram::gram;
 pub use interval::Interval;
 pub use lanczos::largest_eigenvalue;
-pub use newton::min_norm_newton;
+pub use newton::{min_norm_newton, min_norm_newton_step};
 pub use poly::{parse_decimal, Monomial, Poly};
+pub use procrustes::{complete_rotation, kabsch, orthonormal_rows};
 pub use rank::{exact_rank, exact_solve, svd_rank, svd_rank_above, ExactRankMethod, SvdRank};
 pub use ratfn::{agree_at_random_points, solve_linear, PointEvaluation, RatFn};
 pub use sturm::{RealRoot, UPoly};

@@ -1,6 +1,6 @@
 //! Minimum-norm Gauss–Newton for underdetermined systems (finding a witness point).
 
-use nalgebra::{DMatrix, DVector};
+use nalgebra::DVector;
 
 /// Find `x` near `x0` with `f(x) ≈ 0` when there are more unknowns than equations: each step
 /// is the minimum-norm solution of the linearised system (Jacobian by central differences
@@ -22,6 +22,20 @@ pub fn min_norm_newton(
     tolerance: f64,
     max_iter: usize,
 ) -> Option<(Vec<f64>, f64)> {
+    min_norm_newton_step(f, x0, tolerance, max_iter, 1e-7)
+}
+
+/// [`min_norm_newton`] with the difference step `step·max(1, |xⱼ|)`: a larger step for `f`
+/// whose values are large against their own rounding (residuals divided by small
+/// tolerances), where the default step would leave the Jacobian's rounding noise above its
+/// smallest meaningful singular values.
+pub fn min_norm_newton_step(
+    f: &dyn Fn(&[f64]) -> Option<Vec<f64>>,
+    x0: &[f64],
+    tolerance: f64,
+    max_iter: usize,
+    step: f64,
+) -> Option<(Vec<f64>, f64)> {
     let norm = |r: &[f64]| r.iter().fold(0.0_f64, |a, b| a.max(b.abs()));
     let mut x = x0.to_vec();
     let mut r = f(&x)?;
@@ -30,27 +44,20 @@ pub fn min_norm_newton(
         if best.1 <= tolerance {
             break;
         }
-        let (m, n) = (r.len(), x.len());
-        let mut jac = DMatrix::zeros(m, n);
-        for j in 0..n {
-            let h = 1e-7 * x[j].abs().max(1.0);
-            let mut xp = x.clone();
-            let mut xm = x.clone();
-            xp[j] += h;
-            xm[j] -= h;
-            let (Some(fp), Some(fm)) = (f(&xp), f(&xm)) else {
-                return Some(best);
-            };
-            for i in 0..m {
-                jac[(i, j)] = (fp[i] - fm[i]) / (2.0 * h);
-            }
-        }
+        let n = x.len();
+        let Some(jac) = super::central_jacobian(f, &x, |_, xj| step * xj.abs().max(1.0)) else {
+            return Some(best);
+        };
         let rv = DVector::from_vec(r.clone());
-        let Ok(step) = jac.clone().svd(true, true).solve(&rv, 1e-14) else {
+        // a bounded SVD: the unbounded one may never converge on badly scaled Jacobians
+        let Some(svd) = jac.clone().try_svd(true, true, 5.0 * f64::EPSILON, 10_000) else {
+            return Some(best);
+        };
+        let Ok(dx) = svd.solve(&rv, 1e-14) else {
             return Some(best);
         };
         for j in 0..n {
-            x[j] -= step[j];
+            x[j] -= dx[j];
         }
         r = match f(&x) {
             Some(r) => r,

@@ -16,6 +16,24 @@ pub struct CensusCase {
     pub trials: usize,
     /// Seed.
     pub seed: u64,
+    /// Result suffixes per claim id, for a claim whose result sits beside others of the same
+    /// claim (`abstract-linear: four-frames` gives the id `abstract-linear/four-frames`).
+    #[serde(default)]
+    pub suffixes: std::collections::BTreeMap<String, String>,
+    /// A degenerate configuration the census finds and the paper never names: which claim it
+    /// qualifies, and the suffix of the result that states it.
+    #[serde(default)]
+    pub exception: Option<CensusException>,
+}
+
+/// A degenerate configuration qualifying one claim of a census.
+#[derive(Clone, Debug, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct CensusException {
+    /// The claim id it qualifies (one of the case's claims).
+    pub qualifies: String,
+    /// The suffix of the result that states it.
+    pub suffix: String,
 }
 
 /// §2.1 worked examples.
@@ -175,6 +193,10 @@ pub struct P4f3ExampleCase {
     /// The printed noise runs: each level is judged against random motions of the body and
     /// against the figure's own scene.
     pub noise: Vec<NoiseLevel>,
+    /// Shifts of the single-entry mutants of the printed matrix, in half units of the entry:
+    /// the same witness search must fail for every mutant at the largest shift; the counts
+    /// at each shift are reported.
+    pub matrix_mutant_half_units: Vec<f64>,
     /// Monte Carlo trials per level, noise model and scene.
     pub trials: usize,
     /// Seed.

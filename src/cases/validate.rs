@@ -17,6 +17,20 @@ pub(super) fn validate(case: &Case, text: &str, path: &Path) -> Result<()> {
     if case.id.trim().is_empty() {
         return err("id", "must not be empty".into());
     }
+    // suffixes and the exception must name claims of the census
+    let census_names = |c: &CensusCase| {
+        let known = |id: &String| c.claims.iter().any(|k| &k.claim == id);
+        if let Some(id) = c.suffixes.keys().find(|id| !known(id)) {
+            return err("check.suffixes", format!("{id} is not one of the claims"));
+        }
+        match &c.exception {
+            Some(e) if !known(&e.qualifies) => err(
+                "check.exception.qualifies",
+                format!("{} is not one of the claims", e.qualifies),
+            ),
+            _ => Ok(()),
+        }
+    };
     match &case.check {
         CaseCheck::DofCount(c) => {
             for (i, e) in c.examples.iter().enumerate() {
@@ -162,11 +176,13 @@ pub(super) fn validate(case: &Case, text: &str, path: &Path) -> Result<()> {
             if c.trials == 0 || c.claims.is_empty() || c.frames != 3 {
                 return err("check", "needs a claim, a trial and 3 frames".into());
             }
+            census_names(c)?;
         }
         CaseCheck::P3f3Census(c) | CaseCheck::P3f4Census(c) => {
             if c.trials == 0 || c.claims.is_empty() {
                 return err("check", "needs at least one claim and one trial".into());
             }
+            census_names(c)?;
             let needed = if matches!(case.check, CaseCheck::P3f3Census(_)) {
                 3
             } else {
@@ -210,6 +226,16 @@ pub(super) fn validate(case: &Case, text: &str, path: &Path) -> Result<()> {
                 return err(
                     &format!("check.p4f3_example.noise[{i}].printed"),
                     "needs solutions of 6 values".into(),
+                );
+            }
+            if c.matrix_mutant_half_units.is_empty()
+                || c.matrix_mutant_half_units
+                    .iter()
+                    .any(|m| !(*m > 1.0 && m.is_finite()))
+            {
+                return err(
+                    "check.p4f3_example.matrix_mutant_half_units",
+                    "needs shifts of more than one half unit".into(),
                 );
             }
             if c.solution.values.len() != 1 || c.solution.values[0].len() != 6 {

@@ -1,325 +1,378 @@
-//! Claims of §2's example: the body, the figure, the two printed solutions, feasibility.
-
-use num_rational::BigRational;
+//! Claims of §2's example (the body, the figure, the two printed solutions, feasibility) and
+//! the censuses of §2.2 and §3. Computation lives in `studies::ex2` and `studies::census`;
+//! here the printed numbers are loaded, the studies called, and the verdicts judged.
 
 use super::figure::{central_window, thin, Figure, Layer, Plot, Shape, Style};
-use super::{ClaimResult, Evidence, OldTolerance, ResultBuilder, Verdict};
-use crate::cases::{P3f3ExampleCase, Printed};
-use crate::derivations::p3f3::{match_solutions, real_solutions_from_coordinates, validate};
-use crate::derivations::rounding::{monte_carlo, quantile, witness, RoundingBox};
-use crate::error::Result;
-use crate::numfmt::{below, sig, sig_list};
+use super::{ClaimResult, Power, ResultBuilder, Tolerance, ToleranceSource, Value, Verdict};
+use crate::algebra::Interval;
+use crate::cases::{CensusCase, P3f3ExampleCase, Printed};
+use crate::derivations::solver::{first_violation, Degenerate};
+use crate::error::{Error, Result};
+use crate::studies::census;
+use crate::studies::ex2::{self, Study};
+use crate::studies::rounding::{Acceptance, RoundingBox};
 
-fn triple(v: &[f64]) -> String {
-    sig_list(v)
+/// The verdict on printed solutions: agreement at the printed coordinates themselves, else a
+/// witness point of the rounding box, else contradiction.
+fn solutions_verdict(direct: bool, witness: bool) -> Verdict {
+    if direct {
+        Verdict::Reproduced
+    } else if witness {
+        Verdict::ReproducedWithinRounding
+    } else {
+        Verdict::Contradicted
+    }
 }
 
-/// Projected squared lengths (PQ, QR, RP) per frame from flat coordinates.
-fn projections(coords: &[f64]) -> Vec<[f64; 3]> {
-    (0..3)
-        .map(|i| {
-            let p = |j: usize| (coords[6 * i + 2 * j], coords[6 * i + 2 * j + 1]);
-            [(0, 1), (1, 2), (2, 0)].map(|(a, b)| {
-                let (pa, pb) = (p(a), p(b));
-                (pa.0 - pb.0).powi(2) + (pa.1 - pb.1).powi(2)
-            })
+/// Whether a squared edge `s` is feasible against the longest projection of its edge over
+/// the rounding box: `Some(true)` when it is at least the upper end (feasible wherever in
+/// the box the figure really lies), `Some(false)` below the lower end, `None` in between.
+fn feasible_within(s: f64, longest: &Interval) -> Option<bool> {
+    if s >= longest.hi {
+        Some(true)
+    } else if s < longest.lo {
+        Some(false)
+    } else {
+        None
+    }
+}
+
+/// The acceptance interval of one search as a power statement: weak when it reaches beyond
+/// `allowed` (what the printed digits would still call right) on either side.
+fn acceptance_power(a: &Acceptance, value: f64, unit: f64, allowed: f64, what: &str) -> Power {
+    let (lo, hi) = a.interval(value, unit);
+    Power::interval(
+        lo,
+        hi,
+        value,
+        allowed,
+        &format!("{what}: the same search for the target moved along the ladder of half units fails first at this interval"),
+    )
+}
+
+fn triples(v: &[Vec<Printed>]) -> Result<Vec<[f64; 3]>> {
+    v.iter()
+        .map(|t| match t.as_slice() {
+            [a, b, c] => Ok([a.to_f64(), b.to_f64(), c.to_f64()]),
+            _ => Err(Error::InvalidInput(
+                "a p3f3 solution has three squares".into(),
+            )),
         })
         .collect()
 }
 
-/// The paper's feasibility rules against given projections; the first violation, if any.
-fn violation(s: &[f64; 3], proj: &[[f64; 3]]) -> Option<String> {
-    let names = ["a² (PQ)", "b² (QR)", "c² (RP)"];
-    for e in 0..3 {
-        if s[e] < 0.0 {
-            return Some(format!("{} negative", names[e]));
-        }
-        for (f, p) in proj.iter().enumerate() {
-            if s[e] < p[e] {
-                return Some(format!(
-                    "{} shorter than its projection in frame {}",
-                    names[e],
-                    f + 1
-                ));
-            }
-        }
-    }
-    None
+pub(super) fn check_example(b: &ResultBuilder, case: &P3f3ExampleCase) -> Result<Vec<ClaimResult>> {
+    let (center, half) = case.figure.rounding_box();
+    let bx = RoundingBox { center, half };
+    let digits = case.solutions.significant_digits;
+    let targets = triples(&case.solutions.values)?;
+    let target_half: Vec<[f64; 3]> = case
+        .solutions
+        .values
+        .iter()
+        .map(|v| std::array::from_fn(|e| v[e].half_unit_significant(digits)))
+        .collect();
+    let body = triples(std::slice::from_ref(&case.body.squares))?[0];
+    let body_half: [f64; 3] = std::array::from_fn(|e| case.body.squares[e].half_unit());
+    let study = ex2::run(&ex2::Input {
+        bx: &bx,
+        targets: &targets,
+        target_half: &target_half,
+        body,
+        body_half,
+        trials: case.rounding_trials,
+        seed: case.seed,
+    });
+    let out = vec![
+        body_result(b, case),
+        solutions_result(b, case, &study, &targets, &target_half),
+        figure_result(b, case, &study, &body_half),
+        feasibility_result(b, case, &study, &targets),
+    ];
+    figures(b, case, &bx, &study, &targets);
+    Ok(out)
 }
 
-pub(super) fn check_example(b: &ResultBuilder, case: &P3f3ExampleCase) -> Result<Vec<ClaimResult>> {
-    let mut out = Vec::new();
+fn body_result(b: &ResultBuilder, case: &P3f3ExampleCase) -> ClaimResult {
+    let t = &case.body;
+    let squares: Vec<_> = t.lengths.iter().map(|l| &l.value * &l.value).collect();
+    let ok = squares.iter().zip(&t.squares).all(|(q, s)| *q == s.value);
+    let mut r = b.claim(&t.claim);
+    for (l, s) in t.lengths.iter().zip(&t.squares) {
+        r = r.printed("length", l).printed("square", s);
+    }
+    for q in &squares {
+        r = r.computed("square of the printed length", q.clone());
+    }
+    r.tolerance(Tolerance::exact(
+        "exact rational squares of the printed digits",
+    ))
+    .power(Power::exact_value(
+        "only the exact square of each printed length passes",
+    ))
+    .method("exact arithmetic on the printed digits")
+    .verdict(Verdict::holds(ok))
+}
 
-    // The body table: the printed squares are the squares of the printed lengths.
-    let sq_ok = case
-        .body
-        .lengths
-        .iter()
-        .zip(&case.body.squares)
-        .all(|(l, s)| &l.value * &l.value == s.value);
-    out.push(b.result(
-        &case.body.claim,
-        None,
-        Verdict::holds(sq_ok),
-        format!(
-            "lengths {}, squares {}",
-            Printed::join(&case.body.lengths),
-            Printed::join(&case.body.squares)
-        ),
-        format!(
-            "squares of the printed lengths: {}",
-            case.body
-                .lengths
-                .iter()
-                .map(|l| (&l.value * &l.value).to_string())
-                .collect::<Vec<_>>()
-                .join(", ")
-        ),
-        Some(OldTolerance::exact(
-            "exact rational squares of the printed digits",
-        )),
-        Evidence::new("exact arithmetic on the printed digits"),
-    ));
-
-    let (center, halves) = case.figure.rounding_box();
-    let bx = RoundingBox {
-        center,
-        half: halves,
-    };
-    let digits = case.solutions.significant_digits;
-    let targets: Vec<[f64; 3]> = case
-        .solutions
-        .values
-        .iter()
-        .map(|v| [v[0].to_f64(), v[1].to_f64(), v[2].to_f64()])
-        .collect();
-    let tols: Vec<[f64; 3]> = case
-        .solutions
-        .values
-        .iter()
-        .map(|v| [0, 1, 2].map(|e| v[e].half_unit_significant(digits)))
-        .collect();
-    let min_tol = tols.iter().flatten().fold(f64::INFINITY, |a, b| a.min(*b));
-    let at_printed = real_solutions_from_coordinates(&bx.center);
-    let matched_printed = match_solutions(&at_printed, &targets);
-    let within = |sols: &[[f64; 3]]| {
-        sols.iter()
-            .zip(&targets)
-            .zip(&tols)
-            .all(|((s, t), tol)| (0..3).all(|e| (s[e] - t[e]).abs() <= tol[e]))
-    };
-    let direct = matched_printed.as_deref().is_some_and(within);
-
-    // A witness: a point of the rounding box whose exact solve gives the printed solutions.
-    let residual = |x: &[f64]| -> Option<Vec<f64>> {
-        let m = match_solutions(&real_solutions_from_coordinates(x), &targets)?;
-        Some(
-            m.iter()
-                .zip(&targets)
-                .flat_map(|(s, t)| (0..3).map(move |e| s[e] - t[e]))
-                .collect(),
-        )
-    };
-    // a thousandth of the printed precision: the witness reproduces every printed digit
-    let wit = witness(&bx, &residual, 1e-3 * min_tol);
-    let wit_inside = wit
-        .as_ref()
-        .filter(|w| w.shift_ratio <= 1.0 && w.residual <= 1e-3 * min_tol);
-    // exact cross-check of the witness: elimination over ℚ and Sturm isolation
-    let wit_validation = wit_inside.map(|w| {
-        let proj = projections(&w.point);
-        let exact: [[BigRational; 3]; 3] = std::array::from_fn(|i| {
-            std::array::from_fn(|e| BigRational::from_float(proj[i][e]).unwrap_or_default())
-        });
-        validate(&exact)
+fn solutions_result(
+    b: &ResultBuilder,
+    case: &P3f3ExampleCase,
+    s: &Study,
+    targets: &[[f64; 3]],
+    half: &[[f64; 3]],
+) -> ClaimResult {
+    let direct = s.matched.as_deref().is_some_and(|m| {
+        m.iter()
+            .zip(targets.iter().zip(half))
+            .all(|(r, (t, h))| (0..3).all(|e| (r[e] - t[e]).abs() <= h[e]))
     });
+    // the weakest component: the widest acceptance relative to its own half unit
+    let (k, e) = (0..targets.len())
+        .flat_map(|k| (0..3).map(move |e| (k, e)))
+        .max_by(|x, y| {
+            s.acceptance[x.0][x.1]
+                .outer()
+                .total_cmp(&s.acceptance[y.0][y.1].outer())
+        })
+        .unwrap_or((0, 0));
+    let power = acceptance_power(
+        &s.acceptance[k][e],
+        targets[k][e],
+        half[k][e],
+        half[k][e],
+        &format!("solution {} component {}", k + 1, e + 1),
+    );
+    let mut r = b.claim(&case.solutions.claim);
+    for (v, m) in case.solutions.values.iter().zip(s.matched.iter().flatten()) {
+        r = r.printed("solution (a², b², c²)", Value::label(Printed::join(v)));
+        r = r.computed("root at the printed coordinates", Value::reals(m));
+    }
+    r = r
+        .computed("witness in the rounding box", Value::flag(s.witness.is_some()))
+        .tolerance(Tolerance::bound(
+            half[0][0],
+            ToleranceSource::PrintedPrecision,
+            "half a unit in the last significant digit of each printed component (the figure's coordinates varied within half a unit of theirs)",
+        ))
+        .power(power)
+        .method("p3f3 at the printed figure coordinates; a witness search (minimum-norm Gauss–Newton over the box of half a unit of each coordinate, P exact) for coordinates whose roots match every printed component within its half unit, checked by exact elimination over ℚ; the same search for targets moved by 1 … 10⁵ half units; seeded Monte Carlo over the box")
+        .detail("figure coordinates: half a unit", bx_half(case))
+        .detail("printed significant digits", case.solutions.significant_digits);
+    if let Some(w) = &s.witness {
+        r = r
+            .detail(
+                "witness: largest shift (units of half a unit)",
+                w.shift_ratio,
+            )
+            .detail(
+                "witness: largest residual (units of half a unit)",
+                w.residual,
+            );
+    }
+    if let Some(v) = &s.witness_routes {
+        r = r
+            .detail(
+                "witness: exact c² roots (Sturm)",
+                Value::reals(v.exact.as_deref().unwrap_or(&[])),
+            )
+            .detail(
+                "witness: largest relative disagreement of routes",
+                Value::below(v.max_relative_disagreement),
+            );
+    }
+    r = spread_details(r, case, s, targets, half);
+    r.verdict(solutions_verdict(direct, s.witness.is_some()))
+}
 
-    // Monte Carlo over the rounding box: where the roots can go.
-    let cloud = monte_carlo(&bx, case.rounding_trials, case.seed, |x| {
-        match_solutions(&real_solutions_from_coordinates(x), &targets)
-    });
-    let with_roots: Vec<&Vec<[f64; 3]>> = cloud.iter().flatten().collect();
-    let spread = |k: usize, e: usize| {
-        let mut v: Vec<f64> = with_roots.iter().map(|m| m[k][e]).collect();
-        v.sort_by(f64::total_cmp);
-        (quantile(&v, 0.05), quantile(&v, 0.5), quantile(&v, 0.95))
-    };
+/// The acceptance regions and the Monte Carlo spread, as evidence.
+fn spread_details<'b>(
+    mut r: super::ClaimBuilder<'b>,
+    case: &P3f3ExampleCase,
+    s: &Study,
+    targets: &[[f64; 3]],
+    half: &[[f64; 3]],
+) -> super::ClaimBuilder<'b> {
+    for (k, acc) in s.acceptance.iter().enumerate() {
+        for (e, a) in acc.iter().enumerate() {
+            let (lo, hi) = a.interval(targets[k][e], half[k][e]);
+            r = r.detail(
+                &format!("solution {} component {}: accepted region", k + 1, e + 1),
+                Value::interval(lo, hi),
+            );
+        }
+    }
+    r = r
+        .detail("Monte Carlo samples", case.rounding_trials)
+        .detail("seed", case.seed)
+        .detail("samples with two real roots", s.cloud.len());
+    for (k, sp) in s.spread.iter().enumerate() {
+        for (e, q) in sp.iter().enumerate() {
+            r = r.detail(
+                &format!(
+                    "root {} component {}: 5 / 50 / 95 % over the box",
+                    k + 1,
+                    e + 1
+                ),
+                Value::reals(q),
+            );
+        }
+    }
+    r
+}
 
-    let verdict = if direct {
-        Verdict::Reproduced
-    } else if wit_inside.is_some() {
+fn bx_half(case: &P3f3ExampleCase) -> Value {
+    let h = case.figure.rounding_box().1;
+    Value::real(h.iter().fold(0.0, |a: f64, b| a.max(*b)))
+}
+
+fn figure_result(
+    b: &ResultBuilder,
+    case: &P3f3ExampleCase,
+    s: &Study,
+    body_half: &[f64; 3],
+) -> ClaimResult {
+    let sq = &case.body.squares;
+    let e = (0..3)
+        .max_by(|x, y| {
+            s.body_acceptance[*x]
+                .outer()
+                .total_cmp(&s.body_acceptance[*y].outer())
+        })
+        .unwrap_or(0);
+    let power = acceptance_power(
+        &s.body_acceptance[e],
+        sq[e].to_f64(),
+        body_half[e],
+        body_half[e],
+        &format!("body square {} ({})", e + 1, sq[e].text),
+    );
+    let mut r = b.claim(&case.figure.claim);
+    for p in sq {
+        r = r.printed("body square", p);
+    }
+    r = r
+        .computed("eq. p3f3sqr at the body, relative to its terms, per frame", Value::reals(&s.body_residual))
+        .computed("exact projection of the body inside the rounding box", Value::flag(s.body_fit.is_some()))
+        .tolerance(Tolerance::bound(
+            s.body_fit.as_ref().map_or(0.0, |w| w.shift_ratio),
+            ToleranceSource::Propagated,
+            "largest shift of the exact projection, in units of the coordinates' half unit (≤ 1: inside the box); eq. p3f3sqr to 64ε × the size of its terms",
+        ))
+        .power(power)
+        .method("eq. p3f3sqr of each frame at the body's squares; witness search over the box of half a unit of each coordinate; the same search for the body with one square moved by 1 … 10⁵ of its half units")
+        .detail("figure coordinates: half a unit", bx_half(case));
+    for (k, a) in s.body_acceptance.iter().enumerate() {
+        let (lo, hi) = a.interval(sq[k].to_f64(), body_half[k]);
+        r = r.detail(
+            &format!("body square {}: accepted region", k + 1),
+            Value::interval(lo, hi),
+        );
+    }
+    r.verdict(if s.body_fit.is_some() {
         Verdict::ReproducedWithinRounding
     } else {
         Verdict::Contradicted
-    };
-    let mut ev = Evidence::new(
-        "p3f3 at the printed figure coordinates; rounding propagated two ways: a witness search \
-         (minimum-norm Gauss–Newton over the ±0.005 box, P exact) for coordinates whose solve \
-         gives the printed solutions, checked by exact elimination over ℚ; and seeded Monte Carlo \
-         over the box",
-    )
-    .with(
-        "roots at the printed coordinates",
-        at_printed
-            .iter()
-            .map(|s| triple(s))
-            .collect::<Vec<_>>()
-            .join(", "),
-    )
-    .with(
-        "printed precision",
-        format!("{digits} significant digits, trailing zeros dropped"),
-    );
-    match &wit {
-        Some(w) => {
-            ev = ev
-                .with("witness found", wit_inside.is_some())
-                .with("witness largest shift (units of 0.005)", sig(w.shift_ratio))
-                .with("witness residual", below(w.residual));
-        }
-        None => ev = ev.with("witness found", false),
+    })
+}
+
+/// The verdict on feasibility: decided over the whole box (`Reproduced`), else at the
+/// witness point that reproduces the printed solutions (`ReproducedWithinRounding`).
+fn feasibility_verdict(over_box: &[Option<bool>], at_witness: Option<bool>) -> Verdict {
+    if over_box.iter().all(|j| *j == Some(true)) {
+        Verdict::Reproduced
+    } else if over_box.contains(&Some(false)) || at_witness == Some(false) {
+        Verdict::Contradicted
+    } else if at_witness == Some(true) {
+        Verdict::ReproducedWithinRounding
+    } else {
+        Verdict::Inconclusive
     }
-    if let Some(v) = &wit_validation {
-        ev = ev
-            .with(
-                "witness: exact c² roots (Sturm, width 1e-30)",
-                v.exact.as_deref().map_or("singular".into(), sig_list),
+}
+
+fn feasibility_result(
+    b: &ResultBuilder,
+    case: &P3f3ExampleCase,
+    s: &Study,
+    targets: &[[f64; 3]],
+) -> ClaimResult {
+    let judged: Vec<Option<bool>> = targets
+        .iter()
+        .flat_map(|t| (0..3).map(move |e| feasible_within(t[e], &s.longest_projection[e])))
+        .collect();
+    let rules =
+        |t: &[f64; 3], proj: &[[f64; 3]]| first_violation(t, proj.iter().map(|p| &p[..])).is_none();
+    let at_witness = s
+        .witness_projections
+        .as_ref()
+        .map(|p| targets.iter().all(|t| rules(t, p)));
+    // the control at the witness: the component closest to its longest projection there,
+    // mirrored to as far below it as it lies above, must be judged infeasible
+    let control = s.witness_projections.as_ref().map(|p| {
+        let longest = |e: usize| p.iter().map(|f| f[e]).fold(0.0, f64::max);
+        let (k, e) = (0..targets.len())
+            .flat_map(|k| (0..3).map(move |e| (k, e)))
+            .min_by(|x, y| {
+                (targets[x.0][x.1] - longest(x.1)).total_cmp(&(targets[y.0][y.1] - longest(y.1)))
+            })
+            .unwrap_or((0, 0));
+        let mut m = targets[k];
+        m[e] = longest(e) - (targets[k][e] - longest(e)).abs();
+        !rules(&m, p)
+    });
+    let mut r = b
+        .claim(&case.feasibility)
+        .printed("feasible solutions", targets.len());
+    for (t, v) in targets.iter().zip(judged.chunks(3)) {
+        r = r
+            .computed(
+                "solution feasible over the whole box",
+                Value::flag(v.iter().all(|j| *j == Some(true))),
             )
-            .with(
-                "witness: largest relative disagreement of routes",
-                below(v.max_relative_disagreement),
-            );
+            .detail("solution", Value::reals(t));
     }
-    ev = ev
-        .with(
-            "Monte Carlo samples (seed)",
-            format!("{} ({})", case.rounding_trials, case.seed),
-        )
-        .with("samples with two real roots", with_roots.len());
-    for (k, t) in targets.iter().enumerate() {
-        let s = [0, 1, 2].map(|e| spread(k, e));
-        ev = ev.with(
-            &format!("root near {}: 5%/50%/95% of (a², b², c²)", triple(t)),
-            s.iter()
-                .map(|(lo, md, hi)| {
-                    format!(
-                        "{}/{}/{}",
-                        lo.map_or("-".into(), sig),
-                        md.map_or("-".into(), sig),
-                        hi.map_or("-".into(), sig)
-                    )
-                })
-                .collect::<Vec<_>>()
-                .join("; "),
+    r = r.computed(
+        "both feasible at the witness point",
+        Value::flag(at_witness == Some(true)),
+    );
+    for (k, lp) in s.longest_projection.iter().enumerate() {
+        r = r.detail(
+            &format!("longest projection of edge {} over the box", k + 1),
+            Value::interval(lp.lo, lp.hi),
         );
     }
-    out.push(b.result(
-        &case.solutions.claim,
-        None,
-        verdict,
-        case.solutions
-            .values
-            .iter()
-            .map(|v| format!("({})", Printed::join(v)))
-            .collect::<Vec<_>>()
-            .join(" and "),
-        format!(
-            "at the printed coordinates: {}; {}",
-            matched_printed
-                .as_deref()
-                .map_or("fewer than two real roots".into(), |m| m
-                    .iter()
-                    .map(|s| triple(s))
-                    .collect::<Vec<_>>()
-                    .join(" and ")),
-            match wit_inside {
-                Some(w) => format!(
-                    "a point of the rounding box (largest shift {} of the rounding) gives both printed solutions",
-                    sig(w.shift_ratio)
-                ),
-                None => "no point of the rounding box gives both printed solutions".into(),
-            }
-        ),
-        Some(OldTolerance {
-            value: tols
-                .iter()
-                .map(|t| triple(t))
-                .collect::<Vec<_>>()
-                .join(" and "),
-            source: format!(
-                "half a unit in the {digits}th significant digit of each printed value; figure coordinates ±0.005"
-            ),
-        }),
-        ev,
-    ));
+    if let Some(p) = &s.witness_projections {
+        for e in 0..3 {
+            r = r.detail(
+                &format!("longest projection of edge {} at the witness", e + 1),
+                p.iter().map(|f| f[e]).fold(0.0, f64::max),
+            );
+        }
+    }
+    for root in &s.at_printed {
+        r = r.detail("root at the printed coordinates", Value::reals(root));
+    }
+    r.tolerance(Tolerance::exact("interval enclosure of each projection over the figure's rounding box; exact comparison at the witness point"))
+        .power(Power::mutant(
+            control == Some(true),
+            "the printed component nearest its longest projection at the witness, mirrored to as far below it as it lies above, is judged infeasible",
+        ))
+        .method("the rules of §2.2 (no negative square, no edge shorter than a projection in any frame) against the projections enclosed over the rounding box, and at the witness point whose roots are the printed solutions")
+        .verdict(feasibility_verdict(&judged, at_witness))
+}
 
-    // The figure is a projection of the body: the witness reproduces (4, 9, 16) exactly, so
-    // some point of the rounding box is an exact projection of it.
-    let truth: Option<[f64; 3]> = case
-        .body
-        .squares
-        .iter()
-        .map(Printed::to_f64)
-        .collect::<Vec<_>>()
-        .try_into()
-        .ok();
-    let proj = projections(&bx.center);
-    let f_at_printed: Vec<f64> = truth.map_or(Vec::new(), |t| {
-        proj.iter()
-            .map(|p| {
-                let f = crate::derivations::twofold::FrameCoefficients::new(*p);
-                f.eval(t[0], t[1], t[2]) / (t[0] + t[1] + t[2]).powi(2)
-            })
-            .collect()
-    });
-    let body_residual = |x: &[f64]| -> Option<Vec<f64>> {
-        let t = truth?;
-        Some(
-            projections(x)
-                .iter()
-                .map(|p| {
-                    crate::derivations::twofold::FrameCoefficients::new(*p).eval(t[0], t[1], t[2])
-                })
-                .collect(),
-        )
-    };
-    let body_wit = witness(&bx, &body_residual, 1e-9);
-    let fits = body_wit
-        .as_ref()
-        .is_some_and(|w| w.shift_ratio <= 1.0 && w.residual <= 1e-9);
-    out.push(b.result(
-        &case.figure.claim,
-        None,
-        if fits {
-            Verdict::ReproducedWithinRounding
-        } else {
-            Verdict::Contradicted
-        },
-        format!("three projections of the body ({})", Printed::join(&case.body.squares)),
-        format!(
-            "relative twofold-squared residuals of the body at the printed coordinates {}; \
-             within the rounding box an exact projection of the body exists: {fits}",
-            sig_list(&f_at_printed)
-        ),
-        Some(OldTolerance {
-            value: "±0.005".into(),
-            source: "half a unit in the second decimal of the figure coordinates".into(),
-        }),
-        Evidence::new("eq. p3f3sqr of each frame at the body's squares; witness search over the rounding box")
-            .with(
-                "largest shift of the exact projection (units of 0.005)",
-                body_wit.as_ref().map_or("-".into(), |w| sig(w.shift_ratio)),
-            ),
-    ));
-
-    // Figures: the printed projections against exact views of the body inside the rounding
-    // box; the roots over the rounding box.
+fn figures(
+    b: &ResultBuilder,
+    case: &P3f3ExampleCase,
+    bx: &RoundingBox,
+    s: &Study,
+    targets: &[[f64; 3]],
+) {
     let frame_points = |x: &[f64], i: usize| -> Vec<[f64; 2]> {
         (0..3)
             .map(|j| [x[6 * i + 2 * j], x[6 * i + 2 * j + 1]])
             .collect()
     };
-    let panels = (0..3)
+    let panels = (0..case.figure.frames.len())
         .map(|i| {
             let mut layers = vec![Layer::new(
                 "printed",
@@ -328,7 +381,7 @@ pub(super) fn check_example(b: &ResultBuilder, case: &P3f3ExampleCase) -> Result
                 frame_points(&bx.center, i),
             )
             .labelled(&["P", "Q", "R"])];
-            if let Some(w) = body_wit.as_ref().filter(|_| fits) {
+            if let Some(w) = &s.body_fit {
                 layers.push(Layer::new(
                     "exact view inside the rounding box",
                     Shape::Polygon,
@@ -343,37 +396,45 @@ pub(super) fn check_example(b: &ResultBuilder, case: &P3f3ExampleCase) -> Result
         id: "fig-ex2-figure".into(),
         claim: case.figure.claim.claim.clone(),
         title: "§2: the three projections of the triangle".into(),
-        caption: "The printed figure coordinates (two decimals) and the nearest exact projections of the body (2, 3, 4) within their rounding.".into(),
+        caption: format!(
+            "The printed figure coordinates and the nearest exact projections of the body ({}) within their rounding.",
+            Printed::join(&case.body.lengths)
+        ),
         panels,
     });
-    let root = |k: usize| -> Vec<[f64; 2]> {
+    rounding_figure(b, case, s, targets);
+}
+
+fn rounding_figure(b: &ResultBuilder, case: &P3f3ExampleCase, s: &Study, targets: &[[f64; 3]]) {
+    let root = |k: usize| {
         thin(
-            &with_roots
+            &s.cloud
                 .iter()
                 .map(|m| [m[k][0], m[k][2]])
                 .collect::<Vec<_>>(),
             1500,
         )
     };
-    let mut layers = vec![Layer::new(
-        "root near the first printed solution",
-        Shape::Points,
-        Style::Computed,
-        root(0),
-    )];
-    if targets.len() > 1 {
-        layers.push(Layer::new(
-            "root near the second",
-            Shape::Points,
-            Style::Other,
-            root(1),
-        ));
-    }
+    let mut layers: Vec<Layer> = (0..targets.len())
+        .map(|k| {
+            let style = if k == 0 {
+                Style::Computed
+            } else {
+                Style::Other
+            };
+            Layer::new(
+                &format!("root near printed solution {}", k + 1),
+                Shape::Points,
+                style,
+                root(k),
+            )
+        })
+        .collect();
     layers.push(Layer::new(
         "at the printed coordinates",
         Shape::Points,
         Style::Printed,
-        at_printed.iter().map(|s| [s[0], s[2]]).collect(),
+        s.at_printed.iter().map(|r| [r[0], r[2]]).collect(),
     ));
     layers.push(Layer::new(
         "the paper's solutions",
@@ -381,12 +442,20 @@ pub(super) fn check_example(b: &ResultBuilder, case: &P3f3ExampleCase) -> Result
         Style::Mark,
         targets.iter().map(|t| [t[0], t[2]]).collect(),
     ));
+    let window = central_window(
+        &layers
+            .iter()
+            .take(2)
+            .flat_map(|l| l.points.iter().copied())
+            .collect::<Vec<_>>(),
+        0.02,
+    );
     b.figure(Figure {
         id: "fig-ex2-rounding".into(),
         claim: case.solutions.claim.claim.clone(),
         title: "§2: where the roots go within the rounding of the figure".into(),
         caption: format!(
-            "(a², c²) of both real roots for {} seeded points of the ±0.005 box around the printed coordinates (seed {}), the roots at the printed coordinates, and the paper's two solutions.",
+            "(a², c²) of both real roots for {} seeded points of the box of half a unit around the printed coordinates (seed {}), the roots at the printed coordinates, and the paper's solutions.",
             case.rounding_trials, case.seed
         ),
         panels: vec![Plot {
@@ -395,138 +464,179 @@ pub(super) fn check_example(b: &ResultBuilder, case: &P3f3ExampleCase) -> Result
             y_label: "c²".into(),
             equal_aspect: false,
             log_x: false,
-            window: central_window(
-                &layers.iter().take(2).flat_map(|l| l.points.iter().copied()).collect::<Vec<_>>(),
-                0.02,
-            ),
+            window,
             layers,
         }],
     });
-
-    // Feasibility of the printed solutions against the printed projections.
-    let printed_checks: Vec<(String, Option<String>)> = targets
-        .iter()
-        .map(|t| (triple(t), violation(t, &proj)))
-        .collect();
-    let all_feasible = printed_checks.iter().all(|(_, v)| v.is_none());
-    let recomputed: Vec<String> = at_printed
-        .iter()
-        .map(|s| {
-            format!(
-                "{}: {}",
-                triple(s),
-                violation(s, &proj).unwrap_or_else(|| "feasible".into())
-            )
-        })
-        .collect();
-    out.push(b.result(
-        &case.feasibility,
-        None,
-        Verdict::holds(all_feasible),
-        "both printed solutions are feasible".into(),
-        printed_checks
-            .iter()
-            .map(|(t, v)| format!("{t}: {}", v.clone().unwrap_or_else(|| "feasible".into())))
-            .collect::<Vec<_>>()
-            .join("; "),
-        Some(OldTolerance::exact("comparison with the printed projections")),
-        Evidence::new("the rules of §2.2 (no negative square, no edge shorter than a projection) against the squared projections of the printed figure")
-            .with("largest projections (PQ², QR², RP²)", sig_list(&[0, 1, 2].map(|e| proj.iter().map(|p| p[e]).fold(0.0, f64::max))))
-            .with("roots recomputed at the printed coordinates", recomputed.join("; ")),
-    ));
-    Ok(out)
 }
 
-pub(super) fn check_census(
-    b: &ResultBuilder,
-    case: &crate::cases::CensusCase,
-) -> Result<Vec<ClaimResult>> {
-    use crate::derivations::solver::Degenerate;
-    let c = crate::derivations::p3f3::census(case.trials, case.seed);
-    let infinitely = matches!(c.collinear, Some(Degenerate::Collinear))
-        && matches!(c.identical_frames, Some(Degenerate::IdenticalFrames { .. }));
-    let ok = infinitely && c.truth_found == c.trials;
-    let ev = Evidence::new("p3f3 on seeded random scenes (uniform rotations, points in the unit cube), plus a collinear body and two frames related by an in-plane rotation")
-        .with("scenes (seed)", format!("{} ({})", c.trials, c.seed))
-        .with("scenes with 0 / 1 / 2 feasible edge solutions", format!("{} / {} / {}", c.feasible_counts[0], c.feasible_counts[1], c.feasible_counts[2]))
-        .with("true squares among the feasible ones", format!("{} of {}", c.truth_found, c.trials))
-        .with("largest relative error of the true solution", below(c.max_truth_error))
-        .with(
-            "independent routes to c² (exact elimination over ℚ + Sturm, roots' closed form, companion matrix): largest relative disagreement with the solver",
-            format!(
-                "{} over {} scenes; same number of real roots in {}",
-                below(c.max_route_disagreement),
-                c.routes_checked.0,
-                c.routes_checked.1
-            ),
-        )
-        .with("collinear body", c.collinear.map_or("no degenerate outcome".into(), |d| d.to_string()))
-        .with("frames identical up to an in-plane rotation", c.identical_frames.map_or("no degenerate outcome".into(), |d| d.to_string()))
-        .with(
-            "structure-and-motion solutions per edge solution (up to the global mirror reversal)",
-            {
-                // counted per edge solution up to the mirror; the mirror doubles, two edge
-                // solutions double again
-                let n = c.motions_per_edge_solution.iter().copied().max().unwrap_or(0);
-                format!(
-                    "{:?}: each later frame's depth pattern may flip (a planar triangle turns onto its mirror image), \
-                     so {n} per edge solution up to the mirror, {} with it; with two edge solutions up to {}",
-                    c.motions_per_edge_solution,
-                    2 * n,
-                    4 * n
-                )
-            },
+/// The result id of `claim` in a census case: its suffix from the case, when it has one.
+fn census_claim<'b>(
+    b: &'b ResultBuilder,
+    case: &'b CensusCase,
+    claim: &'b crate::cases::ClaimRef,
+) -> super::ClaimBuilder<'b> {
+    match case.suffixes.get(&claim.claim) {
+        Some(s) => b.claim(claim).suffix(s),
+        None => b.claim(claim),
+    }
+}
+
+/// §2.2's count: never more than two feasible solutions, and the two named degenerate cases
+/// give infinitely many.
+fn count_holds(c: &census::P3f3Census) -> bool {
+    matches!(c.collinear, Some(Degenerate::Collinear))
+        && matches!(c.identical_frames, Some(Degenerate::IdenticalFrames { .. }))
+        && c.truth_found == c.trials
+}
+
+pub(super) fn check_census(b: &ResultBuilder, case: &CensusCase) -> Result<Vec<ClaimResult>> {
+    let c = census::p3f3(case.trials, case.seed);
+    let ok = count_holds(&c);
+    // the control: the same census rejects "at most one solution" whenever it sees two
+    let two = c.feasible_counts[2];
+    let motions = c
+        .motions_per_edge_solution
+        .iter()
+        .copied()
+        .max()
+        .unwrap_or(0);
+    Ok(case
+        .claims
+        .iter()
+        .map(|claim| {
+            census_claim(b, case, claim)
+                .printed("solutions", Value::label("none, one or two; infinitely many if collinear or two frames identical up to rotation"))
+                .computed("scenes with 0 feasible solutions", Value::count_of(c.feasible_counts[0], c.trials))
+                .computed("scenes with 1", Value::count_of(c.feasible_counts[1], c.trials))
+                .computed("scenes with 2", Value::count_of(two, c.trials))
+                .computed("collinear body: infinitely many", Value::flag(matches!(c.collinear, Some(Degenerate::Collinear))))
+                .computed("identical frames: infinitely many", Value::flag(matches!(c.identical_frames, Some(Degenerate::IdenticalFrames { .. }))))
+                .tolerance(Tolerance::exact("counts of roots; degeneracy detected at the derived rounding level"))
+                .power(Power::mutant(two > 0, "the census rejects the narrower claim \"at most one solution\": it finds scenes with two"))
+                .method("p3f3 on seeded random scenes (uniform rotations, points in the unit cube), plus a collinear body and two frames related by an in-plane rotation")
+                .detail("seed", c.seed)
+                .detail("true squares among the feasible ones", Value::count_of(c.truth_found, c.trials))
+                .detail("largest relative error of the true solution", Value::below(c.max_truth_error))
+                .detail("independent routes: largest relative disagreement with the solver", Value::below(c.max_route_disagreement))
+                .detail("scenes validated by the independent routes", Value::count_of(c.routes_checked.1, c.routes_checked.0))
+                .detail("structure-and-motion solutions per edge solution, up to the mirror", motions)
+                .detail("with the mirror", 2 * motions)
+                .detail("with two edge solutions, up to", 4 * motions)
+                .verdict(Verdict::holds(ok))
+        })
+        .collect())
+}
+
+/// §3's uniqueness: every generic scene rank 3 and exact; a special motion loses rank.
+fn unique_holds(c: &census::P3f4Census) -> bool {
+    c.unique == c.trials && c.truth_found == c.trials && c.viewing_axis_rank < 3
+}
+
+pub(super) fn check_p3f4_census(b: &ResultBuilder, case: &CensusCase) -> Result<Vec<ClaimResult>> {
+    let c = census::p3f4(case.trials, case.frames, case.seed);
+    let ok = unique_holds(&c);
+    Ok(case
+        .claims
+        .iter()
+        .map(|claim| {
+            census_claim(b, case, claim)
+                .printed("solution", Value::label("linear in a², b², c², unique unless the motion is special"))
+                .computed("unique (rank 3) and exact", Value::count_of(c.truth_found.min(c.unique), c.trials))
+                .computed("rank, rotations about the viewing axis", c.viewing_axis_rank)
+                .computed("rank, rotations about one fixed generic axis", c.fixed_axis_rank)
+                .tolerance(Tolerance::exact("numerical rank above the derived rounding floor of the entries"))
+                .power(Power::mutant(c.viewing_axis_rank < 3, "the same rank test reports a rank below 3 for rotations about the viewing axis (the special motion)"))
+                .method("p3f4 (frame differences, linear in a², b², c²) on seeded random scenes, plus rotations about the viewing axis and about one fixed generic axis")
+                .detail("frames", c.frames)
+                .detail("seed", c.seed)
+                .detail("largest relative error", Value::below(c.max_truth_error))
+                .detail("median condition number", c.median_condition)
+                .verdict(Verdict::holds(ok))
+        })
+        .collect())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn solutions_verdict_prefers_direct_agreement() {
+        assert_eq!(solutions_verdict(true, true), Verdict::Reproduced);
+        assert_eq!(
+            solutions_verdict(false, true),
+            Verdict::ReproducedWithinRounding
         );
-    Ok(case
-        .claims
-        .iter()
-        .map(|claim| {
-            b.result(
-                claim,
-                None,
-                Verdict::holds(ok),
-                "none, one or two solutions; infinitely many if collinear or two frames identical up to rotation".into(),
-                format!(
-                    "0/1/2 feasible edge solutions in {}/{}/{} scenes, never more; the degenerate scenes give infinitely many: {infinitely}",
-                    c.feasible_counts[0], c.feasible_counts[1], c.feasible_counts[2]
-                ),
-                Some(OldTolerance::exact("counts of roots; degeneracy detected at rounding level")),
-                ev.clone(),
-            )
-        })
-        .collect())
-}
+        assert_eq!(solutions_verdict(false, false), Verdict::Contradicted);
+    }
 
-pub(super) fn check_p3f4_census(
-    b: &ResultBuilder,
-    case: &crate::cases::CensusCase,
-) -> Result<Vec<ClaimResult>> {
-    let c = crate::derivations::p3f4::census(case.trials, case.frames, case.seed);
-    let ok = c.unique == c.trials && c.truth_found == c.trials && c.viewing_axis_rank < 3;
-    let ev = Evidence::new("p3f4 (frame differences, linear in a², b², c²) on seeded random scenes, plus rotations about the viewing axis and about one fixed generic axis")
-        .with("scenes, frames (seed)", format!("{}, {} ({})", c.trials, c.frames, c.seed))
-        .with("unique solutions (rank 3)", c.unique)
-        .with("equal to the truth", c.truth_found)
-        .with("largest relative error", below(c.max_truth_error))
-        .with("median condition number", sig(c.median_condition))
-        .with("rank, rotations about the viewing axis only", c.viewing_axis_rank)
-        .with("rank, rotations about one fixed generic axis", c.fixed_axis_rank);
-    Ok(case
-        .claims
-        .iter()
-        .map(|claim| {
-            b.result(
-                claim,
-                Some("four-frames").filter(|_| claim.claim == "abstract-linear"),
-                Verdict::holds(ok),
-                "linear in a², b², c² with a unique solution unless the motion is special".into(),
-                format!(
-                    "unique and exact in {} of {} generic scenes; rank {} for rotations about the viewing axis, {} about a fixed generic axis",
-                    c.truth_found, c.trials, c.viewing_axis_rank, c.fixed_axis_rank
-                ),
-                Some(OldTolerance::exact("numerical rank with the rounding-noise floor of the entries")),
-                ev.clone(),
-            )
-        })
-        .collect())
+    #[test]
+    fn feasibility_is_decided_only_outside_the_enclosure() {
+        let lp = Interval { lo: 15.0, hi: 15.2 };
+        assert_eq!(feasible_within(15.2, &lp), Some(true));
+        assert_eq!(feasible_within(15.1, &lp), None);
+        assert_eq!(feasible_within(14.99, &lp), Some(false));
+    }
+
+    #[test]
+    fn feasibility_falls_back_to_the_witness() {
+        let yes = [Some(true), Some(true)];
+        let open = [Some(true), None];
+        assert_eq!(feasibility_verdict(&yes, None), Verdict::Reproduced);
+        assert_eq!(
+            feasibility_verdict(&open, Some(true)),
+            Verdict::ReproducedWithinRounding
+        );
+        assert_eq!(
+            feasibility_verdict(&open, Some(false)),
+            Verdict::Contradicted
+        );
+        assert_eq!(feasibility_verdict(&open, None), Verdict::Inconclusive);
+        assert_eq!(
+            feasibility_verdict(&[Some(false)], Some(true)),
+            Verdict::Contradicted
+        );
+    }
+
+    #[test]
+    fn acceptance_beyond_the_half_unit_is_weak() {
+        let tight = Acceptance {
+            accepted: [0.0, 0.0],
+            rejected: [Some(1.0), Some(1.0)],
+        };
+        assert!(!acceptance_power(&tight, 4.0, 0.5, 0.5, "x").weak);
+        let loose = Acceptance {
+            accepted: [1.0, 1.0],
+            rejected: [Some(3.0), Some(3.0)],
+        };
+        assert!(acceptance_power(&loose, 4.0, 0.5, 0.5, "x").weak);
+        let open = Acceptance {
+            accepted: [1.0, 1e5],
+            rejected: [Some(3.0), None],
+        };
+        assert!(acceptance_power(&open, 4.0, 0.5, 0.5, "x").weak);
+    }
+
+    #[test]
+    fn the_counts_need_both_degenerate_cases() {
+        let mut c = census::P3f3Census {
+            trials: 2,
+            seed: 0,
+            feasible_counts: [0, 1, 1],
+            truth_found: 2,
+            max_truth_error: 0.0,
+            motions_per_edge_solution: vec![2],
+            max_route_disagreement: 0.0,
+            routes_checked: (2, 2),
+            collinear: Some(Degenerate::Collinear),
+            identical_frames: Some(Degenerate::IdenticalFrames {
+                first: 1,
+                second: 2,
+            }),
+        };
+        assert!(count_holds(&c));
+        c.collinear = None;
+        assert!(!count_holds(&c));
+    }
 }

@@ -100,18 +100,17 @@ pub fn solve_core(l: &[[f64; 3]; 3]) -> Core {
             core.degenerate = Some(Degenerate::NoRealRoot);
         }
     }
-    let max_proj: [f64; 3] = std::array::from_fn(|e| l[0][e].max(l[1][e]).max(l[2][e]));
     for (k, t) in roots.iter().take(core.count).enumerate() {
         for v in 0..3 {
             core.squares[k][v] = elim.slope[v] * t.re + elim.intercept[v];
             core.imag[k][v] = elim.slope[v] * t.im;
         }
         if t.im == 0.0 {
-            // a real root: polish, then the paper's rules (a projection is never negative,
-            // so "not shorter than the longest projection" implies "not negative")
+            // a real root: polish, then the paper's rules
             let v = polish(&f, core.squares[k]);
             core.squares[k] = v;
-            core.feasible[k] = v[0] >= max_proj[0] && v[1] >= max_proj[1] && v[2] >= max_proj[2];
+            core.feasible[k] =
+                super::solver::first_violation(&v, l.iter().map(|f| &f[..])).is_none();
         }
     }
     core
@@ -368,17 +367,8 @@ pub fn reconstructions(tracks: &Tracks, squares: &[f64; 3]) -> Result<Vec<Recons
     Ok(out)
 }
 
-/// The proper rotation that best maps `from` onto `to` (both with the first point at the origin).
-pub(crate) fn kabsch(from: &[Vector3<f64>; 3], to: &[Vector3<f64>; 3]) -> Rotation3<f64> {
-    let h: Matrix3<f64> = (0..3).map(|j| to[j] * from[j].transpose()).sum();
-    let svd = h.svd(true, true);
-    let (Some(u), Some(vt)) = (svd.u, svd.v_t) else {
-        return Rotation3::identity();
-    };
-    let d = (u * vt).determinant().signum();
-    let fix = Matrix3::from_diagonal(&Vector3::new(1.0, 1.0, d));
-    Rotation3::from_matrix_unchecked(u * fix * vt)
-}
+/// The proper rotation that best maps `from` onto `to` (shared Procrustes kernel).
+pub(crate) use crate::algebra::kabsch;
 
 /// The three frames' equations F₁, F₂, F₃ as exact polynomials in x = a², y = b², z = c².
 pub fn exact_equations(l: &[[num_rational::BigRational; 3]; 3]) -> [crate::algebra::Poly; 3] {
@@ -522,12 +512,11 @@ pub fn validate(l: &[[num_rational::BigRational; 3]; 3]) -> Validation {
 /// `[x, y]` of P, Q, R per frame (18 numbers), ordered by c².
 pub fn real_solutions_from_coordinates(coords: &[f64]) -> Vec<[f64; 3]> {
     let l: [[f64; 3]; 3] = std::array::from_fn(|i| {
-        let p = |j: usize| (coords[6 * i + 2 * j], coords[6 * i + 2 * j + 1]);
-        std::array::from_fn(|e| {
-            let (a, b) = [(0, 1), (1, 2), (2, 0)][e];
-            let (pa, pb) = (p(a), p(b));
-            (pa.0 - pb.0).powi(2) + (pa.1 - pb.1).powi(2)
-        })
+        let pts: Vec<[f64; 2]> = (0..3)
+            .map(|j| [coords[6 * i + 2 * j], coords[6 * i + 2 * j + 1]])
+            .collect();
+        let sq = crate::model::squared_lengths(&pts);
+        [sq[0], sq[1], sq[2]]
     });
     let core = solve_core(&l);
     let mut out: Vec<[f64; 3]> = (0..core.count)
@@ -559,119 +548,6 @@ pub fn match_solutions(solutions: &[[f64; 3]], targets: &[[f64; 3]]) -> Option<V
         }
         _ => None,
     }
-}
-
-/// Solution counts over seeded generic scenes (three points, three frames).
-#[derive(Clone, Debug, serde::Serialize)]
-pub struct Census {
-    /// Scenes solved.
-    pub trials: usize,
-    /// Seed.
-    pub seed: u64,
-    /// Scenes with 0, 1, 2 feasible edge solutions.
-    pub feasible_counts: [usize; 3],
-    /// Scenes whose true squared edges were among the feasible solutions, within the
-    /// first-order rounding bound [`forward_error_bound`].
-    pub truth_found: usize,
-    /// Largest relative error of the true solution's recovery.
-    pub max_truth_error: f64,
-    /// Structure-and-motion solutions behind one edge solution (depth-sign combinations that
-    /// reproject), counted up to the global mirror reversal; the same in every scene checked.
-    pub motions_per_edge_solution: Vec<usize>,
-    /// Largest relative disagreement of the independent routes ([`validate`]) with the
-    /// solver, over the first scenes (at most 200: the exact route is slow).
-    pub max_route_disagreement: f64,
-    /// Scenes validated, and how many of them every route found the same number of roots.
-    pub routes_checked: (usize, usize),
-    /// Outcome for a collinear body.
-    pub collinear: Option<Degenerate>,
-    /// Outcome for two frames identical up to an in-plane rotation.
-    pub identical_frames: Option<Degenerate>,
-}
-
-/// Solve `trials` seeded random scenes and two degenerate ones.
-pub fn census(trials: usize, seed: u64) -> Census {
-    use crate::model::{Body, Motion, Scene};
-    let mut c = Census {
-        trials,
-        seed,
-        feasible_counts: [0; 3],
-        truth_found: 0,
-        max_truth_error: 0.0,
-        motions_per_edge_solution: Vec::new(),
-        max_route_disagreement: 0.0,
-        routes_checked: (0, 0),
-        collinear: None,
-        identical_frames: None,
-    };
-    for t in 0..trials {
-        let scene = Scene::random(3, 3, seed.wrapping_add(t as u64));
-        let tracks = scene.tracks();
-        let Ok(out) = solve(&SquaredLengths::from_tracks(&tracks)) else {
-            continue;
-        };
-        let feasible: Vec<&Solution> = out.feasible().collect();
-        c.feasible_counts[feasible.len().min(2)] += 1;
-        let truth = [(0, 1), (1, 2), (2, 0)].map(|(i, j)| scene.body.squared_distance(i, j));
-        let l: [[f64; 3]; 3] = std::array::from_fn(|i| {
-            let f = &SquaredLengths::from_tracks(&tracks).frames[i];
-            [f[0], f[1], f[2]]
-        });
-        let err = |s: &Solution| {
-            (0..3)
-                .map(|e| (s.squared_edges[e] - truth[e]).abs())
-                .fold(0.0, f64::max)
-        };
-        if let Some(best) = feasible.iter().min_by(|a, b| err(a).total_cmp(&err(b))) {
-            let e = err(best);
-            // found when the error is within what rounding can explain at this solution
-            if e <= forward_error_bound(&l, &truth) {
-                c.truth_found += 1;
-            }
-            let scale = truth.iter().fold(0.0_f64, |a, b| a.max(*b));
-            c.max_truth_error = c.max_truth_error.max(e / scale);
-        }
-        if t < 200 {
-            use num_rational::BigRational;
-            let exact: [[BigRational; 3]; 3] = std::array::from_fn(|i| {
-                std::array::from_fn(|e| BigRational::from_float(l[i][e]).unwrap_or_default())
-            });
-            let v = validate(&exact);
-            c.max_route_disagreement = c.max_route_disagreement.max(v.max_relative_disagreement);
-            c.routes_checked.0 += 1;
-            c.routes_checked.1 += usize::from(v.same_count);
-        }
-        if t < 20 {
-            for s in &feasible {
-                let sq = [s.squared_edges[0], s.squared_edges[1], s.squared_edges[2]];
-                let n = reconstructions(&tracks, &sq)
-                    .map(|r| r.iter().filter(|x| x.reprojection_error < 1e-6).count())
-                    .unwrap_or(0);
-                if !c.motions_per_edge_solution.contains(&n) {
-                    c.motions_per_edge_solution.push(n);
-                }
-            }
-        }
-    }
-    let mut collinear = Scene::random(3, 3, seed);
-    let d = collinear.body.points[1] - collinear.body.points[0];
-    collinear.body = Body::new(vec![
-        collinear.body.points[0],
-        collinear.body.points[0] + d,
-        collinear.body.points[0] + 2.5 * d,
-    ]);
-    c.collinear = solve(&SquaredLengths::from_tracks(&collinear.tracks()))
-        .ok()
-        .and_then(|o| o.degenerate);
-    let mut same = Scene::random(3, 3, seed);
-    same.motions[2] = Motion {
-        rotation: Rotation3::from_axis_angle(&Vector3::z_axis(), 1.1) * same.motions[1].rotation,
-        translation: same.motions[1].translation,
-    };
-    c.identical_frames = solve(&SquaredLengths::from_tracks(&same.tracks()))
-        .ok()
-        .and_then(|o| o.degenerate);
-    c
 }
 
 /// First-order bound on the absolute error of a solution `v` = (a², b², c²) caused by

@@ -4,7 +4,7 @@
 //! 2(αᵢ − α₁)a² + 2(βᵢ − β₁)b² + 2(γᵢ − γ₁)c² = −(Kᵢ − K₁), linear in (a², b², c²).
 //! Four frames give a square system; more frames are solved by least squares.
 
-use nalgebra::{DMatrix, DVector, Matrix3, Rotation3, Vector2, Vector3};
+use nalgebra::{DMatrix, DVector, Matrix3, Vector3};
 
 use super::solver::{feasibility, Degenerate, Solution, SolverOutput, SquaredLengths};
 use super::twofold::FrameCoefficients;
@@ -37,20 +37,24 @@ pub fn solve_core(l: &[[f64; 3]; 4]) -> Option<([f64; 3], bool)> {
     }
     let x = m.lu().solve(&rhs)?;
     let x = [x[0], x[1], x[2]];
-    let feasible = (0..3).all(|e| x[e] >= 0.0 && l.iter().all(|f| x[e] >= f[e]));
+    let feasible = super::solver::first_violation(&x, l.iter().map(|f| &f[..])).is_none();
     Some((x, feasible))
 }
 
 /// The linear system, one row per later frame, with bounds on the Frobenius norm of the
 /// rounding error of its matrix and of its right-hand side.
-struct System {
-    m: DMatrix<f64>,
-    rhs: DVector<f64>,
-    noise_m: f64,
-    noise_rhs: f64,
+pub(crate) struct System {
+    /// The matrix.
+    pub(crate) m: DMatrix<f64>,
+    /// The right-hand side.
+    pub(crate) rhs: DVector<f64>,
+    /// Bound on the rounding of the matrix (Frobenius).
+    pub(crate) noise_m: f64,
+    /// Bound on the rounding of the right-hand side.
+    pub(crate) noise_rhs: f64,
 }
 
-fn system(input: &SquaredLengths) -> System {
+pub(crate) fn system(input: &SquaredLengths) -> System {
     let tri = |i: usize| [input.frames[i][0], input.frames[i][1], input.frames[i][2]];
     let f1 = FrameCoefficients::new(tri(0));
     let n = input.frames.len() - 1;
@@ -124,83 +128,6 @@ pub fn solve(input: &SquaredLengths) -> Result<SolverOutput> {
         squared_edges: squares,
     });
     Ok(out)
-}
-
-/// Uniqueness over seeded generic scenes, and the special motions.
-#[derive(Clone, Debug, serde::Serialize)]
-pub struct Census {
-    /// Scenes solved.
-    pub trials: usize,
-    /// Frames per scene.
-    pub frames: usize,
-    /// Seed.
-    pub seed: u64,
-    /// Scenes with a unique (rank-3) solution.
-    pub unique: usize,
-    /// Scenes whose unique solution is the truth within its rounding error bound.
-    pub truth_found: usize,
-    /// Largest relative error against the truth.
-    pub max_truth_error: f64,
-    /// Median condition number of the linear system.
-    pub median_condition: f64,
-    /// Rank for rotations about the viewing axis only.
-    pub viewing_axis_rank: usize,
-    /// Rank for rotations about one fixed, generic axis.
-    pub fixed_axis_rank: usize,
-}
-
-/// Solve `trials` seeded random scenes with `frames` frames, plus two special motions.
-pub fn census(trials: usize, frames: usize, seed: u64) -> Census {
-    use crate::model::{Motion, Scene};
-    use nalgebra::Unit;
-    let mut c = Census {
-        trials,
-        frames,
-        seed,
-        unique: 0,
-        truth_found: 0,
-        max_truth_error: 0.0,
-        median_condition: 0.0,
-        viewing_axis_rank: 0,
-        fixed_axis_rank: 0,
-    };
-    let mut conds = Vec::new();
-    for t in 0..trials {
-        let scene = Scene::random(3, frames, seed.wrapping_add(t as u64));
-        let Ok(out) = solve(&SquaredLengths::from_tracks(&scene.tracks())) else {
-            continue;
-        };
-        if let Some(s) = out.solutions.first() {
-            c.unique += 1;
-            let truth = [(0, 1), (1, 2), (2, 0)].map(|(i, j)| scene.body.squared_distance(i, j));
-            let abs = (0..3)
-                .map(|e| (s.squared_edges[e] - truth[e]).abs())
-                .fold(0.0, f64::max);
-            if abs <= s.error_bound.unwrap_or(0.0) {
-                c.truth_found += 1;
-            }
-            let scale = truth.iter().fold(0.0_f64, |a, b| a.max(*b));
-            c.max_truth_error = c.max_truth_error.max(abs / scale);
-        }
-        conds.extend(out.condition);
-    }
-    conds.sort_by(f64::total_cmp);
-    c.median_condition = conds.get(conds.len() / 2).copied().unwrap_or(f64::INFINITY);
-    let rank_for = |axis: Unit<nalgebra::Vector3<f64>>| {
-        let mut scene = Scene::random(3, frames, seed);
-        for i in 1..frames {
-            scene.motions[i] = Motion {
-                rotation: Rotation3::from_axis_angle(&axis, 0.4 * i as f64),
-                translation: Vector2::zeros(),
-            };
-        }
-        let l = SquaredLengths::from_tracks(&scene.tracks());
-        let sys = system(&l);
-        crate::algebra::svd_rank_above(&sys.m, sys.noise_m).rank
-    };
-    c.viewing_axis_rank = rank_for(nalgebra::Vector3::z_axis());
-    c.fixed_axis_rank = rank_for(Unit::new_normalize(nalgebra::Vector3::new(0.3, -0.8, 0.5)));
-    c
 }
 
 #[cfg(test)]

@@ -10,7 +10,7 @@ use nalgebra::{DMatrix, DVector, Matrix2x3, Matrix3, SMatrix, SVector, Symmetric
 
 use super::solver::{feasibility, Degenerate, Feasibility, Solution, SolverOutput, SquaredLengths};
 use super::twofold::FrameCoefficients;
-use crate::algebra::{largest_eigenvalue, svd_rank_above, Interval, SvdRank, NEGLIGIBLE_ULPS};
+use crate::algebra::{largest_eigenvalue, svd_rank_above, SvdRank, NEGLIGIBLE_ULPS};
 use crate::error::{Error, Result};
 use crate::model::Tracks;
 
@@ -113,7 +113,7 @@ pub fn solve_core(l: &[[f64; 6]; 3]) -> Core {
         };
     };
     let x: [f64; 6] = std::array::from_fn(|i| x[i]);
-    let feasible = (0..6).all(|e| x[e] >= l[0][e].max(l[1][e]).max(l[2][e]));
+    let feasible = super::solver::first_violation(&x, l.iter().map(|f| &f[..])).is_none();
     Core {
         squares: Some(x),
         feasible,
@@ -123,25 +123,14 @@ pub fn solve_core(l: &[[f64; 6]; 3]) -> Core {
 
 /// The Gram matrix of the edge vectors from point 0: Gᵢⱼ = (s₀ᵢ + s₀ⱼ − sᵢⱼ)/2, i, j ≥ 1.
 pub fn gram(squares: &[f64], p: usize) -> DMatrix<f64> {
-    let s = |i: usize, j: usize| {
-        if i == j {
-            0.0
-        } else {
-            squares[edge_index(i, j)]
-        }
-    };
-    DMatrix::from_fn(p - 1, p - 1, |i, j| {
-        0.5 * (s(0, i + 1) + s(0, j + 1) - s(i + 1, j + 1))
-    })
+    crate::algebra::gram(p, |i, j| squares[edge_index(i, j)])
 }
 
 /// Whether the 3×3 Gram matrix of four points is positive semidefinite, by its principal
 /// minors (all of them: the leading ones alone do not decide semidefiniteness).
 fn gram3_is_psd(x: &[f64; 6]) -> bool {
-    let g = Matrix3::from_fn(|i, j| {
-        let s = |i: usize, j: usize| if i == j { 0.0 } else { x[edge_index(i, j)] };
-        0.5 * (s(0, i + 1) + s(0, j + 1) - s(i + 1, j + 1))
-    });
+    let g = gram(x, 4);
+    // each minor is a sum of products of up to three entries, each a sum of three squares
     let tol = NEGLIGIBLE_ULPS * f64::EPSILON * (x.iter().map(|v| v.abs()).sum::<f64>()).powi(3);
     let minor2 = |i: usize, j: usize| g[(i, i)] * g[(j, j)] - g[(i, j)] * g[(i, j)];
     (0..3).all(|i| g[(i, i)] >= 0.0)
@@ -243,11 +232,7 @@ pub fn fit(tracks: &Tracks, squares: &[f64]) -> BodyFit {
         for (y, x) in f.iter().zip(&body) {
             yxt += (y - c2) * (x - centre).transpose();
         }
-        let svd = (yxt * pinv).svd(true, true);
-        let cam = match (svd.u, svd.v_t) {
-            (Some(u), Some(vt)) => u * vt,
-            _ => Matrix2x3::zeros(),
-        };
+        let cam = crate::algebra::orthonormal_rows(&(yxt * pinv));
         for (y, x) in f.iter().zip(&body) {
             residual = residual.max((cam * (x - centre) - (y - c2)).norm() / size);
         }
@@ -255,10 +240,9 @@ pub fn fit(tracks: &Tracks, squares: &[f64]) -> BodyFit {
     }
     // the body in frame 1's camera coordinates (the third axis completes the first camera's
     // rows to a rotation), first point at the origin
-    let r1 = cameras.first().map_or_else(Matrix3::identity, |c| {
-        let (a, b) = (c.row(0).transpose(), c.row(1).transpose());
-        Matrix3::from_rows(&[a.transpose(), b.transpose(), a.cross(&b).transpose()])
-    });
+    let r1 = cameras
+        .first()
+        .map_or_else(Matrix3::identity, crate::algebra::complete_rotation);
     let points = body.iter().map(|x| r1 * (x - body[0])).collect();
     let cameras = cameras.iter().map(|c| c * r1.transpose()).collect();
     BodyFit {
@@ -304,7 +288,7 @@ fn planar_images(input: &SquaredLengths) -> bool {
 
 /// Bounds on the rounding noise of a system's entries (Frobenius norms of matrix and
 /// right-hand side), for the numerical rank.
-fn noise(input: &SquaredLengths, rows: usize) -> (f64, f64) {
+pub(crate) fn noise(input: &SquaredLengths, rows: usize) -> (f64, f64) {
     let u = NEGLIGIBLE_ULPS * f64::EPSILON;
     let scale = input
         .frames
@@ -523,123 +507,6 @@ fn rank_by_eigen(ata: &DMatrix<f64>, floor_for: &dyn Fn(f64) -> f64) -> usize {
     sv.iter().filter(|s| **s > floor).count()
 }
 
-/// How a printed row of the paper's matrix arises from the figure: which triangle, which
-/// pair of frames (`first` − `second`), and the factor applied.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct RowMatch {
-    /// The triangle (edge indices).
-    pub triangle: Triangle,
-    /// The frame whose equation comes first (1-based).
-    pub first: usize,
-    /// The frame subtracted (1-based).
-    pub second: usize,
-    /// The factor on F_first − F_second (±1, ±1/2 or ±2).
-    pub factor: f64,
-    /// Largest |printed − recomputed| over the row, at the printed coordinates.
-    pub deviation: f64,
-}
-
-/// The row `factor · (F_first − F_second)` of `triangle` from image points
-/// (`frames[f][point] = [x, y]`), as seven intervals (coefficients of x1 … x6 and the
-/// constant) enclosing every value over the rounding box `[x ± half]`. The constant uses
-/// K = −4 (2·area)², the squared cross product, which keeps the enclosure tight.
-pub fn row_enclosure(
-    frames: &[Vec<[f64; 2]>],
-    half: f64,
-    triangle: Triangle,
-    first: usize,
-    second: usize,
-    factor: f64,
-) -> [Interval; 7] {
-    let p = frames[0].len();
-    let all = edges_of(p);
-    let points = |f: usize| -> Vec<[Interval; 2]> {
-        frames[f]
-            .iter()
-            .map(|c| [Interval::around(c[0], half), Interval::around(c[1], half)])
-            .collect()
-    };
-    // coefficients 2α, 2β, 2γ and K of one frame's equation for the triangle
-    let frame_terms = |f: usize| -> ([Interval; 3], Interval) {
-        let pts = points(f);
-        let sq = |e: usize| {
-            let (i, j) = all[e];
-            (pts[i][0] - pts[j][0]).square() + (pts[i][1] - pts[j][1]).square()
-        };
-        let [u, v, w] = triangle.map(sq);
-        let lin = [
-            (v + w - u).scale(2.0),
-            (u + w - v).scale(2.0),
-            (u + v - w).scale(2.0),
-        ];
-        // the triangle's three points: the first edge's two, and the one it lacks
-        let (a, b) = all[triangle[0]];
-        let (c0, c1) = all[triangle[1]];
-        let c = if c0 == a || c0 == b { c1 } else { c0 };
-        let cross = (pts[b][0] - pts[a][0]) * (pts[c][1] - pts[a][1])
-            - (pts[c][0] - pts[a][0]) * (pts[b][1] - pts[a][1]);
-        (lin, cross.square().scale(-4.0))
-    };
-    let (l1, k1) = frame_terms(first - 1);
-    let (l2, k2) = frame_terms(second - 1);
-    let mut row = [Interval::point(0.0); 7];
-    for (i, e) in triangle.iter().enumerate() {
-        row[*e] = (l1[i] - l2[i]).scale(factor);
-    }
-    row[6] = (k1 - k2).scale(factor);
-    row
-}
-
-/// The edges of `p` points (as in [`edges`](super::solver::edges)).
-fn edges_of(p: usize) -> Vec<(usize, usize)> {
-    super::solver::edges(p)
-}
-
-/// Identify each printed row (seven numbers: x1 … x6 and the constant) among every triangle,
-/// ordered frame pair and factor ±1, ±1/2, ±2, by the smallest largest deviation at the
-/// printed coordinates.
-pub fn identify_rows(printed: &[[f64; 7]], frames: &[Vec<[f64; 2]>]) -> Vec<RowMatch> {
-    let k = frames.len();
-    let tris = all_triangles(frames[0].len());
-    printed
-        .iter()
-        .map(|row| {
-            let mut best: Option<RowMatch> = None;
-            // positive factors first: a tie between −(F₁ − F₂) and F₂ − F₁ names the latter
-            for factor in [1.0, 0.5, 2.0, -1.0, -0.5, -2.0] {
-                for &triangle in &tris {
-                    for first in 1..=k {
-                        for second in (1..=k).filter(|s| *s != first) {
-                            let r = row_enclosure(frames, 0.0, triangle, first, second, factor);
-                            let deviation = r
-                                .iter()
-                                .zip(row)
-                                .map(|(iv, x)| (iv.mid() - x).abs())
-                                .fold(0.0, f64::max);
-                            if best.is_none_or(|b| deviation < b.deviation) {
-                                best = Some(RowMatch {
-                                    triangle,
-                                    first,
-                                    second,
-                                    factor,
-                                    deviation,
-                                });
-                            }
-                        }
-                    }
-                }
-            }
-            best.unwrap_or(RowMatch {
-                triangle: [0, 1, 2],
-                first: 1,
-                second: 1,
-                factor: 0.0,
-                deviation: f64::INFINITY,
-            })
-        })
-        .collect()
-}
-
 /// Residuals that vanish exactly when `frame` (image points) is an orthographic view of
 /// `body`: the affine camera's misfit Y − A X (centred) and A Aᵀ − I (its rows orthonormal).
 pub fn view_residual(body: &[Vector3<f64>], frame: &[[f64; 2]]) -> Vec<f64> {
@@ -674,13 +541,9 @@ pub fn view_residual(body: &[Vector3<f64>], frame: &[[f64; 2]]) -> Vec<f64> {
 /// The paper's system solved from image points (`frames[f][point] = [x, y]`, 4 points in
 /// 3 frames); `None` when singular.
 pub fn solve_points(frames: &[Vec<[f64; 2]>]) -> Option<[f64; 6]> {
-    let all = edges_of(4);
     let l: [[f64; 6]; 3] = std::array::from_fn(|f| {
-        std::array::from_fn(|e| {
-            let (i, j) = all[e];
-            let (a, b) = (frames[f][i], frames[f][j]);
-            (a[0] - b[0]).powi(2) + (a[1] - b[1]).powi(2)
-        })
+        let sq = crate::model::squared_lengths(&frames[f]);
+        std::array::from_fn(|e| sq[e])
     });
     solve_core(&l).squares
 }
@@ -691,146 +554,26 @@ pub fn solve_points(frames: &[Vec<[f64; 2]>]) -> Option<[f64; 6]> {
 /// system is singular.
 pub fn first_order_spread(frames: &[Vec<[f64; 2]>], eps: f64) -> Option<[f64; 6]> {
     let x0 = solve_points(frames)?;
-    let mut acc = [0.0; 6];
-    for f in 0..frames.len() {
-        for pt in 0..frames[f].len() {
-            for d in 0..2 {
-                let c = frames[f][pt][d];
-                if c == 0.0 {
-                    continue;
-                }
-                let h = 1e-6 * c.abs();
-                let mut plus = frames.to_vec();
-                plus[f][pt][d] = c + h;
-                let mut minus = frames.to_vec();
-                minus[f][pt][d] = c - h;
-                let (xp, xm) = (solve_points(&plus)?, solve_points(&minus)?);
-                for j in 0..6 {
-                    acc[j] += ((xp[j] - xm[j]) / (2.0 * h) * c).powi(2);
-                }
-            }
-        }
-    }
-    Some(std::array::from_fn(|j| {
-        eps * (acc[j] / 3.0).sqrt() / x0[j].abs()
-    }))
-}
-
-/// Uniqueness of the paper's system over seeded generic scenes, and its degenerate cases.
-#[derive(Clone, Debug, serde::Serialize)]
-pub struct Census {
-    /// Scenes.
-    pub trials: usize,
-    /// Seed.
-    pub seed: u64,
-    /// Scenes with a unique feasible, realizable solution.
-    pub unique: usize,
-    /// Scenes whose solution is the truth within its rounding bound.
-    pub truth_found: usize,
-    /// Largest relative error against the truth.
-    pub max_truth_error: f64,
-    /// Median condition number.
-    pub median_condition: f64,
-    /// Planar bodies tried, and the ranks of the paper's system found for them.
-    pub planar_trials: usize,
-    /// Distinct ranks of the paper's 6×6 system for planar bodies.
-    pub planar_ranks: Vec<usize>,
-    /// Distinct ranks of the system over all four triangles for planar bodies.
-    pub planar_ranks_all_triangles: Vec<usize>,
-    /// The outcome the solver names for planar bodies.
-    pub planar_outcome: Option<Degenerate>,
-    /// Rank for motions about the viewing axis only.
-    pub viewing_axis_rank: usize,
-}
-
-/// Solve `trials` seeded generic scenes of four points in three frames, then planar bodies
-/// and motions about the viewing axis.
-pub fn census(trials: usize, seed: u64) -> Census {
-    use crate::model::{Motion, Scene};
-    let mut c = Census {
-        trials,
-        seed,
-        unique: 0,
-        truth_found: 0,
-        max_truth_error: 0.0,
-        median_condition: f64::INFINITY,
-        planar_trials: 0,
-        planar_ranks: Vec::new(),
-        planar_ranks_all_triangles: Vec::new(),
-        planar_outcome: None,
-        viewing_axis_rank: 0,
-    };
-    let truth = |s: &Scene| -> Vec<f64> {
-        edges_of(4)
-            .iter()
-            .map(|&(i, j)| s.body.squared_distance(i, j))
+    let p = frames.first().map_or(0, Vec::len);
+    let unflat = |c: &[f64]| -> Vec<Vec<[f64; 2]>> {
+        (0..frames.len())
+            .map(|f| {
+                (0..p)
+                    .map(|j| [c[2 * (p * f + j)], c[2 * (p * f + j) + 1]])
+                    .collect()
+            })
             .collect()
     };
-    let mut conds = Vec::new();
-    for t in 0..trials {
-        let scene = Scene::random(4, 3, seed.wrapping_add(t as u64));
-        let Ok(out) = solve(&SquaredLengths::from_tracks(&scene.tracks())) else {
-            continue;
-        };
-        conds.extend(out.condition);
-        let Some(s) = out.solutions.first() else {
-            continue;
-        };
-        if s.feasibility.is_feasible() {
-            c.unique += 1;
-        }
-        let tr = truth(&scene);
-        let abs = s
-            .squared_edges
-            .iter()
-            .zip(&tr)
-            .map(|(a, b)| (a - b).abs())
-            .fold(0.0, f64::max);
-        if abs <= s.error_bound.unwrap_or(0.0) {
-            c.truth_found += 1;
-        }
-        let scale = tr.iter().fold(0.0_f64, |a, b| a.max(*b));
-        c.max_truth_error = c.max_truth_error.max(abs / scale);
-    }
-    conds.sort_by(f64::total_cmp);
-    c.median_condition = conds.get(conds.len() / 2).copied().unwrap_or(f64::INFINITY);
-    // planar bodies: z an affine function of x and y
-    c.planar_trials = trials.clamp(1, 200);
-    for t in 0..c.planar_trials {
-        let mut scene = Scene::random(4, 3, seed.wrapping_add(t as u64));
-        for x in &mut scene.body.points {
-            x.z = 0.4 * x.x - 0.7 * x.y + 0.1;
-        }
-        let l = SquaredLengths::from_tracks(&scene.tracks());
-        let (noise_m, _) = noise(&l, 6);
-        let lf: [[f64; 6]; 3] = std::array::from_fn(|i| std::array::from_fn(|e| l.frames[i][e]));
-        let (a, _) = paper_system(&lf);
-        let m = DMatrix::from_fn(6, 6, |i, j| a[(i, j)]);
-        let r = svd_rank_above(&m, noise_m).rank;
-        if !c.planar_ranks.contains(&r) {
-            c.planar_ranks.push(r);
-        }
-        let (g, _) = general_system(&l);
-        let r = svd_rank_above(&g, noise_m).rank;
-        if !c.planar_ranks_all_triangles.contains(&r) {
-            c.planar_ranks_all_triangles.push(r);
-        }
-        if t == 0 {
-            c.planar_outcome = solve(&l).ok().and_then(|o| o.degenerate);
-        }
-    }
-    let mut turn = Scene::random(4, 3, seed);
-    for i in 1..3 {
-        turn.motions[i] = Motion {
-            rotation: nalgebra::Rotation3::from_axis_angle(&Vector3::z_axis(), 0.6 * i as f64),
-            translation: nalgebra::Vector2::new(0.2, -0.1),
-        };
-    }
-    let l = SquaredLengths::from_tracks(&turn.tracks());
-    let (noise_m, _) = noise(&l, 6);
-    let (g, _) = general_system(&l);
-    c.viewing_axis_rank = svd_rank_above(&g, noise_m).rank;
-    c
+    let flat: Vec<f64> = frames.iter().flatten().flatten().copied().collect();
+    let solve = |c: &[f64]| solve_points(&unflat(c)).map(|x| x.to_vec());
+    // a relative step of 1e-6: well above the solve's rounding, well inside its curvature
+    let jac = crate::algebra::central_jacobian(&solve, &flat, |_, c| 1e-6 * c.abs())?;
+    Some(std::array::from_fn(|j| {
+        let acc: f64 = (0..flat.len())
+            .map(|k| (jac[(j, k)] * flat[k]).powi(2))
+            .sum();
+        eps * (acc / 3.0).sqrt() / x0[j].abs()
+    }))
 }
 
 #[cfg(test)]

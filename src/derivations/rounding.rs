@@ -3,7 +3,7 @@
 
 use rand::Rng;
 
-use crate::algebra::min_norm_newton;
+use crate::algebra::min_norm_newton_step;
 use crate::model::rng;
 
 /// Printed values and their rounding half-widths (0 for values known exactly).
@@ -71,6 +71,17 @@ pub fn witness(
     residual: &dyn Fn(&[f64]) -> Option<Vec<f64>>,
     tolerance: f64,
 ) -> Option<Witness> {
+    witness_step(b, residual, tolerance, 1e-7)
+}
+
+/// [`witness`] with the Jacobian's difference step `step` (in units of the box's half-widths;
+/// see [`min_norm_newton_step`]).
+pub fn witness_step(
+    b: &RoundingBox,
+    residual: &dyn Fn(&[f64]) -> Option<Vec<f64>>,
+    tolerance: f64,
+    step: f64,
+) -> Option<Witness> {
     let free: Vec<usize> = (0..b.center.len()).filter(|&i| b.half[i] > 0.0).collect();
     // unknowns scaled by their half-widths, so the minimum-norm step is a minimum shift in
     // units of rounding
@@ -82,7 +93,7 @@ pub fn witness(
         x
     };
     let f = |u: &[f64]| residual(&embed(u));
-    let (mut u, mut r) = min_norm_newton(&f, &vec![0.0; free.len()], tolerance, 60)?;
+    let (mut u, mut r) = min_norm_newton_step(&f, &vec![0.0; free.len()], tolerance, 60, step)?;
     // The minimum-norm point minimises the shift in the 2-norm; the box is a ∞-norm ball.
     // When that point leaves the box, alternate: clamp into the box, then back onto the
     // solutions by minimum-norm steps (clamping to 0.98 of the box, so that a box whose
@@ -95,7 +106,7 @@ pub fn witness(
             break;
         }
         let clamped: Vec<f64> = u.iter().map(|v| v.clamp(-0.98, 0.98)).collect();
-        let Some((v, rv)) = min_norm_newton(&f, &clamped, tolerance, 20) else {
+        let Some((v, rv)) = min_norm_newton_step(&f, &clamped, tolerance, 20, step) else {
             break;
         };
         if rv > tolerance {

@@ -9,30 +9,7 @@ use serde::Serialize;
 use crate::error::{Error, Result};
 use crate::model::Tracks;
 
-/// The edges of a p-point body in the paper's order: PQ (a), QR (b), RP (c), then for each
-/// further point its edges to the earlier ones (TP, TQ, TR, SP, SQ, SR, ST, …).
-///
-/// # Example
-/// ```
-/// use orthocheck::derivations::solver::edges;
-/// assert_eq!(edges(4), [(0, 1), (1, 2), (2, 0), (3, 0), (3, 1), (3, 2)]);
-/// ```
-pub fn edges(p: usize) -> Vec<(usize, usize)> {
-    let mut e = Vec::new();
-    if p >= 2 {
-        e.push((0, 1));
-    }
-    if p >= 3 {
-        e.push((1, 2));
-        e.push((2, 0));
-    }
-    for j in 3..p {
-        for i in 0..j {
-            e.push((j, i));
-        }
-    }
-    e
-}
+pub use crate::model::edges;
 
 /// The names of the first `count` edges of a body with the default point names ("PQ", "QR",
 /// "RP", "TP", …).
@@ -167,6 +144,26 @@ impl Feasibility {
     }
 }
 
+/// The first violation of §2.2's rules by squared edges against the projections of some
+/// frames: `(edge, None)` for a negative square, `(edge, Some(frame))` (0-based) for an
+/// edge shorter than its projection in that frame; `None` when feasible. The one place the
+/// rules are written.
+pub fn first_violation<'a>(
+    squares: &[f64],
+    frames: impl IntoIterator<Item = &'a [f64]>,
+) -> Option<(usize, Option<usize>)> {
+    if let Some(e) = squares.iter().position(|v| *v < 0.0) {
+        return Some((e, None));
+    }
+    frames.into_iter().enumerate().find_map(|(f, frame)| {
+        squares
+            .iter()
+            .zip(frame)
+            .position(|(s, p)| s < p)
+            .map(|e| (e, Some(f)))
+    })
+}
+
 /// Judge squared edges by the paper's rules.
 pub fn feasibility(squares: &[f64], imag: &[f64], input: &SquaredLengths) -> Feasibility {
     if imag.iter().any(|v| *v != 0.0) {
@@ -177,18 +174,14 @@ pub fn feasibility(squares: &[f64], imag: &[f64], input: &SquaredLengths) -> Fea
         let (i, j) = input.edges[e];
         format!("{}{}", input.names[i], input.names[j])
     };
-    if let Some(e) = squares.iter().position(|v| *v < 0.0) {
-        return Feasibility::NegativeSquare { edge: name(e) };
+    match first_violation(squares, input.frames.iter().map(|f| &f[..])) {
+        None => Feasibility::Feasible,
+        Some((e, None)) => Feasibility::NegativeSquare { edge: name(e) },
+        Some((e, Some(f))) => Feasibility::ShorterThanProjection {
+            edge: name(e),
+            frame: f + 1,
+        },
     }
-    for (f, frame) in input.frames.iter().enumerate() {
-        if let Some(e) = squares.iter().zip(frame).position(|(s, p)| s < p) {
-            return Feasibility::ShorterThanProjection {
-                edge: name(e),
-                frame: f + 1,
-            };
-        }
-    }
-    Feasibility::Feasible
 }
 
 /// One solution.

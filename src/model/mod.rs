@@ -30,6 +30,49 @@ pub fn default_names(p: usize) -> Vec<String> {
         .collect()
 }
 
+/// The edges of a p-point body in the paper's order: PQ (a), QR (b), RP (c), then for each
+/// further point its edges to the earlier ones (TP, TQ, TR, SP, SQ, SR, ST, …).
+///
+/// # Example
+/// ```
+/// use orthocheck::model::edges;
+/// assert_eq!(edges(4), [(0, 1), (1, 2), (2, 0), (3, 0), (3, 1), (3, 2)]);
+/// ```
+pub fn edges(p: usize) -> Vec<(usize, usize)> {
+    let mut e = Vec::new();
+    if p >= 2 {
+        e.push((0, 1));
+    }
+    if p >= 3 {
+        e.push((1, 2));
+        e.push((2, 0));
+    }
+    for j in 3..p {
+        for i in 0..j {
+            e.push((j, i));
+        }
+    }
+    e
+}
+
+/// Squared lengths of every edge (in [`edges`] order) of one frame's image points
+/// `[x, y]`: the one place image coordinates become the paper's aᵢ², bᵢ², cᵢ², ….
+///
+/// # Example
+/// ```
+/// let l = orthocheck::model::squared_lengths(&[[0.0, 0.0], [3.0, 4.0], [3.0, 0.0]]);
+/// assert_eq!(l, [25.0, 16.0, 9.0]);
+/// ```
+pub fn squared_lengths(points: &[[f64; 2]]) -> Vec<f64> {
+    edges(points.len())
+        .iter()
+        .map(|&(i, j)| {
+            let (a, b) = (points[i], points[j]);
+            (a[0] - b[0]).powi(2) + (a[1] - b[1]).powi(2)
+        })
+        .collect()
+}
+
 /// A rigid body of named points.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Body {

@@ -1,0 +1,135 @@
+//! Witness searches with tolerances from the printed precision, and the acceptance region of
+//! such a search (its power): how far a printed target may move before the search fails.
+
+pub use crate::derivations::rounding::{
+    monte_carlo, quantile, witness, witness_step, RoundingBox, Witness,
+};
+
+/// Shifts of a mutant target, in units of the target's own tolerance (half a unit of its last
+/// printed digit), tried in turn on each side until the search fails.
+pub const LADDER: [f64; 8] = [1.0, 3.0, 10.0, 30.0, 100.0, 1e3, 1e4, 1e5];
+
+/// Weight of the shift (in units of the box) appended to the residuals by
+/// [`reproduce_gauged`]: it makes the linearised system full rank where the targets leave
+/// some coordinates free (a frame's translation, an in-plane turn) and the targets outnumber
+/// the coordinates, and costs at most this fraction of one tolerance inside the box, so it
+/// never decides whether a target is met.
+const SHIFT_WEIGHT: f64 = 1e-2;
+
+/// The difference step of [`reproduce_gauged`], in units of the box: residuals divided by
+/// half units of six-digit numbers are ~10⁸ times their own rounding, so the default step
+/// (10⁻⁷) would bury the Jacobian in noise; they are polynomials of low degree, so a step of
+/// 10⁻³ of the box leaves a truncation error far below one tolerance.
+const GAUGED_STEP: f64 = 1e-3;
+
+fn finite(r: Option<Vec<f64>>) -> Option<Vec<f64>> {
+    r.filter(|r| r.iter().all(|v| v.is_finite()))
+}
+
+/// A point of the box where every residual, already divided by its own tolerance, is at most
+/// 1 in magnitude; `None` when the search finds none inside the box (or a residual stops
+/// being finite on the way). For fewer targets than coordinates: the minimum-norm steps find
+/// the nearest point.
+pub fn reproduce(b: &RoundingBox, scaled: &dyn Fn(&[f64]) -> Option<Vec<f64>>) -> Option<Witness> {
+    witness(b, &|x| finite(scaled(x)), 1.0).filter(inside)
+}
+
+/// [`reproduce`] for more targets than free coordinates, with directions the targets do not
+/// see: the shift, weighted by [`SHIFT_WEIGHT`], joins the residuals.
+pub fn reproduce_gauged(
+    b: &RoundingBox,
+    scaled: &dyn Fn(&[f64]) -> Option<Vec<f64>>,
+) -> Option<Witness> {
+    let free: Vec<usize> = (0..b.center.len()).filter(|&i| b.half[i] > 0.0).collect();
+    let with_shift = |x: &[f64]| {
+        let mut r = finite(scaled(x))?;
+        r.extend(
+            free.iter()
+                .map(|&i| SHIFT_WEIGHT * (x[i] - b.center[i]) / b.half[i]),
+        );
+        Some(r)
+    };
+    witness_step(b, &with_shift, 1.0, GAUGED_STEP).filter(inside)
+}
+
+/// Whether a witness lies in the box and meets every tolerance.
+pub fn inside(w: &Witness) -> bool {
+    w.shift_ratio <= 1.0 && w.residual <= 1.0
+}
+
+/// How far one printed target may be moved (in units of its tolerance) with the search still
+/// succeeding: per side, the largest shift of [`LADDER`] accepted and the first rejected.
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
+pub struct Acceptance {
+    /// Largest shift accepted below and above the printed value (0 when even 1 fails).
+    pub accepted: [f64; 2],
+    /// First shift rejected below and above (`None`: accepted up to the ladder's end).
+    pub rejected: [Option<f64>; 2],
+}
+
+impl Acceptance {
+    /// The widest rejected shift on either side: the search accepts nothing beyond it
+    /// (infinite when one side never fails).
+    pub fn outer(&self) -> f64 {
+        self.rejected
+            .iter()
+            .map(|r| r.unwrap_or(f64::INFINITY))
+            .fold(0.0, f64::max)
+    }
+
+    /// The acceptance interval of a target printed as `value` with tolerance `unit`: from
+    /// the first rejected shift below to the first rejected above (the search found nothing
+    /// beyond them; the region lies inside).
+    pub fn interval(&self, value: f64, unit: f64) -> (f64, f64) {
+        let r = |k: usize| self.rejected[k].unwrap_or(f64::INFINITY);
+        (value - r(0) * unit, value + r(1) * unit)
+    }
+}
+
+/// Run `accepts(shift)` up the ladder on each side (shift < 0 below, > 0 above) until it fails.
+pub fn acceptance(accepts: &dyn Fn(f64) -> bool) -> Acceptance {
+    let mut a = Acceptance {
+        accepted: [0.0; 2],
+        rejected: [None; 2],
+    };
+    for (k, sign) in [-1.0, 1.0].into_iter().enumerate() {
+        for s in LADDER {
+            if accepts(sign * s) {
+                a.accepted[k] = s;
+            } else {
+                a.rejected[k] = Some(s);
+                break;
+            }
+        }
+    }
+    a
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_ladder_stops_at_the_first_failure() {
+        let a = acceptance(&|s| s.abs() < 20.0);
+        assert_eq!(a.accepted, [10.0, 10.0]);
+        assert_eq!(a.rejected, [Some(30.0), Some(30.0)]);
+        assert_eq!(a.interval(5.0, 0.5), (-10.0, 20.0));
+        assert_eq!(a.outer(), 30.0);
+        let never = acceptance(&|_| true);
+        assert!(never.outer().is_infinite());
+    }
+
+    #[test]
+    fn a_witness_is_found_only_inside_the_box() {
+        let b = RoundingBox {
+            center: vec![0.0],
+            half: vec![0.5],
+        };
+        // x = 0.3 is inside, x = 3 is not
+        let near = |x: &[f64]| Some(vec![(x[0] - 0.3) / 1e-9]);
+        let far = |x: &[f64]| Some(vec![(x[0] - 3.0) / 1e-9]);
+        assert!(reproduce(&b, &near).is_some());
+        assert!(reproduce(&b, &far).is_none());
+    }
+}
