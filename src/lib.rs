@@ -11,5 +11,6 @@ pub mod input;
 pub mod model;
 pub mod numfmt;
 pub mod report;
+pub mod studies;
 
 pub use error::{Error, Result};

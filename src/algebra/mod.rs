@@ -4,6 +4,7 @@ mod float_roots;
 mod interval;
 mod lanczos;
 mod newton;
+mod perm;
 mod poly;
 mod rank;
 mod ratfn;
@@ -16,6 +17,7 @@ pub use float_roots::{
 pub use interval::Interval;
 pub use lanczos::largest_eigenvalue;
 pub use newton::min_norm_newton;
+pub use perm::{permutations, permutations4};
 pub use poly::{parse_decimal, Monomial, Poly};
 pub use rank::{exact_rank, exact_solve, svd_rank, svd_rank_above, ExactRankMethod, SvdRank};
 pub use ratfn::{agree_at_random_points, solve_linear, PointEvaluation, RatFn};
