@@ -59,8 +59,8 @@ pub struct IdentityExampleCase {
     pub correct: ClaimRef,
     /// The debug printouts.
     pub debug: DebugBlocks,
-    /// The figure panels.
-    pub panels: Panels,
+    /// The figure panels (boxed: they make the case large).
+    pub panels: Box<Panels>,
     /// Random generic scenes for the comparison with the example.
     pub census_trials: usize,
     /// c in those scenes, as a multiple of the smallest admissible c.

@@ -114,7 +114,8 @@ pub(super) fn validate(case: &Case, text: &str, path: &Path) -> Result<()> {
             if !(c.control_shift > 0.0 && c.mutant_half_units > 1.0) {
                 return err(
                     "check.two_frames.control_shift",
-                    "the control shift must be positive and the mutant more than one half unit".into(),
+                    "the control shift must be positive and the mutant more than one half unit"
+                        .into(),
                 );
             }
         }

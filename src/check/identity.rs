@@ -10,12 +10,21 @@ use crate::studies::identity_census::{census, distance_level, IdentityCensus};
 
 /// A line test holds when the true assignment stays within `level` while every control (the
 /// best wrong assignment, the moved point) lies beyond it.
-pub(super) fn judge_line(true_max: f64, wrong_min: f64, accepted_controls: usize, level: f64) -> Verdict {
+pub(super) fn judge_line(
+    true_max: f64,
+    wrong_min: f64,
+    accepted_controls: usize,
+    level: f64,
+) -> Verdict {
     Verdict::holds(true_max <= level && wrong_min > level && accepted_controls == 0)
 }
 
 fn level_tolerance() -> Tolerance {
-    Tolerance::bound(distance_level(), ToleranceSource::ErrorBound, "three depths √(e² − eᵢ²), each with the error √(64ε)·e, relative to the image size")
+    Tolerance::bound(
+        distance_level(),
+        ToleranceSource::ErrorBound,
+        "three depths √(e² − eᵢ²), each with the error √(64ε)·e, relative to the image size",
+    )
 }
 
 pub(super) fn check(b: &ResultBuilder, case: &IdentityCensusCase) -> Result<Vec<ClaimResult>> {
@@ -29,7 +38,12 @@ pub(super) fn check(b: &ResultBuilder, case: &IdentityCensusCase) -> Result<Vec<
     ])
 }
 
-fn line_result(b: &ResultBuilder, case: &IdentityCensusCase, c: &IdentityCensus, level: f64) -> ClaimResult {
+fn line_result(
+    b: &ResultBuilder,
+    case: &IdentityCensusCase,
+    c: &IdentityCensus,
+    level: f64,
+) -> ClaimResult {
     b.claim(&case.line)
         .printed("scenes", Value::count(case.trials))
         .computed("largest distance of T₂ from its line, true assignment, every c (relative)", Value::below(c.true_max))
@@ -44,7 +58,12 @@ fn line_result(b: &ResultBuilder, case: &IdentityCensusCase, c: &IdentityCensus,
         .verdict(judge_line(c.true_max, c.wrong_min, c.nonrigid_accepted, level))
 }
 
-fn procedure_result(b: &ResultBuilder, case: &IdentityCensusCase, c: &IdentityCensus, level: f64) -> ClaimResult {
+fn procedure_result(
+    b: &ResultBuilder,
+    case: &IdentityCensusCase,
+    c: &IdentityCensus,
+    level: f64,
+) -> ClaimResult {
     let first = c.paper_first == c.tested;
     b.claim(&case.procedure)
         .suffix("dependence-on-c")
@@ -62,8 +81,17 @@ fn procedure_result(b: &ResultBuilder, case: &IdentityCensusCase, c: &IdentityCe
         .verdict(Verdict::holds(judge_line(c.true_max, c.wrong_min, c.nonrigid_accepted, level) == Verdict::Reproduced && first))
 }
 
-fn tracing_result(b: &ResultBuilder, case: &IdentityCensusCase, c: &IdentityCensus, level: f64) -> ClaimResult {
-    let median = c.runner_up.get(c.runner_up.len() / 2).copied().unwrap_or(0.0);
+fn tracing_result(
+    b: &ResultBuilder,
+    case: &IdentityCensusCase,
+    c: &IdentityCensus,
+    level: f64,
+) -> ClaimResult {
+    let median = c
+        .runner_up
+        .get(c.runner_up.len() / 2)
+        .copied()
+        .unwrap_or(0.0);
     let smallest = c.runner_up.first().copied().unwrap_or(0.0);
     b.claim(&case.tracing)
         .suffix("four-points")
@@ -78,7 +106,12 @@ fn tracing_result(b: &ResultBuilder, case: &IdentityCensusCase, c: &IdentityCens
         .verdict(Verdict::holds(c.epi_first == c.tested && c.paper_first == c.tested))
 }
 
-fn five_result(b: &ResultBuilder, case: &IdentityCensusCase, c: &IdentityCensus, level: f64) -> ClaimResult {
+fn five_result(
+    b: &ResultBuilder,
+    case: &IdentityCensusCase,
+    c: &IdentityCensus,
+    level: f64,
+) -> ClaimResult {
     b.claim(&case.five_points)
         .printed("assignments of five points", Value::count(120))
         .computed("largest distance of S₂ from S₂ₐS₂_b, true assignment", Value::below(c.five_true_max))

@@ -53,7 +53,9 @@ fn example(case: &IdentityExampleCase) -> Result<Example> {
     let mut paper_of_program = [0; 4];
     for (j, n) in case.debug.program_order.iter().enumerate() {
         paper_of_program[j] = names.iter().position(|m| m == n).ok_or_else(|| {
-            Error::InvalidInput(format!("program order names '{n}', not one of the table's points"))
+            Error::InvalidInput(format!(
+                "program order names '{n}', not one of the table's points"
+            ))
         })?;
     }
     Ok(Example {
@@ -97,8 +99,17 @@ struct NamesFit {
 /// A table column matches two listed points when both frames' distances agree: the printed
 /// distance is the program's value to `digits` significant digits, ours moves by at most
 /// 2√2 × the coordinates' half unit (two points, each off by √2 × half).
-fn column_matches(ex: &Example, i: usize, j: usize, p1: &Printed, p2: &Printed, digits: u32) -> bool {
-    let tol = |p: &Printed| p.half_unit_significant(digits) + 2.0 * std::f64::consts::SQRT_2 * ex.coord_half;
+fn column_matches(
+    ex: &Example,
+    i: usize,
+    j: usize,
+    p1: &Printed,
+    p2: &Printed,
+    digits: u32,
+) -> bool {
+    let tol = |p: &Printed| {
+        p.half_unit_significant(digits) + 2.0 * std::f64::consts::SQRT_2 * ex.coord_half
+    };
     ((ex.frame1[i] - ex.frame1[j]).norm() - p1.to_f64()).abs() <= tol(p1)
         && ((ex.frame2[i] - ex.frame2[j]).norm() - p2.to_f64()).abs() <= tol(p2)
 }
@@ -113,11 +124,20 @@ fn names_fit(case: &IdentityExampleCase, ex: &Example) -> NamesFit {
             let ch: Vec<Option<usize>> = head.chars().map(name).collect();
             let pairs: Vec<(usize, usize)> = match (ch[0], ch[1]) {
                 (Some(x), Some(y)) => vec![(x, y)],
-                (Some(x), None) | (None, Some(x)) => (0..4).filter(|y| *y != x).map(|y| (x, y)).collect(),
+                (Some(x), None) | (None, Some(x)) => {
+                    (0..4).filter(|y| *y != x).map(|y| (x, y)).collect()
+                }
                 (None, None) => vec![],
             };
             let hit = pairs.iter().find(|(x, y)| {
-                column_matches(ex, perm[*x], perm[*y], &t.projected1[col], &t.projected2[col], t.significant_digits)
+                column_matches(
+                    ex,
+                    perm[*x],
+                    perm[*y],
+                    &t.projected1[col],
+                    &t.projected2[col],
+                    t.significant_digits,
+                )
             });
             if let Some(&(x, y)) = hit {
                 ok += 1;
@@ -128,17 +148,23 @@ fn names_fit(case: &IdentityExampleCase, ex: &Example) -> NamesFit {
         }
         (ok, resolved)
     };
-    let mut all: Vec<([usize; 4], usize, Vec<(usize, usize, usize)>)> = permutations4()
+    type Fit = ([usize; 4], usize, Vec<(usize, usize, usize)>);
+    let mut all: Vec<Fit> = permutations4()
         .into_iter()
         .map(|p| {
             let (ok, r) = fits(&p);
             (p, ok, r)
         })
         .collect();
-    all.sort_by(|a, b| b.1.cmp(&a.1));
+    all.sort_by_key(|a| std::cmp::Reverse(a.1));
     let runner_up = all.get(1).map_or(0, |x| x.1);
     let (perm, matched, resolved) = all.swap_remove(0);
-    NamesFit { perm, matched, runner_up, resolved }
+    NamesFit {
+        perm,
+        matched,
+        runner_up,
+        resolved,
+    }
 }
 
 /// Reproduced when one order matches every column and no other order does.
@@ -149,7 +175,9 @@ fn judge_names(matched: usize, runner_up: usize, columns: usize) -> Verdict {
 fn frames_result(b: &ResultBuilder, case: &IdentityExampleCase, fit: &NamesFit) -> ClaimResult {
     let t = &case.table;
     let n = t.columns.len();
-    let order: Vec<usize> = (0..4).filter_map(|i| fit.perm.iter().position(|p| *p == i)).collect();
+    let order: Vec<usize> = (0..4)
+        .filter_map(|i| fit.perm.iter().position(|p| *p == i))
+        .collect();
     let mut c = b
         .claim(&case.frames.claim)
         .printed("listed points", Value::count(case.frames.frame1.len()))
@@ -160,7 +188,10 @@ fn frames_result(b: &ResultBuilder, case: &IdentityExampleCase, fit: &NamesFit) 
         .power(Power::mutant(fit.runner_up < n, "every other assignment of the names to the listed points, run through the same column test"))
         .method("every assignment of the table's names to the listed points against the projected distances of both frames");
     for (col, x, y) in &fit.resolved {
-        c = c.detail(&format!("column {} is", t.columns[*col]), Value::label(format!("{}{}", t.point_names[*x], t.point_names[*y])));
+        c = c.detail(
+            &format!("column {} is", t.columns[*col]),
+            Value::label(format!("{}{}", t.point_names[*x], t.point_names[*y])),
+        );
     }
     c.verdict(judge_names(fit.matched, fit.runner_up, n))
 }
@@ -172,7 +203,9 @@ fn labels_result(b: &ResultBuilder, case: &IdentityExampleCase, fit: &NamesFit) 
         let j = fit.perm.iter().position(|p| *p == i).unwrap_or(0);
         case.debug.program_order[j].clone()
     };
-    let program: Vec<String> = (0..4).map(|i| t.point_names[fit.perm.iter().position(|p| *p == i).unwrap_or(0)].clone()).collect();
+    let program: Vec<String> = (0..4)
+        .map(|i| t.point_names[fit.perm.iter().position(|p| *p == i).unwrap_or(0)].clone())
+        .collect();
     let paper: Vec<String> = (0..4).map(paper_name).collect();
     let agree = paper == case.frames.figure_labels;
     b.claim(&case.frames.claim)
@@ -213,7 +246,14 @@ fn table_result(b: &ResultBuilder, case: &IdentityExampleCase, fit: &NamesFit) -
     let t = &case.table;
     let d = t.significant_digits;
     let check = |real: &[f64]| {
-        (0..t.columns.len()).all(|k| length_matches_square(real[k], t.real[k].half_unit_significant(d), t.squared[k].to_f64(), t.squared[k].half_unit_significant(d)))
+        (0..t.columns.len()).all(|k| {
+            length_matches_square(
+                real[k],
+                t.real[k].half_unit_significant(d),
+                t.squared[k].to_f64(),
+                t.squared[k].half_unit_significant(d),
+            )
+        })
     };
     let real: Vec<f64> = t.real.iter().map(Printed::to_f64).collect();
     let same = t.real == t.real2;
@@ -230,8 +270,20 @@ fn table_result(b: &ResultBuilder, case: &IdentityExampleCase, fit: &NamesFit) -
         exact[e] = t.squared[col].value.clone();
     }
     let half = BigRational::new(1.into(), 2.into());
-    let s = |a: usize, c: usize| if a == c { BigRational::from_integer(0.into()) } else { exact[edge_index(a, c)].clone() };
-    let gram: Vec<Vec<BigRational>> = (1..4).map(|i| (1..4).map(|j| (s(0, i) + s(0, j) - s(i, j)) * &half).collect()).collect();
+    let s = |a: usize, c: usize| {
+        if a == c {
+            BigRational::from_integer(0.into())
+        } else {
+            exact[edge_index(a, c)].clone()
+        }
+    };
+    let gram: Vec<Vec<BigRational>> = (1..4)
+        .map(|i| {
+            (1..4)
+                .map(|j| (s(0, i) + s(0, j) - s(i, j)) * &half)
+                .collect()
+        })
+        .collect();
     let (rank, _) = exact_rank(&gram);
     b.claim(&t.claim)
         .printed("columns", Value::count(t.columns.len()))
@@ -261,7 +313,12 @@ mod tests {
         // 4.89898² = 23.99999… against 24 with six significant digits
         assert!(length_matches_square(4.89898, 5e-6, 24.0, 5e-5));
         assert!(!length_matches_square(4.899, 5e-6, 24.0, 5e-5));
-        assert!(!length_matches_square(6.40312 + 100.0 * 5e-6, 5e-6, 41.0, 0.0));
+        assert!(!length_matches_square(
+            6.40312 + 100.0 * 5e-6,
+            5e-6,
+            41.0,
+            0.0
+        ));
     }
 
     #[test]

@@ -12,42 +12,54 @@ use crate::derivations::dof::identifiability;
 use crate::derivations::two_frames::{align, trefoil, view, Counterexample};
 use crate::error::Result;
 use crate::model::{random_rotation, rng};
-use crate::studies::two_frames::{curve_family, family_census, fit_counterexample, CounterexampleFit, FamilyCensus};
+use crate::studies::two_frames::{
+    curve_family, family_census, fit_counterexample, CounterexampleFit, FamilyCensus,
+};
 
 /// The counterexample holds when a construction rebuilds Q′, R′ within their printed
 /// rounding, the triangles differ beyond the sides' rounding, and the images agree to
 /// floating point.
 pub(super) fn judge_counterexample(f: &CounterexampleFit) -> bool {
-    f.construction.is_some() && f.rebuilt_ratio <= 1.0 && f.difference_ratio > 1.0 && f.mismatch_ratio <= 1.0
+    f.construction.is_some()
+        && f.rebuilt_ratio <= 1.0
+        && f.difference_ratio > 1.0
+        && f.mismatch_ratio <= 1.0
 }
 
 /// The family holds when every member reprojects within its bound, members differ beyond
 /// it, and the true body is a member in every scene.
 pub(super) fn judge_family(c: &FamilyCensus, trials: usize) -> bool {
-    c.scenes == trials && c.worst_reprojection_ratio <= 1.0 && c.smallest_difference_ratio > 1.0 && c.truth_found == trials
+    c.scenes == trials
+        && c.worst_reprojection_ratio <= 1.0
+        && c.smallest_difference_ratio > 1.0
+        && c.truth_found == trials
 }
 
 fn printed_points(case: &TwoFramesCase) -> ([Vector3<f64>; 5], [Vector3<f64>; 5]) {
     let p = &case.counterexample.points;
-    let v = |f: &dyn Fn(&Printed) -> f64, i: usize| Vector3::new(f(&p[i][0]), f(&p[i][1]), f(&p[i][2]));
-    (std::array::from_fn(|i| v(&Printed::to_f64, i)), std::array::from_fn(|i| v(&Printed::half_unit, i)))
+    let v =
+        |f: &dyn Fn(&Printed) -> f64, i: usize| Vector3::new(f(&p[i][0]), f(&p[i][1]), f(&p[i][2]));
+    (
+        std::array::from_fn(|i| v(&Printed::to_f64, i)),
+        std::array::from_fn(|i| v(&Printed::half_unit, i)),
+    )
 }
 
 fn figure(b: &ResultBuilder, case: &TwoFramesCase, pts: &[Vector3<f64>; 5], c: &Counterexample) {
-        let tri = |q: Vector3<f64>, r: Vector3<f64>| [pts[0], q, r];
-        let first = tri(pts[1], pts[2]);
-        let second = tri(pts[3], pts[4]);
-        let v1 = (view(&first, &c.u1), view(&second, &c.u1));
-        let v2 = view(&first, &c.u2);
-        let v2p = align(&v2, &view(&second, &c.u2_prime));
-        let layer = |name: &str, style: Style, pts: Vec<[f64; 2]>, primed: bool| {
-            Layer::new(name, Shape::Polygon, style, pts).labelled(if primed {
-                &["P", "Q′", "R′"]
-            } else {
-                &["P", "Q", "R"]
-            })
-        };
-        b.figure(Figure {
+    let tri = |q: Vector3<f64>, r: Vector3<f64>| [pts[0], q, r];
+    let first = tri(pts[1], pts[2]);
+    let second = tri(pts[3], pts[4]);
+    let v1 = (view(&first, &c.u1), view(&second, &c.u1));
+    let v2 = view(&first, &c.u2);
+    let v2p = align(&v2, &view(&second, &c.u2_prime));
+    let layer = |name: &str, style: Style, pts: Vec<[f64; 2]>, primed: bool| {
+        Layer::new(name, Shape::Polygon, style, pts).labelled(if primed {
+            &["P", "Q′", "R′"]
+        } else {
+            &["P", "Q", "R"]
+        })
+    };
+    b.figure(Figure {
             id: "fig-two-frames".into(),
             claim: case.counterexample.claim.claim.clone(),
             title: "§5.1: two triangles, the same two views".into(),
@@ -93,7 +105,10 @@ fn counterexample_result(b: &ResultBuilder, case: &TwoFramesCase) -> ClaimResult
             .detail("sides of PQR", Value::reals(&c.sides))
             .detail("sides of PQ′R′", Value::reals(&c.sides_prime))
             .detail("u₂", Value::reals(&[c.u2.x, c.u2.y, c.u2.z]))
-            .detail("u₂′", Value::reals(&[c.u2_prime.x, c.u2_prime.y, c.u2_prime.z]))
+            .detail(
+                "u₂′",
+                Value::reals(&[c.u2_prime.x, c.u2_prime.y, c.u2_prime.z]),
+            )
             .detail("axis n", Value::reals(&[c.axis.x, c.axis.y, c.axis.z]))
             .detail("rotation (rad)", Value::real(c.angle));
     }
@@ -102,23 +117,50 @@ fn counterexample_result(b: &ResultBuilder, case: &TwoFramesCase) -> ClaimResult
 
 pub(super) fn check(b: &ResultBuilder, case: &TwoFramesCase) -> Result<Vec<ClaimResult>> {
     let mut out = vec![counterexample_result(b, case)];
-    let fam = family_census(case.points, case.trials, case.seed, &case.betas, case.control_shift);
+    let fam = family_census(
+        case.points,
+        case.trials,
+        case.seed,
+        &case.betas,
+        case.control_shift,
+    );
     let deficiencies: Vec<usize> = (3..=case.points.max(4))
         .map(|p| identifiability(p, 2, case.seed).map(|r| r.deficiency))
         .collect::<Result<_>>()?;
     let ok = judge_family(&fam, case.trials);
-    out.push(fam_values(b.claim(&case.construction).printed("points per scene", Value::count(case.points)), &fam, case).verdict(Verdict::holds(ok)));
     out.push(
-        fam_values(b.claim(&case.family).suffix("family").printed("points per scene", Value::count(case.points)), &fam, case)
-            .computed("Jacobian deficiency at two frames, p = 3 …", Value::reals(&deficiencies.iter().map(|d| *d as f64).collect::<Vec<_>>()))
-            .verdict(Verdict::holds(ok && deficiencies.iter().all(|d| *d == 1))),
+        fam_values(
+            b.claim(&case.construction)
+                .printed("points per scene", Value::count(case.points)),
+            &fam,
+            case,
+        )
+        .verdict(Verdict::holds(ok)),
+    );
+    out.push(
+        fam_values(
+            b.claim(&case.family)
+                .suffix("family")
+                .printed("points per scene", Value::count(case.points)),
+            &fam,
+            case,
+        )
+        .computed(
+            "Jacobian deficiency at two frames, p = 3 …",
+            Value::reals(&deficiencies.iter().map(|d| *d as f64).collect::<Vec<_>>()),
+        )
+        .verdict(Verdict::holds(ok && deficiencies.iter().all(|d| *d == 1))),
     );
     out.push(fourth_point_result(b, case)?);
     out.push(curves_result(b, case));
     Ok(out)
 }
 
-fn fam_values<'b>(c: super::ClaimBuilder<'b>, fam: &FamilyCensus, case: &TwoFramesCase) -> super::ClaimBuilder<'b> {
+fn fam_values<'b>(
+    c: super::ClaimBuilder<'b>,
+    fam: &FamilyCensus,
+    case: &TwoFramesCase,
+) -> super::ClaimBuilder<'b> {
     c.computed("scenes", Value::count_of(fam.scenes, case.trials))
         .computed("largest reprojection error over its bound", Value::real(fam.worst_reprojection_ratio))
         .computed("smallest shape difference between members over its bound", Value::real(fam.smallest_difference_ratio))
@@ -181,9 +223,20 @@ mod tests {
     use super::*;
 
     fn fit(rebuilt: f64, diff: f64, mismatch: f64, found: bool) -> CounterexampleFit {
-        let p = [Vector3::zeros(), Vector3::x(), Vector3::y(), Vector3::z(), Vector3::x()];
+        let p = [
+            Vector3::zeros(),
+            Vector3::x(),
+            Vector3::y(),
+            Vector3::z(),
+            Vector3::x(),
+        ];
         let c = crate::derivations::two_frames::counterexample(p);
-        CounterexampleFit { construction: if found { c } else { None }, rebuilt_ratio: rebuilt, difference_ratio: diff, mismatch_ratio: mismatch }
+        CounterexampleFit {
+            construction: if found { c } else { None },
+            rebuilt_ratio: rebuilt,
+            difference_ratio: diff,
+            mismatch_ratio: mismatch,
+        }
     }
 
     #[test]
@@ -200,10 +253,34 @@ mod tests {
 
     #[test]
     fn family_judge_both_sides() {
-        let good = FamilyCensus { scenes: 3, worst_reprojection_ratio: 0.1, smallest_difference_ratio: 1e6, truth_found: 3, ..Default::default() };
+        let good = FamilyCensus {
+            scenes: 3,
+            worst_reprojection_ratio: 0.1,
+            smallest_difference_ratio: 1e6,
+            truth_found: 3,
+            ..Default::default()
+        };
         assert!(judge_family(&good, 3));
-        assert!(!judge_family(&FamilyCensus { worst_reprojection_ratio: 2.0, ..good.clone() }, 3));
-        assert!(!judge_family(&FamilyCensus { smallest_difference_ratio: 0.5, ..good.clone() }, 3));
-        assert!(!judge_family(&FamilyCensus { truth_found: 2, ..good }, 3));
+        assert!(!judge_family(
+            &FamilyCensus {
+                worst_reprojection_ratio: 2.0,
+                ..good.clone()
+            },
+            3
+        ));
+        assert!(!judge_family(
+            &FamilyCensus {
+                smallest_difference_ratio: 0.5,
+                ..good.clone()
+            },
+            3
+        ));
+        assert!(!judge_family(
+            &FamilyCensus {
+                truth_found: 2,
+                ..good
+            },
+            3
+        ));
     }
 }

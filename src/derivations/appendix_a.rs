@@ -239,7 +239,11 @@ mod tests {
         assert!(!at5.is_negative());
         assert!(d.f_cb_over_f_b2.is_some());
         let flat = ExactDeltaB {
-            coefficients: [BigRational::zero(), -BigRational::from_integer(1.into()), BigRational::zero()],
+            coefficients: [
+                BigRational::zero(),
+                -BigRational::from_integer(1.into()),
+                BigRational::zero(),
+            ],
             f_cb_over_f_b2: None,
         };
         assert_eq!(flat.sign_above(&BigRational::zero()), -1);

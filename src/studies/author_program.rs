@@ -247,13 +247,17 @@ pub fn delta_at_bound(ex: &Example, frame1: &[usize; 4]) -> Vec<DeltaAtBound> {
         .filter_map(|asg| {
             let (s1, s2) = (ex.exact_squares(0, frame1), ex.exact_squares(1, &asg));
             let d: ExactDeltaB = exact_delta_b(&e, &s1, &s2)?;
-            let (bound, smaller) = if s1[2] > s2[2] { (&s1[2], &s2[2]) } else { (&s2[2], &s1[2]) };
+            let (bound, smaller) = if s1[2] > s2[2] {
+                (&s1[2], &s2[2])
+            } else {
+                (&s2[2], &s1[2])
+            };
             let at_smaller = d.eval(smaller);
             let g2 = ex.frame2_recentred(&asg);
             let x = flat(&g1, &g2, 0.0);
             let half = vec![ex.coord_half; 16];
-            let ratio_bound = first_order_bound(&float_ratio, &x[..16], &half)
-                .map_or(f64::INFINITY, |b| b[0]);
+            let ratio_bound =
+                first_order_bound(&float_ratio, &x[..16], &half).map_or(f64::INFINITY, |b| b[0]);
             let c2 = num_traits::ToPrimitive::to_f64(bound).unwrap_or(f64::NAN);
             let float_at_bound = crate::derivations::identity::float_delta_b(&g1, &g2, c2);
             Some(DeltaAtBound {

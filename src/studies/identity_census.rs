@@ -72,7 +72,12 @@ pub struct IdentityCensus {
 
 /// Lines of wrong assignments at other c matched to the smallest c (as sets: the roots of b
 /// swap places as c moves); returns (found, total).
-fn lines_again(f1: &[Vector2<f64>; 4], g: &[Vector2<f64>; 4], cg: f64, factors: &[f64]) -> (usize, usize) {
+fn lines_again(
+    f1: &[Vector2<f64>; 4],
+    g: &[Vector2<f64>; 4],
+    cg: f64,
+    factors: &[f64],
+) -> (usize, usize) {
     let runs: Vec<Vec<_>> = factors.iter().map(|k| paper_tests(f1, g, cg * k)).collect();
     let level = distance_level();
     let (mut found, mut total) = (0, 0);
@@ -80,7 +85,10 @@ fn lines_again(f1: &[Vector2<f64>; 4], g: &[Vector2<f64>; 4], cg: f64, factors: 
         for w in other {
             let d = runs[0]
                 .iter()
-                .map(|v| (v.distance - w.distance).abs() / v.distance.max(w.distance).max(f64::MIN_POSITIVE))
+                .map(|v| {
+                    (v.distance - w.distance).abs()
+                        / v.distance.max(w.distance).max(f64::MIN_POSITIVE)
+                })
                 .fold(f64::INFINITY, f64::min);
             if d.is_finite() {
                 total += 1;
@@ -138,8 +146,13 @@ pub fn census(trials: usize, seed: u64, factors: &[f64], shift: f64) -> Identity
             let (f, n) = lines_again(&f1, &g, cg, factors);
             out.lines_found_again.0 += f;
             out.lines_found_again.1 += n;
-            let mins: Vec<f64> = factors.iter().map(|k| paper_distance(&f1, &g, cg * k, s)).collect();
-            let changed = mins.iter().any(|m| (m - mins[0]).abs() > level * m.abs().max(mins[0].abs()));
+            let mins: Vec<f64> = factors
+                .iter()
+                .map(|k| paper_distance(&f1, &g, cg * k, s))
+                .collect();
+            let changed = mins
+                .iter()
+                .any(|m| (m - mins[0]).abs() > level * m.abs().max(mins[0].abs()));
             out.min_changed.0 += usize::from(changed);
             out.min_changed.1 += 1;
         }
@@ -200,9 +213,12 @@ pub fn rank_example(ex: &Example, truth: &[usize; 4], factor: f64) -> ExampleRan
     let mut by_epipolar = Vec::new();
     for asg in permutations4() {
         let g2 = ex.frame2_recentred(&asg);
-        let d = smallest_c(&g1, &g2).map_or(f64::INFINITY, |c| paper_distance(&g1, &g2, c * factor, 1.0));
+        let d = smallest_c(&g1, &g2)
+            .map_or(f64::INFINITY, |c| paper_distance(&g1, &g2, c * factor, 1.0));
         by_paper.push((asg, d));
-        let e = epipolar_with_rounding(&g1, &g2, ex.coord_half).scale_residual.abs();
+        let e = epipolar_with_rounding(&g1, &g2, ex.coord_half)
+            .scale_residual
+            .abs();
         by_epipolar.push((asg, e));
     }
     by_paper.sort_by(|a, b| a.1.total_cmp(&b.1));
@@ -215,8 +231,10 @@ pub fn rank_example(ex: &Example, truth: &[usize; 4], factor: f64) -> ExampleRan
         for t in paper_tests(&g1, &g2, c) {
             true_distances.push(t.distance);
             let f = |y: &[f64]| {
-                let a: [Vector2<f64>; 4] = std::array::from_fn(|i| Vector2::new(y[2 * i], y[2 * i + 1]));
-                let b: [Vector2<f64>; 4] = std::array::from_fn(|i| Vector2::new(y[8 + 2 * i], y[9 + 2 * i]));
+                let a: [Vector2<f64>; 4] =
+                    std::array::from_fn(|i| Vector2::new(y[2 * i], y[2 * i + 1]));
+                let b: [Vector2<f64>; 4] =
+                    std::array::from_fn(|i| Vector2::new(y[8 + 2 * i], y[9 + 2 * i]));
                 paper_tests(&a, &b, c)
                     .into_iter()
                     .find(|u| u.sign_b == t.sign_b && u.sign_frame2 == t.sign_frame2)

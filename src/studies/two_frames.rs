@@ -49,7 +49,13 @@ fn true_angle(scene: &Scene) -> f64 {
 
 /// The family at `trials` seeded scenes of `points` points, members at `betas`; the control
 /// moves the last point of frame 2 by `shift` of the image size.
-pub fn family_census(points: usize, trials: usize, seed: u64, betas: &[f64], shift: f64) -> FamilyCensus {
+pub fn family_census(
+    points: usize,
+    trials: usize,
+    seed: u64,
+    betas: &[f64],
+    shift: f64,
+) -> FamilyCensus {
     let mut out = FamilyCensus {
         smallest_difference: f64::INFINITY,
         smallest_difference_ratio: f64::INFINITY,
@@ -71,7 +77,11 @@ pub fn family_census(points: usize, trials: usize, seed: u64, betas: &[f64], shi
         for i in 0..members.len() {
             for j in i + 1..members.len() {
                 let d = shape_difference(&members[i].points, &members[j].points).0;
-                let b = member_bound(f1, f2, members[i].beta).max(member_bound(f1, f2, members[j].beta));
+                let b = member_bound(f1, f2, members[i].beta).max(member_bound(
+                    f1,
+                    f2,
+                    members[j].beta,
+                ));
                 out.smallest_difference = out.smallest_difference.min(d);
                 out.smallest_difference_ratio = out.smallest_difference_ratio.min(d / b);
             }
@@ -113,7 +123,10 @@ pub struct CurveFamily {
 }
 
 /// The two-view family of a sampled curve seen in frame 1 and after `second`.
-pub fn curve_family(curve: Vec<Vector3<f64>>, second: nalgebra::Rotation3<f64>) -> Option<CurveFamily> {
+pub fn curve_family(
+    curve: Vec<Vector3<f64>>,
+    second: nalgebra::Rotation3<f64>,
+) -> Option<CurveFamily> {
     let scene = Scene {
         body: Body::new(curve),
         motions: vec![
@@ -136,7 +149,10 @@ pub fn curve_family(curve: Vec<Vector3<f64>>, second: nalgebra::Rotation3<f64>) 
         worst_reprojection: m.iter().fold((0.0, 0.0), |(w, b), x| {
             (w.max(x.reprojection), f64::max(b, bound(x.beta)))
         }),
-        truth: (shape_difference(&m[0].points, &scene.body.points).0, bound(beta)),
+        truth: (
+            shape_difference(&m[0].points, &scene.body.points).0,
+            bound(beta),
+        ),
         differences: m[1..]
             .iter()
             .map(|x| shape_difference(&scene.body.points, &x.points))
@@ -175,10 +191,15 @@ pub fn fit_counterexample(pts: [Vector3<f64>; 5], half: [Vector3<f64>; 5]) -> Co
             .map(|k| (got[k] - want[k]).abs() / h[k].max(f64::MIN_POSITIVE))
             .fold(0.0, f64::max)
     };
-    let rebuilt_ratio = ratio(&cx.rebuilt[0], &pts[3], &half[3]).max(ratio(&cx.rebuilt[1], &pts[4], &half[4]));
+    let rebuilt_ratio =
+        ratio(&cx.rebuilt[0], &pts[3], &half[3]).max(ratio(&cx.rebuilt[1], &pts[4], &half[4]));
     let n = |i: usize| half[i].norm();
     // sides PQ, QR, RP and PQ′, Q′R′, R′P: each side moves by at most the two ends' roundings
-    let side_bound = [n(0) + n(1) + n(0) + n(3), n(1) + n(2) + n(3) + n(4), n(2) + n(0) + n(4) + n(0)];
+    let side_bound = [
+        n(0) + n(1) + n(0) + n(3),
+        n(1) + n(2) + n(3) + n(4),
+        n(2) + n(0) + n(4) + n(0),
+    ];
     let difference_ratio = (0..3)
         .map(|k| (cx.sides[k] - cx.sides_prime[k]).abs() / side_bound[k])
         .fold(f64::INFINITY, f64::min);

@@ -1,9 +1,14 @@
 //! The debug printouts of §5.2's example judged number by number, the error lines, and the
 //! two "correct" attempts.
 
-use super::{block_assignments, num_g, ClaimResult, Power, ResultBuilder, Tolerance, ToleranceSource, Value, Verdict};
+use super::{
+    block_assignments, num_g, ClaimResult, Power, ResultBuilder, Tolerance, ToleranceSource, Value,
+    Verdict,
+};
 use crate::cases::{DebugAttempt, IdentityExampleCase, Printed};
-use crate::studies::author_program::{delta_at_bound, recompute, DeltaAtBound, Example, Recomputed};
+use crate::studies::author_program::{
+    delta_at_bound, recompute, DeltaAtBound, Example, Recomputed,
+};
 use crate::studies::identity_census::{both_signs_generic, rank_example};
 
 /// One printed block with what the study made of it.
@@ -21,7 +26,11 @@ impl Block<'_> {
     }
 }
 
-pub(super) fn blocks<'a>(case: &'a IdentityExampleCase, ex: &Example, frame1: &[usize; 4]) -> Vec<Block<'a>> {
+pub(super) fn blocks<'a>(
+    case: &'a IdentityExampleCase,
+    ex: &Example,
+    frame1: &[usize; 4],
+) -> Vec<Block<'a>> {
     let d = case.debug.significant_digits;
     case.debug
         .attempts
@@ -30,9 +39,20 @@ pub(super) fn blocks<'a>(case: &'a IdentityExampleCase, ex: &Example, frame1: &[
             let matches = block_assignments(ex, a, d);
             let recomputed = (matches.len() == 1).then(|| {
                 let pb = [a.pb[0].to_f64(), a.pb[1].to_f64()];
-                recompute(ex, frame1, &matches[0], num_g(&a.d, d), f64::from(a.version), pb)
+                recompute(
+                    ex,
+                    frame1,
+                    &matches[0],
+                    num_g(&a.d, d),
+                    f64::from(a.version),
+                    pb,
+                )
             });
-            Block { attempt: a, matches, recomputed: recomputed.flatten() }
+            Block {
+                attempt: a,
+                matches,
+                recomputed: recomputed.flatten(),
+            }
         })
         .collect()
 }
@@ -53,7 +73,15 @@ pub(super) struct NumberCheck {
 /// Accept when |computed − printed| ≤ bound + float + half. The mutant moves the printed
 /// value by `k` half units (for a printed exact zero, the half unit a number of size one has
 /// at the printed significant digits, `zero_half`).
-pub(super) fn judge_number(printed: f64, half: f64, computed: f64, bound: f64, float: f64, k: f64, zero_half: f64) -> NumberCheck {
+pub(super) fn judge_number(
+    printed: f64,
+    half: f64,
+    computed: f64,
+    bound: f64,
+    float: f64,
+    k: f64,
+    zero_half: f64,
+) -> NumberCheck {
     let tol = bound + float + half;
     let h = if half > 0.0 { half } else { zero_half };
     let accepts = |x: f64| (computed - x).abs() <= tol;
@@ -66,13 +94,19 @@ pub(super) fn judge_number(printed: f64, half: f64, computed: f64, bound: f64, f
 }
 
 fn printed_twelve(a: &DebugAttempt) -> [&Printed; 12] {
-    [&a.b2, &a.pak[0], &a.pak[1], &a.pak[2], &a.pbk[0], &a.pbk[1], &a.pbk[2], &a.pa[0], &a.pa[1], &a.pb[0], &a.pb[1], &a.line[2]]
+    [
+        &a.b2, &a.pak[0], &a.pak[1], &a.pak[2], &a.pbk[0], &a.pbk[1], &a.pbk[2], &a.pa[0],
+        &a.pa[1], &a.pb[0], &a.pb[1], &a.line[2],
+    ]
 }
 
 /// Per quantity: (agree, undetermined, mutants rejected, determined) and the widest width of
 /// a determined number; a number is undetermined when it is at rounding level or its
 /// acceptance is wider than the mutant (those go to `ex5-debug/undetermined`).
-fn number_checks(case: &IdentityExampleCase, blocks: &[Block]) -> (Vec<[usize; 4]>, Vec<f64>, usize) {
+fn number_checks(
+    case: &IdentityExampleCase,
+    blocks: &[Block],
+) -> (Vec<[usize; 4]>, Vec<f64>, usize) {
     let d = case.debug.significant_digits;
     let zero_half = 0.5 * 10f64.powi(1 - d as i32);
     let k = case.debug.mutant_half_units;
@@ -86,7 +120,15 @@ fn number_checks(case: &IdentityExampleCase, blocks: &[Block]) -> (Vec<[usize; 4
         };
         for (q, p) in printed_twelve(bl.attempt).iter().enumerate() {
             let n = num_g(p, d);
-            let c = judge_number(n.value, n.half, r.values[q], r.bounds[q], r.float_bound, k, zero_half);
+            let c = judge_number(
+                n.value,
+                n.half,
+                r.values[q],
+                r.bounds[q],
+                r.float_bound,
+                k,
+                zero_half,
+            );
             counts[q][0] += usize::from(c.agree);
             if c.rounding_level || !c.mutant_rejected {
                 counts[q][1] += 1;
@@ -100,7 +142,13 @@ fn number_checks(case: &IdentityExampleCase, blocks: &[Block]) -> (Vec<[usize; 4
     (counts, widest, unmatched)
 }
 
-pub(super) fn results(b: &ResultBuilder, case: &IdentityExampleCase, ex: &Example, frame1: &[usize; 4], blocks: &[Block]) -> Vec<ClaimResult> {
+pub(super) fn results(
+    b: &ResultBuilder,
+    case: &IdentityExampleCase,
+    ex: &Example,
+    frame1: &[usize; 4],
+    blocks: &[Block],
+) -> Vec<ClaimResult> {
     vec![
         debug_result(b, case, blocks),
         undetermined_result(b, case, ex, frame1, blocks),
@@ -139,8 +187,14 @@ fn debug_result(b: &ResultBuilder, case: &IdentityExampleCase, blocks: &[Block])
         .detail("mutants rejected", Value::count_of(rejected, checked));
     for (q, name) in case.debug.quantities.iter().enumerate() {
         c = c
-            .detail(&format!("{name}: reproduced"), Value::count_of(counts[q][0], total / 12))
-            .detail(&format!("{name}: widest acceptance (half units)"), Value::real(widest[q]));
+            .detail(
+                &format!("{name}: reproduced"),
+                Value::count_of(counts[q][0], total / 12),
+            )
+            .detail(
+                &format!("{name}: widest acceptance (half units)"),
+                Value::real(widest[q]),
+            );
     }
     c.verdict(judge_debug(agree, total, unmatched))
 }
@@ -150,7 +204,10 @@ fn depths_result(b: &ResultBuilder, case: &IdentityExampleCase, blocks: &[Block]
     let (mut by_r, mut by_p, mut n, mut miss) = (0, 0, 0, 0.0_f64);
     for bl in blocks {
         let Some(r) = &bl.recomputed else { continue };
-        for (k, p) in [&bl.attempt.pa[2], &bl.attempt.pb[2]].into_iter().enumerate() {
+        for (k, p) in [&bl.attempt.pa[2], &bl.attempt.pb[2]]
+            .into_iter()
+            .enumerate()
+        {
             let x = num_g(p, d);
             let tol = r.depths_r_bound[k] + x.half + r.float_bound;
             n += 1;
@@ -175,9 +232,20 @@ fn depths_result(b: &ResultBuilder, case: &IdentityExampleCase, blocks: &[Block]
 }
 
 fn choice_result(b: &ResultBuilder, case: &IdentityExampleCase, blocks: &[Block]) -> ClaimResult {
-    let proj: Vec<f64> = blocks.iter().filter_map(|x| x.recomputed.as_ref().map(|r| r.d_over_projection)).collect();
-    let small: Vec<f64> = blocks.iter().filter_map(|x| x.recomputed.as_ref().and_then(|r| r.d_over_smallest)).collect();
-    let span = |v: &[f64]| v.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), x| (l.min(*x), h.max(*x)));
+    let proj: Vec<f64> = blocks
+        .iter()
+        .filter_map(|x| x.recomputed.as_ref().map(|r| r.d_over_projection))
+        .collect();
+    let small: Vec<f64> = blocks
+        .iter()
+        .filter_map(|x| x.recomputed.as_ref().and_then(|r| r.d_over_smallest))
+        .collect();
+    let span = |v: &[f64]| {
+        v.iter()
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), x| {
+                (l.min(*x), h.max(*x))
+            })
+    };
     let ((pl, ph), (sl, sh)) = (span(&proj), span(&small));
     b.claim(&case.debug.claim)
         .suffix("choice-of-d")
@@ -194,13 +262,18 @@ fn choice_result(b: &ResultBuilder, case: &IdentityExampleCase, blocks: &[Block]
 /// The assignments no block shows.
 fn skipped(blocks: &[Block]) -> Vec<[usize; 4]> {
     let shown: Vec<[usize; 4]> = blocks.iter().filter_map(Block::assignment).collect();
-    crate::algebra::permutations4().into_iter().filter(|a| !shown.contains(a)).collect()
+    crate::algebra::permutations4()
+        .into_iter()
+        .filter(|a| !shown.contains(a))
+        .collect()
 }
 
 /// Each printed ratio matched to the never-real assignments: Some(index) when exactly one
 /// ratio agrees within half + bound.
 pub(super) fn match_ratio(printed: f64, half: f64, candidates: &[(f64, f64)]) -> Option<usize> {
-    let hits: Vec<usize> = (0..candidates.len()).filter(|&i| (candidates[i].0 - printed).abs() <= half + candidates[i].1).collect();
+    let hits: Vec<usize> = (0..candidates.len())
+        .filter(|&i| (candidates[i].0 - printed).abs() <= half + candidates[i].1)
+        .collect();
     (hits.len() == 1).then(|| hits[0])
 }
 
@@ -215,7 +288,12 @@ struct RatioChecks {
     per: Vec<(f64, Option<usize>, bool, f64)>,
 }
 
-fn ratio_checks(case: &IdentityExampleCase, ex: &Example, frame1: &[usize; 4], blocks: &[Block]) -> RatioChecks {
+fn ratio_checks(
+    case: &IdentityExampleCase,
+    ex: &Example,
+    frame1: &[usize; 4],
+    blocks: &[Block],
+) -> RatioChecks {
     let d = case.debug.significant_digits;
     let all = delta_at_bound(ex, frame1);
     let skip = skipped(blocks);
@@ -225,7 +303,11 @@ fn ratio_checks(case: &IdentityExampleCase, ex: &Example, frame1: &[usize; 4], b
         .filter(|x| x.never_real)
         .map(|x| {
             let r = x.ratio.unwrap_or(f64::NAN);
-            (r, x.ratio_bound + r.abs() * crate::algebra::NEGLIGIBLE_ULPS * f64::EPSILON, x.assignment)
+            (
+                r,
+                x.ratio_bound + r.abs() * crate::algebra::NEGLIGIBLE_ULPS * f64::EPSILON,
+                x.assignment,
+            )
         })
         .collect();
     let pairs: Vec<(f64, f64)> = cand.iter().map(|c| (c.0, c.1)).collect();
@@ -238,15 +320,27 @@ fn ratio_checks(case: &IdentityExampleCase, ex: &Example, frame1: &[usize; 4], b
         .map(|r| {
             let (v, h) = (r.to_f64(), num_g(r, d).half);
             let m = match_ratio(v, h, &pairs);
-            let rejected = match_ratio(v + k * h, h, &pairs).is_none() && match_ratio(v - k * h, h, &pairs).is_none();
+            let rejected = match_ratio(v + k * h, h, &pairs).is_none()
+                && match_ratio(v - k * h, h, &pairs).is_none();
             let width = m.map_or(f64::INFINITY, |i| (h + pairs[i].1) / h);
             (v, m, rejected, width)
         })
         .collect();
-    RatioChecks { all, skip, cand, per }
+    RatioChecks {
+        all,
+        skip,
+        cand,
+        per,
+    }
 }
 
-fn errors_result(b: &ResultBuilder, case: &IdentityExampleCase, ex: &Example, frame1: &[usize; 4], blocks: &[Block]) -> ClaimResult {
+fn errors_result(
+    b: &ResultBuilder,
+    case: &IdentityExampleCase,
+    ex: &Example,
+    frame1: &[usize; 4],
+    blocks: &[Block],
+) -> ClaimResult {
     let r = ratio_checks(case, ex, frame1, blocks);
     let mut hit: Vec<usize> = r.per.iter().filter_map(|x| x.1).collect();
     hit.sort();
@@ -277,7 +371,13 @@ fn errors_result(b: &ResultBuilder, case: &IdentityExampleCase, ex: &Example, fr
 
 /// The printed numbers whose check cannot reject the mutant: at rounding level, or with an
 /// acceptance wider than the mutant (ill-conditioned at the printed frames).
-fn undetermined_result(b: &ResultBuilder, case: &IdentityExampleCase, ex: &Example, frame1: &[usize; 4], blocks: &[Block]) -> ClaimResult {
+fn undetermined_result(
+    b: &ResultBuilder,
+    case: &IdentityExampleCase,
+    ex: &Example,
+    frame1: &[usize; 4],
+    blocks: &[Block],
+) -> ClaimResult {
     let d = case.debug.significant_digits;
     let zero_half = 0.5 * 10f64.powi(1 - d as i32);
     let k = case.debug.mutant_half_units;
@@ -286,11 +386,22 @@ fn undetermined_result(b: &ResultBuilder, case: &IdentityExampleCase, ex: &Examp
         let Some(r) = &bl.recomputed else { continue };
         for (q, p) in printed_twelve(bl.attempt).iter().enumerate() {
             let n = num_g(p, d);
-            let c = judge_number(n.value, n.half, r.values[q], r.bounds[q], r.float_bound, k, zero_half);
+            let c = judge_number(
+                n.value,
+                n.half,
+                r.values[q],
+                r.bounds[q],
+                r.float_bound,
+                k,
+                zero_half,
+            );
             if c.rounding_level {
                 level.push(format!("block {} {}", i + 1, case.debug.quantities[q]));
             } else if !c.mutant_rejected {
-                wide.push((format!("block {} {}", i + 1, case.debug.quantities[q]), c.width));
+                wide.push((
+                    format!("block {} {}", i + 1, case.debug.quantities[q]),
+                    c.width,
+                ));
             }
         }
     }
@@ -311,10 +422,19 @@ fn undetermined_result(b: &ResultBuilder, case: &IdentityExampleCase, ex: &Examp
         .verdict(Verdict::Inconclusive)
 }
 
-fn deltab_result(b: &ResultBuilder, case: &IdentityExampleCase, ex: &Example, frame1: &[usize; 4], blocks: &[Block]) -> ClaimResult {
+fn deltab_result(
+    b: &ResultBuilder,
+    case: &IdentityExampleCase,
+    ex: &Example,
+    frame1: &[usize; 4],
+    blocks: &[Block],
+) -> ClaimResult {
     let all = delta_at_bound(ex, frame1);
     let skip = skipped(blocks);
-    let rest: Vec<&DeltaAtBound> = all.iter().filter(|x| skip.contains(&x.assignment) && !x.never_real).collect();
+    let rest: Vec<&DeltaAtBound> = all
+        .iter()
+        .filter(|x| skip.contains(&x.assignment) && !x.never_real)
+        .collect();
     let negative: usize = case.debug.errors.iter().map(|e| e.delta_b_negative).sum();
     b.claim(&case.debug.claim)
         .suffix("errors-deltab")
@@ -328,17 +448,37 @@ fn deltab_result(b: &ResultBuilder, case: &IdentityExampleCase, ex: &Example, fr
         .verdict(Verdict::NotReproducible)
 }
 
-pub(super) fn correct(b: &ResultBuilder, case: &IdentityExampleCase, ex: &Example, truth: &[usize; 4], blocks: &[Block]) -> Vec<ClaimResult> {
+pub(super) fn correct(
+    b: &ResultBuilder,
+    case: &IdentityExampleCase,
+    ex: &Example,
+    truth: &[usize; 4],
+    blocks: &[Block],
+) -> Vec<ClaimResult> {
     let r = rank_example(ex, truth, case.census_c_factor);
     let first_two = blocks.len() >= 2
         && blocks[0].assignment() == Some(*truth)
         && blocks[1].assignment() == Some(*truth)
         && blocks[0].attempt.version != blocks[1].attempt.version;
-    let on_line = !r.true_distances.is_empty() && r.true_distances.iter().all(|d| *d <= r.true_bound);
-    let runner_up = r.by_paper.iter().find(|x| x.0 != *truth).map_or(f64::INFINITY, |x| x.1);
-    let within: Vec<[usize; 4]> = r.by_paper.iter().filter(|x| x.1 <= r.true_bound).map(|x| x.0).collect();
+    let on_line =
+        !r.true_distances.is_empty() && r.true_distances.iter().all(|d| *d <= r.true_bound);
+    let runner_up = r
+        .by_paper
+        .iter()
+        .find(|x| x.0 != *truth)
+        .map_or(f64::INFINITY, |x| x.1);
+    let within: Vec<[usize; 4]> = r
+        .by_paper
+        .iter()
+        .filter(|x| x.1 <= r.true_bound)
+        .map(|x| x.0)
+        .collect();
     let (both, scenes) = both_signs_generic(case.census_trials, case.seed, case.census_c_factor);
-    let tol = Tolerance::bound(r.true_bound, ToleranceSource::Propagated, "first-order effect of the frames' rounding on the distance, plus 3√(64ε) × the image size");
+    let tol = Tolerance::bound(
+        r.true_bound,
+        ToleranceSource::Propagated,
+        "first-order effect of the frames' rounding on the distance, plus 3√(64ε) × the image size",
+    );
     let first = b
         .claim(&case.correct)
         .printed("attempts called correct", Value::count(2))

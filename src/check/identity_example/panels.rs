@@ -1,7 +1,9 @@
 //! §5.2's figure panels judged against the printed debug blocks, and redrawn.
 
 use super::debug::Block;
-use super::{num_f, num_g, ClaimResult, Power, ResultBuilder, Tolerance, ToleranceSource, Value, Verdict};
+use super::{
+    num_f, num_g, ClaimResult, Power, ResultBuilder, Tolerance, ToleranceSource, Value, Verdict,
+};
 use crate::cases::{IdentityExampleCase, Printed};
 use crate::check::figure::{clip_line, Figure, Layer, Plot, Shape, Style};
 use crate::studies::author_program::{Example, Num};
@@ -48,20 +50,49 @@ pub(super) fn judge_on_line(on: usize, endpoints: usize, unfit: usize) -> Verdic
 
 /// Correct panels put the tested point on the line (within its bound), wrong ones do not.
 pub(super) fn judge_distance(correct: &[(f64, f64)], wrong: &[(f64, f64)]) -> Verdict {
-    Verdict::holds(!correct.is_empty() && correct.iter().all(|(d, b)| d <= b) && wrong.iter().all(|(d, b)| d > b))
+    Verdict::holds(
+        !correct.is_empty()
+            && correct.iter().all(|(d, b)| d <= b)
+            && wrong.iter().all(|(d, b)| d > b),
+    )
 }
 
-pub(super) fn results(b: &ResultBuilder, case: &IdentityExampleCase, ex: &Example, truth: &[usize; 4], blocks: &[Block]) -> Vec<ClaimResult> {
+pub(super) fn results(
+    b: &ResultBuilder,
+    case: &IdentityExampleCase,
+    ex: &Example,
+    truth: &[usize; 4],
+    blocks: &[Block],
+) -> Vec<ClaimResult> {
     let f = fits(case, ex, blocks);
     figure(b, case, &f, blocks, truth);
     let fitted: Vec<&PanelFit> = f.iter().flatten().collect();
     let unfit = f.len() - fitted.len();
-    let on: usize = fitted.iter().map(|p| (0..2).filter(|&k| p.endpoint_distance[k] <= p.endpoint_bound[k]).count()).sum();
-    let on_box: usize = fitted.iter().map(|p| p.on_box.iter().filter(|x| **x).count()).sum();
+    let on: usize = fitted
+        .iter()
+        .map(|p| {
+            (0..2)
+                .filter(|&k| p.endpoint_distance[k] <= p.endpoint_bound[k])
+                .count()
+        })
+        .sum();
+    let on_box: usize = fitted
+        .iter()
+        .map(|p| p.on_box.iter().filter(|x| **x).count())
+        .sum();
     let k = case.debug.mutant_half_units;
-    let half = case.panels.items.first().map_or(0.0, |p| p.segment[0][0].half_unit());
+    let half = case
+        .panels
+        .items
+        .first()
+        .map_or(0.0, |p| p.segment[0][0].half_unit());
     // the mutant: an endpoint on its line moved across it by k half units must fall off it
-    let seg_rejected = fitted.iter().all(|p| (0..2).all(|e| p.endpoint_distance[e] > p.endpoint_bound[e] || p.endpoint_distance[e] + k * half > p.endpoint_bound[e]));
+    let seg_rejected = fitted.iter().all(|p| {
+        (0..2).all(|e| {
+            p.endpoint_distance[e] > p.endpoint_bound[e]
+                || p.endpoint_distance[e] + k * half > p.endpoint_bound[e]
+        })
+    });
     let off: Vec<f64> = fitted.iter().flat_map(|p| p.endpoint_distance).collect();
     let first = b
         .claim(&case.panels.claim)
@@ -75,7 +106,11 @@ pub(super) fn results(b: &ResultBuilder, case: &IdentityExampleCase, ex: &Exampl
         .detail("endpoint distances from the line", Value::reals(&off))
         .verdict(judge_on_line(on, 2 * fitted.len(), unfit));
     let split = |c: bool| -> Vec<(f64, f64)> {
-        fitted.iter().filter(|p| (p.assignment == *truth) == c).map(|p| (p.tested_distance, p.tested_bound)).collect()
+        fitted
+            .iter()
+            .filter(|p| (p.assignment == *truth) == c)
+            .map(|p| (p.tested_distance, p.tested_bound))
+            .collect()
     };
     let (good, bad) = (split(true), split(false));
     let moved_rejected = good.iter().all(|(d, bd)| d + k * half > *bd);
@@ -92,7 +127,13 @@ pub(super) fn results(b: &ResultBuilder, case: &IdentityExampleCase, ex: &Exampl
     vec![first, second]
 }
 
-fn figure(b: &ResultBuilder, case: &IdentityExampleCase, fits: &[Option<PanelFit>], blocks: &[Block], truth: &[usize; 4]) {
+fn figure(
+    b: &ResultBuilder,
+    case: &IdentityExampleCase,
+    fits: &[Option<PanelFit>],
+    blocks: &[Block],
+    truth: &[usize; 4],
+) {
     let box_half = case.panels.box_half.to_f64();
     let xy = |q: &[Printed; 2]| [q[0].to_f64(), q[1].to_f64()];
     let plots = case
@@ -103,21 +144,53 @@ fn figure(b: &ResultBuilder, case: &IdentityExampleCase, fits: &[Option<PanelFit
         .map(|(p, fit)| {
             let pts: Vec<[f64; 2]> = p.points.iter().map(xy).collect();
             let mut layers = vec![
-                Layer::new("triangle (printed)", Shape::Polygon, Style::Printed, vec![pts[3], pts[1], pts[2]]).labelled(&["P", "Q", "R"]),
-                Layer::new("tested point (printed)", Shape::Points, Style::Mark, vec![pts[0]]).labelled(&["T"]),
-                Layer::new("segment (printed)", Shape::Line, Style::Printed, p.segment.iter().map(xy).collect()),
+                Layer::new(
+                    "triangle (printed)",
+                    Shape::Polygon,
+                    Style::Printed,
+                    vec![pts[3], pts[1], pts[2]],
+                )
+                .labelled(&["P", "Q", "R"]),
+                Layer::new(
+                    "tested point (printed)",
+                    Shape::Points,
+                    Style::Mark,
+                    vec![pts[0]],
+                )
+                .labelled(&["T"]),
+                Layer::new(
+                    "segment (printed)",
+                    Shape::Line,
+                    Style::Printed,
+                    p.segment.iter().map(xy).collect(),
+                ),
             ];
             let mut title = format!("line {}", p.line);
             if let Some(f) = fit {
                 let line = blocks
                     .iter()
-                    .filter(|bl| bl.assignment() == Some(f.assignment) && bl.attempt.version == f.version)
+                    .filter(|bl| {
+                        bl.assignment() == Some(f.assignment) && bl.attempt.version == f.version
+                    })
                     .find_map(|bl| bl.recomputed.as_ref().map(|r| r.line));
                 if let Some(c) = line.and_then(|l| clip_line(l[0], l[1], box_half)) {
-                    layers.push(Layer::new("T₂ₐT₂_b (recomputed)", Shape::Line, Style::Computed, c.to_vec()));
+                    layers.push(Layer::new(
+                        "T₂ₐT₂_b (recomputed)",
+                        Shape::Line,
+                        Style::Computed,
+                        c.to_vec(),
+                    ));
                 }
                 let sign = if f.version < 0 { "b −" } else { "b +" };
-                title = format!("line {}: {}{sign}", p.line, if f.assignment == *truth { "correct, " } else { "" });
+                title = format!(
+                    "line {}: {}{sign}",
+                    p.line,
+                    if f.assignment == *truth {
+                        "correct, "
+                    } else {
+                        ""
+                    }
+                );
             }
             Plot::image(&title, layers)
         })
@@ -139,8 +212,17 @@ mod tests {
     fn panel_judges_both_sides() {
         assert_eq!(judge_on_line(48, 48, 0), Verdict::ReproducedWithinRounding);
         assert_eq!(judge_on_line(46, 48, 0), Verdict::Contradicted);
-        assert_eq!(judge_distance(&[(1e-6, 5e-6)], &[(0.25, 5e-6)]), Verdict::Reproduced);
-        assert_eq!(judge_distance(&[(1e-5, 5e-6)], &[(0.25, 5e-6)]), Verdict::Contradicted);
-        assert_eq!(judge_distance(&[(1e-6, 5e-6)], &[(1e-6, 5e-6)]), Verdict::Contradicted);
+        assert_eq!(
+            judge_distance(&[(1e-6, 5e-6)], &[(0.25, 5e-6)]),
+            Verdict::Reproduced
+        );
+        assert_eq!(
+            judge_distance(&[(1e-5, 5e-6)], &[(0.25, 5e-6)]),
+            Verdict::Contradicted
+        );
+        assert_eq!(
+            judge_distance(&[(1e-6, 5e-6)], &[(1e-6, 5e-6)]),
+            Verdict::Contradicted
+        );
     }
 }
