@@ -24,6 +24,13 @@ pub struct TwoFramesCase {
     pub trials: usize,
     /// Samples of the curve.
     pub curve_samples: usize,
+    /// The angles β of the family members compared (each in (0, π)).
+    pub betas: Vec<f64>,
+    /// The control: how far one point of frame 2 is moved off the body (fraction of the
+    /// image size), which the family's reprojection must then reject.
+    pub control_shift: f64,
+    /// The counterexample's mutant: Q′'s second coordinate moved by this many half units.
+    pub mutant_half_units: f64,
     /// Seed.
     pub seed: u64,
 }
@@ -52,10 +59,12 @@ pub struct IdentityExampleCase {
     pub correct: ClaimRef,
     /// The debug printouts.
     pub debug: DebugBlocks,
-    /// The figure panels.
-    pub panels: Panels,
+    /// The figure panels (boxed: they make the case large).
+    pub panels: Box<Panels>,
     /// Random generic scenes for the comparison with the example.
     pub census_trials: usize,
+    /// c in those scenes, as a multiple of the smallest admissible c.
+    pub census_c_factor: f64,
     /// Seed.
     pub seed: u64,
 }
@@ -94,6 +103,8 @@ pub struct DistanceTable {
     pub projected2: Vec<Printed>,
     /// Significant digits printed.
     pub significant_digits: u32,
+    /// The names the table's letters give the four points (the program's naming).
+    pub point_names: Vec<String>,
 }
 
 /// The debug printouts.
@@ -104,6 +115,13 @@ pub struct DebugBlocks {
     pub claim: ClaimRef,
     /// Significant digits printed.
     pub significant_digits: u32,
+    /// The paper's names (§5.2's procedure tests T against PQR) of the program's P, Q, R, T.
+    pub program_order: Vec<String>,
+    /// The program's labels of the twelve numbers of a block that are recomputed, in order:
+    /// b², PaK (x, y, z), PbK (x, y, z), Pa (x, y), Pb (x, y), the (Linie) difference.
+    pub quantities: Vec<String>,
+    /// The mutant of every printed number: moved by this many half units.
+    pub mutant_half_units: f64,
     /// One block per attempt.
     pub attempts: Vec<DebugAttempt>,
     /// The blocks of error lines.
@@ -170,6 +188,9 @@ pub struct DebugError {
 pub struct Panels {
     /// The claim.
     pub claim: ClaimRef,
+    /// Half the side of the square box the segments are clipped to, as the panels print it.
+    #[serde(rename = "box")]
+    pub box_half: Printed,
     /// One per `\DreieckMitGerade`.
     pub items: Vec<Panel>,
 }
@@ -202,6 +223,9 @@ pub struct IdentityCensusCase {
     pub trials: usize,
     /// Values of c per scene, as multiples of the smallest allowed c.
     pub c_factors: Vec<f64>,
+    /// The control: how far T₂ (and S₂) is moved off the body (fraction of the image size),
+    /// which the same tests must then reject.
+    pub control_shift: f64,
     /// Seed.
     pub seed: u64,
 }

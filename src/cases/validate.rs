@@ -118,6 +118,20 @@ pub(super) fn validate(case: &Case, text: &str, path: &Path) -> Result<()> {
                     "needs at least 4 points, 1 trial and 4 curve samples".into(),
                 );
             }
+            let in_range = |b: &f64| *b > 0.0 && *b < std::f64::consts::PI;
+            if c.betas.len() < 2 || !c.betas.iter().all(in_range) {
+                return err(
+                    "check.two_frames.betas",
+                    "needs at least two angles in (0, π)".into(),
+                );
+            }
+            if !(c.control_shift > 0.0 && c.mutant_half_units > 1.0) {
+                return err(
+                    "check.two_frames.control_shift",
+                    "the control shift must be positive and the mutant more than one half unit"
+                        .into(),
+                );
+            }
         }
         CaseCheck::IdentityExample(c) => {
             let f = &c.frames;
@@ -151,6 +165,29 @@ pub(super) fn validate(case: &Case, text: &str, path: &Path) -> Result<()> {
                     "needs 4 points and a segment of 2".into(),
                 );
             }
+            let names = &t.point_names;
+            let mut order = c.debug.program_order.clone();
+            order.sort();
+            let mut sorted = names.clone();
+            sorted.sort();
+            if names.len() != 4 || order != sorted {
+                return err(
+                    "check.identity_example.debug.program_order",
+                    "needs four point names, and the program order a permutation of them".into(),
+                );
+            }
+            if c.debug.quantities.len() != 12 || c.debug.mutant_half_units <= 1.0 {
+                return err(
+                    "check.identity_example.debug.quantities",
+                    "needs the 12 labels of a block's recomputed numbers and a mutant of more than one half unit".into(),
+                );
+            }
+            if c.census_c_factor.is_nan() || c.census_c_factor < 1.0 {
+                return err(
+                    "check.identity_example.census_c_factor",
+                    "must be at least 1".into(),
+                );
+            }
         }
         CaseCheck::Restatements(c) => {
             if let Some(i) = c
@@ -165,10 +202,15 @@ pub(super) fn validate(case: &Case, text: &str, path: &Path) -> Result<()> {
             }
         }
         CaseCheck::IdentityCensus(c) => {
-            if c.trials == 0 || c.c_factors.iter().any(|f| f.is_nan() || *f < 1.0) {
+            if c.trials == 0
+                || c.c_factors.is_empty()
+                || c.c_factors.iter().any(|f| f.is_nan() || *f < 1.0)
+                || c.control_shift.is_nan()
+                || c.control_shift <= 0.0
+            {
                 return err(
                     "check.identity_census.c_factors",
-                    "needs trials and factors of at least 1".into(),
+                    "needs trials, factors of at least 1 and a positive control shift".into(),
                 );
             }
         }

@@ -1,223 +1,140 @@
 //! Claims of §5.2 and §5.3 over seeded random scenes: the paper's four-point test, its
-//! dependence on the arbitrary c, the epipolar check, the assignment ranking, five points.
+//! independence of the arbitrary c, the assignment ranking, five points. The census is
+//! `studies::identity_census`; here it is judged, with its controls (wrong assignments and a
+//! point moved off the rigid body) as the power.
 
-use nalgebra::Vector2;
-
-use super::{ClaimResult, Evidence, OldTolerance, ResultBuilder, Verdict};
-use crate::algebra::sqrt_rounding;
+use super::{ClaimResult, Power, ResultBuilder, Tolerance, ToleranceSource, Value, Verdict};
 use crate::cases::IdentityCensusCase;
-use crate::derivations::identity::{epipolar_residual, paper_tests, rank_quadruples, smallest_c};
-use crate::derivations::identity5::line_distance;
 use crate::error::Result;
-use crate::model::Scene;
-use crate::numfmt::{below, sig};
+use crate::studies::identity_census::{census, distance_level, IdentityCensus};
 
-/// The paper's distance for one assignment at one c: the smaller over the signs of b and of
-/// frame 2's depths (the paper's rule), relative to the image size; infinite when no b is
-/// real or geometric.
-fn paper_distance(f1: &[Vector2<f64>; 4], f2: &[Vector2<f64>; 4], c: f64, size: f64) -> f64 {
-    paper_tests(f1, f2, c)
-        .iter()
-        .map(|t| t.distance / size)
-        .fold(f64::INFINITY, f64::min)
+/// A line test holds when the true assignment stays within `level` while every control (the
+/// best wrong assignment, the moved point) lies beyond it.
+pub(super) fn judge_line(
+    true_max: f64,
+    wrong_min: f64,
+    accepted_controls: usize,
+    level: f64,
+) -> Verdict {
+    Verdict::holds(true_max <= level && wrong_min > level && accepted_controls == 0)
 }
 
-fn size(f: &[Vector2<f64>]) -> f64 {
-    let m = f.iter().sum::<Vector2<f64>>() / f.len() as f64;
-    f.iter()
-        .map(|p| (p - m).norm())
-        .fold(f64::MIN_POSITIVE, f64::max)
+fn level_tolerance() -> Tolerance {
+    Tolerance::bound(
+        distance_level(),
+        ToleranceSource::ErrorBound,
+        "three depths √(e² − eᵢ²), each with the error √(64ε)·e, relative to the image size",
+    )
 }
 
 pub(super) fn check(b: &ResultBuilder, case: &IdentityCensusCase) -> Result<Vec<ClaimResult>> {
-    let mut out = Vec::new();
-    let (mut true_max, mut wrong_spread) = (0.0_f64, Vec::new());
-    let (mut paper_first, mut epi_first, mut same_first, mut tested) = (0, 0, 0, 0);
-    let mut margins = Vec::new();
-    let mut five_first = 0;
-    let (mut min_changes, mut wrong_tested) = (0, 0);
-    let mut five_true_max: f64 = 0.0;
-    for t in 0..case.trials {
-        let scene = Scene::random(5, 2, case.seed.wrapping_add(t as u64));
-        let tr = scene.tracks();
-        let f1: [Vector2<f64>; 4] = std::array::from_fn(|i| tr.frames[0][i]);
-        let f2: [Vector2<f64>; 4] = std::array::from_fn(|i| tr.frames[1][i]);
-        let s = size(&tr.frames[1]);
-        let Some(c0) = smallest_c(&f1, &f2) else {
-            continue;
-        };
-        tested += 1;
-        // the true assignment at every c
-        for &k in &case.c_factors {
-            true_max = true_max.max(paper_distance(&f1, &f2, c0 * k, s));
-        }
-        // every assignment: the paper's distance at the first c, and its spread over c
-        let paper = rank_quadruples(&f1[..], &f2[..], |a, g| {
-            smallest_c(a, g).map_or(f64::INFINITY, |c| {
-                paper_distance(a, g, c * case.c_factors[0], s)
-            })
-        });
-        let epi = rank_quadruples(&f1[..], &f2[..], |a, g| epipolar_residual(a, g));
-        let truth = vec![0, 1, 2, 3];
-        paper_first += usize::from(paper[0].frame2_indices == truth);
-        epi_first += usize::from(epi[0].frame2_indices == truth);
-        same_first += usize::from(paper[0].frame2_indices == epi[0].frame2_indices);
-        margins.push(epi.get(1).map_or(0.0, |x| x.residual));
-        for a in paper.iter().skip(1).take(5) {
-            let g: [Vector2<f64>; 4] = std::array::from_fn(|i| f2[a.frame2_indices[i]]);
-            let Some(cg) = smallest_c(&f1, &g) else {
-                continue;
-            };
-            // each variant (sign of b, depth sign of frame 2) against itself over c
-            let runs: Vec<Vec<_>> = case
-                .c_factors
-                .iter()
-                .map(|k| paper_tests(&f1, &g, cg * k))
-                .collect();
-            // the roots of b swap places as c moves, so lines are matched as sets: every
-            // line at another c has a partner at the smallest c
-            for other in runs.iter().skip(1) {
-                for w in other {
-                    let d = runs[0]
-                        .iter()
-                        .map(|v| {
-                            (v.distance - w.distance).abs()
-                                / v.distance.max(w.distance).max(f64::MIN_POSITIVE)
-                        })
-                        .fold(f64::INFINITY, f64::min);
-                    if d.is_finite() {
-                        wrong_spread.push(d);
-                    }
-                }
-            }
-            let mins: Vec<f64> = case
-                .c_factors
-                .iter()
-                .map(|k| paper_distance(&f1, &g, cg * k, s))
-                .collect();
-            let changed = mins
-                .iter()
-                .any(|m| (m - mins[0]).abs() > 3.0 * sqrt_rounding() * m.abs().max(1.0));
-            min_changes += usize::from(changed);
-            wrong_tested += 1;
-        }
-        // five points: every assignment of frame 2
-        let g1: [Vector2<f64>; 5] = std::array::from_fn(|i| tr.frames[0][i]);
-        let mut best = (f64::INFINITY, Vec::new());
-        for perm in permutations(5) {
-            let g2: [Vector2<f64>; 5] = std::array::from_fn(|i| tr.frames[1][perm[i]]);
-            let d = line_distance(&g1, &g2).unwrap_or(f64::INFINITY) / s;
-            if perm == [0, 1, 2, 3, 4] {
-                five_true_max = five_true_max.max(d);
-            }
-            if d < best.0 {
-                best = (d, perm);
-            }
-        }
-        five_first += usize::from(best.1 == [0, 1, 2, 3, 4]);
-    }
-    wrong_spread.sort_by(f64::total_cmp);
-    // three depths, each √(e² − eᵢ²), enter every distance
-    let level = 3.0 * sqrt_rounding();
-    margins.sort_by(f64::total_cmp);
-    let median = |v: &[f64]| v.get(v.len() / 2).copied().unwrap_or(f64::NAN);
-    let ev = Evidence::new(
-        "seeded random bodies of five points in two frames; the paper's test for P, Q, R, T (c from the smallest \
-         allowed value upwards, both signs of b and both depth signs of frame 2, the smaller distance kept), the \
-         equal-scale epipolar residual, and every ordered choice of four frame-2 points",
-    )
-    .with("scenes tested (seed)", format!("{tested} ({})", case.seed))
-    .with("c, as multiples of the smallest allowed c", format!("{:?}", case.c_factors));
-    out.push(b.result(
-        &case.line,
-        None,
-        Verdict::holds(true_max <= level),
-        "three points fix the line on which the fourth point must lie in frame 2".into(),
-        format!(
-            "for the true assignment the distance of T₂ from the line T₂ₐT₂_b is {} of the image size at every c \
-             tried: the line is T's epipolar line, whatever c",
-            below(true_max)
-        ),
-        Some(OldTolerance {
-            value: below(3.0 * sqrt_rounding()),
-            source: "three depths √(e² − eᵢ²) at their rounding level √(64ε)".into(),
-        }),
-        ev.clone(),
-    ));
-    out.push(b.result(
-        &case.procedure,
-        Some("dependence-on-c"),
-        Verdict::holds(true_max <= level && paper_first == tested),
-        "choose c (above its lower bounds), take the smaller distance over the two values of b".into(),
-        format!(
-            "the line does not depend on c: for the true assignment the distance stays at most {} of the image \
-             size at every c tried; for wrong assignments {} of {} lines found at a larger c are found again at \
-             the smallest c to rounding level (the rest have no counterpart there). c only \
-             picks a member of the two-view family; the line is fixed by the three points and the equal scale of \
-             the two views, which leave two solutions (the two values of b). The smaller distance over the variants \
-             changed with c for {} of {} wrong assignments tried. The true assignment ranks first by the paper's \
-             distance in {} of {} scenes, by the epipolar check in {}; both name the same first assignment in {}",
-            below(true_max),
-            wrong_spread.iter().filter(|d| **d <= level).count(),
-            wrong_spread.len(),
-            min_changes,
-            wrong_tested,
-            paper_first,
-            tested,
-            epi_first,
-            same_first
-        ),
-        Some(OldTolerance {
-            value: below(3.0 * sqrt_rounding()),
-            source: "three depths √(e² − eᵢ²) at their rounding level √(64ε)".into(),
-        }),
-        ev.clone(),
-    ));
-    out.push(b.result(
-        &case.tracing,
-        Some("four-points"),
-        Verdict::holds(epi_first == tested && paper_first == tested),
-        "four points over two frames identify the points between the frames".into(),
-        format!(
-            "the true correspondence ranks first among all 24 in {epi_first} of {tested} scenes (equal-scale epipolar \
-             residual) and in {paper_first} (the paper's distance); median residual of the runner-up {}",
-            sig(median(&margins))
-        ),
-        Some(OldTolerance::exact("ranking")),
-        ev,
-    ));
-    out.push(b.result(
-        &case.five_points,
-        None,
-        Verdict::holds(five_true_max <= level && five_first == tested),
-        "five points linearize the identity test (S_a in plane PQT, S_b in plane QRP)".into(),
-        format!(
-            "S₂ lies on the line S₂ₐS₂_b for the true assignment ({} of the image size), and the true one of the 120 \
-             assignments of five points ranks first in {five_first} of {tested} scenes; only affine coordinates read \
-             off frame 1, no quadratic",
-            below(five_true_max)
-        ),
-        Some(OldTolerance {
-            value: below(3.0 * sqrt_rounding()),
-            source: "three depths √(e² − eᵢ²) at their rounding level √(64ε)".into(),
-        }),
-        Evidence::new("affine coordinates of S₁ in (T₁; T₁P₁, T₁Q₁) and (R₁; R₁P₁, R₁Q₁) carried to frame 2").with("seed", case.seed),
-    ));
-    Ok(out)
+    let c = census(case.trials, case.seed, &case.c_factors, case.control_shift);
+    let level = distance_level();
+    Ok(vec![
+        line_result(b, case, &c, level),
+        procedure_result(b, case, &c, level),
+        tracing_result(b, case, &c, level),
+        five_result(b, case, &c, level),
+    ])
 }
 
-/// All permutations of 0‥n, in lexicographic order.
-fn permutations(n: usize) -> Vec<Vec<usize>> {
-    let mut out = Vec::new();
-    let mut p: Vec<usize> = (0..n).collect();
-    loop {
-        out.push(p.clone());
-        // next lexicographic permutation
-        let Some(i) = (1..n).rev().find(|&i| p[i - 1] < p[i]) else {
-            return out;
-        };
-        let j = (i..n).rev().find(|&j| p[j] > p[i - 1]).unwrap_or(i);
-        p.swap(i - 1, j);
-        p[i..].reverse();
+fn line_result(
+    b: &ResultBuilder,
+    case: &IdentityCensusCase,
+    c: &IdentityCensus,
+    level: f64,
+) -> ClaimResult {
+    b.claim(&case.line)
+        .printed("scenes", Value::count(case.trials))
+        .computed("largest distance of T₂ from its line, true assignment, every c (relative)", Value::below(c.true_max))
+        .computed("smallest distance of the best wrong assignment", Value::real(c.wrong_min))
+        .computed("scenes tested", Value::count(c.tested))
+        .tolerance(level_tolerance())
+        .power(Power::mutant(c.wrong_min > level && c.nonrigid_accepted == 0, "the best wrong assignment of every scene, and T₂ moved off the body by the control shift, are rejected by the same level"))
+        .method("seeded random bodies of five points in two frames; the paper's test for P, Q, R, T at c = each factor × the smallest admissible c, both signs of b and of frame 2's depths, the smaller distance kept")
+        .detail("controls accepted (moved T₂ on its line)", Value::count_of(c.nonrigid_accepted, c.tested))
+        .detail("c factors", Value::reals(&case.c_factors))
+        .detail("seed", Value::exact(case.seed))
+        .verdict(judge_line(c.true_max, c.wrong_min, c.nonrigid_accepted, level))
+}
+
+fn procedure_result(
+    b: &ResultBuilder,
+    case: &IdentityCensusCase,
+    c: &IdentityCensus,
+    level: f64,
+) -> ClaimResult {
+    let first = c.paper_first == c.tested;
+    b.claim(&case.procedure)
+        .suffix("dependence-on-c")
+        .printed("c chosen above its lower bounds, smaller distance over the two values of b", Value::count(case.c_factors.len()))
+        .computed("largest distance of T₂ from its line, true assignment, every c", Value::below(c.true_max))
+        .computed("wrong lines at larger c found again at the smallest c", Value::count_of(c.lines_found_again.0, c.lines_found_again.1))
+        .computed("wrong assignments whose smallest distance changed with c", Value::count_of(c.min_changed.0, c.min_changed.1))
+        .computed("true assignment first by the paper's distance", Value::count_of(c.paper_first, c.tested))
+        .computed("… by the epipolar check", Value::count_of(c.epi_first, c.tested))
+        .computed("both tests name the same first assignment", Value::count_of(c.same_first, c.tested))
+        .tolerance(level_tolerance())
+        .power(Power::mutant(c.wrong_min > level && c.nonrigid_accepted == 0, "wrong assignments and a point moved off the body are rejected at every c by the same level"))
+        .method("the line does not depend on c: c only picks a member of the two-view family (two solutions, the two values of b); the line is fixed by the three points and the equal scale of the views")
+        .detail("seed", Value::exact(case.seed))
+        .verdict(Verdict::holds(judge_line(c.true_max, c.wrong_min, c.nonrigid_accepted, level) == Verdict::Reproduced && first))
+}
+
+fn tracing_result(
+    b: &ResultBuilder,
+    case: &IdentityCensusCase,
+    c: &IdentityCensus,
+    level: f64,
+) -> ClaimResult {
+    let median = c
+        .runner_up
+        .get(c.runner_up.len() / 2)
+        .copied()
+        .unwrap_or(0.0);
+    let smallest = c.runner_up.first().copied().unwrap_or(0.0);
+    b.claim(&case.tracing)
+        .suffix("four-points")
+        .printed("four points over two frames identify the points", Value::count(24))
+        .computed("true correspondence first of 24 by the epipolar residual", Value::count_of(c.epi_first, c.tested))
+        .computed("… by the paper's distance", Value::count_of(c.paper_first, c.tested))
+        .computed("median residual of the runner-up", Value::real(median))
+        .tolerance(Tolerance::exact("ranking"))
+        .power(Power::mutant(smallest > level, "the runner-up (a wrong correspondence) has a residual above the rounding level in every scene"))
+        .method("every ordered choice of four frame-2 points ranked by the equal-scale epipolar residual and by the paper's distance")
+        .detail("smallest runner-up residual", Value::real(smallest))
+        .verdict(Verdict::holds(c.epi_first == c.tested && c.paper_first == c.tested))
+}
+
+fn five_result(
+    b: &ResultBuilder,
+    case: &IdentityCensusCase,
+    c: &IdentityCensus,
+    level: f64,
+) -> ClaimResult {
+    b.claim(&case.five_points)
+        .printed("assignments of five points", Value::count(120))
+        .computed("largest distance of S₂ from S₂ₐS₂_b, true assignment", Value::below(c.five_true_max))
+        .computed("true assignment first of 120", Value::count_of(c.five_first, c.tested))
+        .computed("smallest distance of the best wrong assignment", Value::real(c.five_wrong_min))
+        .tolerance(level_tolerance())
+        .power(Power::mutant(c.five_wrong_min > level && c.five_nonrigid_accepted == 0, "wrong assignments and S₂ moved off the body by the control shift are rejected by the same level"))
+        .method("affine coordinates of S₁ in (T₁; T₁P₁, T₁Q₁) and (R₁; R₁P₁, R₁Q₁) carried to frame 2: linear, no quadratic")
+        .detail("controls accepted", Value::count_of(c.five_nonrigid_accepted, c.tested))
+        .detail("seed", Value::exact(case.seed))
+        .verdict(Verdict::holds(judge_line(c.five_true_max, c.five_wrong_min, c.five_nonrigid_accepted, level) == Verdict::Reproduced && c.five_first == c.tested))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn line_judge_both_sides() {
+        let l = distance_level();
+        assert_eq!(judge_line(l / 10.0, 0.1, 0, l), Verdict::Reproduced);
+        assert_eq!(judge_line(l * 2.0, 0.1, 0, l), Verdict::Contradicted);
+        assert_eq!(judge_line(l / 10.0, l / 2.0, 0, l), Verdict::Contradicted);
+        assert_eq!(judge_line(l / 10.0, 0.1, 1, l), Verdict::Contradicted);
     }
 }

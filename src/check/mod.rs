@@ -59,52 +59,6 @@ impl<'a> ResultBuilder<'a> {
             evidence: Evidence::new(""),
         }
     }
-
-    /// A result in the old shape: prose for the paper's and the computed value, no power.
-    #[allow(clippy::too_many_arguments)]
-    pub(crate) fn result(
-        &self,
-        claim: &ClaimRef,
-        suffix: Option<&str>,
-        verdict: Verdict,
-        paper_value: String,
-        computed_value: String,
-        tolerance: Option<OldTolerance>,
-        evidence: Evidence,
-    ) -> ClaimResult {
-        let mut c = self
-            .claim(claim)
-            .printed("paper", Value::label(paper_value))
-            .computed("computed", Value::label(computed_value))
-            .evidence(evidence)
-            .power(Power::none("not yet stated"));
-        if let Some(s) = suffix {
-            c = c.suffix(s);
-        }
-        if let Some(t) = tolerance {
-            c = c.tolerance(Tolerance {
-                bound: None,
-                source: ToleranceSource::Exact,
-                how: format!("{} ({})", t.value, t.source),
-            });
-        }
-        c.verdict_unchecked(verdict)
-    }
-}
-
-/// The old tolerance shape: prose.
-pub(crate) struct OldTolerance {
-    pub value: String,
-    pub source: String,
-}
-
-impl OldTolerance {
-    pub fn exact(why: &str) -> Self {
-        OldTolerance {
-            value: "exact".into(),
-            source: why.into(),
-        }
-    }
 }
 
 /// One claim result under construction.
@@ -129,7 +83,6 @@ impl ClaimBuilder<'_> {
     }
 
     /// The paper section of this result, when it differs from the claim's and the case's.
-    #[allow(dead_code)]
     pub(crate) fn section(mut self, s: &str) -> Self {
         self.section = Some(s.into());
         self
@@ -160,7 +113,6 @@ impl ClaimBuilder<'_> {
     }
 
     /// The corrected form of an erratum.
-    #[allow(dead_code)]
     pub(crate) fn correction(mut self, c: impl Into<String>) -> Self {
         self.correction = Some(c.into());
         self

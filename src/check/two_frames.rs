@@ -1,104 +1,65 @@
 //! Claims of §5.1 and §5.4: the counterexample, the one-parameter family of two-view
-//! solutions, the fourth point's single piece of information, and curves.
+//! solutions, the fourth point's single piece of information, and curves. The computation
+//! is `derivations::two_frames` and `studies::two_frames`; here it is judged, with the
+//! controls (a mutated counterexample, a body moved off rigidity) as the power.
 
 use nalgebra::Vector3;
 
 use super::figure::{Figure, Layer, Plot, Shape, Style};
-use super::{ClaimResult, Evidence, OldTolerance, ResultBuilder, Verdict};
+use super::{ClaimResult, Power, ResultBuilder, Tolerance, ToleranceSource, Value, Verdict};
 use crate::cases::{Printed, TwoFramesCase};
 use crate::derivations::dof::identifiability;
-use crate::derivations::two_frames::{
-    align, counterexample, family, shape_difference, trefoil, view,
-};
+use crate::derivations::two_frames::{align, trefoil, view, Counterexample};
 use crate::error::Result;
-use crate::model::{random_rotation, rng, Body, Motion, Scene};
-use crate::numfmt::{below, sig, sig_list};
+use crate::model::{random_rotation, rng};
+use crate::studies::two_frames::{
+    curve_family, family_census, fit_counterexample, CounterexampleFit, FamilyCensus,
+};
 
-fn v3(v: &Vector3<f64>) -> String {
-    sig_list(&[v.x, v.y, v.z])
+/// The counterexample holds when a construction rebuilds Q′, R′ within their printed
+/// rounding, the triangles differ beyond the sides' rounding, and the images agree to
+/// floating point.
+pub(super) fn judge_counterexample(f: &CounterexampleFit) -> bool {
+    f.construction.is_some()
+        && f.rebuilt_ratio <= 1.0
+        && f.difference_ratio > 1.0
+        && f.mismatch_ratio <= 1.0
 }
 
-pub(super) fn check(b: &ResultBuilder, case: &TwoFramesCase) -> Result<Vec<ClaimResult>> {
-    let mut out = Vec::new();
+/// The family holds when every member reprojects within its bound, members differ beyond
+/// it, and the true body is a member in every scene.
+pub(super) fn judge_family(c: &FamilyCensus, trials: usize) -> bool {
+    c.scenes == trials
+        && c.worst_reprojection_ratio <= 1.0
+        && c.smallest_difference_ratio > 1.0
+        && c.truth_found == trials
+}
 
-    // 1. The printed counterexample.
-    let pts: Vec<Vector3<f64>> = case
-        .counterexample
-        .points
-        .iter()
-        .map(|p| Vector3::new(p[0].to_f64(), p[1].to_f64(), p[2].to_f64()))
-        .collect();
-    let half = case
-        .counterexample
-        .points
-        .iter()
-        .flatten()
-        .map(Printed::half_unit)
-        .fold(0.0, f64::max);
-    let c = counterexample([pts[0], pts[1], pts[2], pts[3], pts[4]]);
-    let (verdict, computed, ev) = match &c {
-        Some(c) => {
-            let dev = (c.rebuilt[0] - pts[3])
-                .norm()
-                .max((c.rebuilt[1] - pts[4]).norm());
-            let differ = c
-                .sides
-                .iter()
-                .zip(&c.sides_prime)
-                .map(|(a, b)| (a - b).abs())
-                .fold(0.0, f64::max);
-            let ok = dev <= half && differ > 10.0 * half && c.image_mismatch < 1e-12;
-            (
-                Verdict::holds(ok),
-                format!(
-                    "PQR has sides {} and PQ′R′ {}: not congruent; views u₁ = {}, u₂ = {} of PQR and u₁, u₂′ = {} of PQ′R′ \
-                     give congruent images (largest mismatch of a projected squared side {}); the construction \
-                     (axis n = {} through P, rotation {} rad) rebuilds Q′ and R′ within {} of the printed ones",
-                    sig_list(&c.sides),
-                    sig_list(&c.sides_prime),
-                    v3(&c.u1),
-                    v3(&c.u2),
-                    v3(&c.u2_prime),
-                    below(c.image_mismatch),
-                    v3(&c.axis),
-                    sig(c.angle),
-                    below(dev)
-                ),
-                Evidence::new(
-                    "u₁ along Q′ − Q; the axis n ⟂ u₁ through P, the view u₂ ⟂ n and the rotation about n solved \
-                     (minimum-norm Newton from a fixed grid) so that Q′, R′ lie on the rotated lines q₂′, r₂′; then \
-                     Q′, R′ rebuilt as q₁ ∩ q₂′ and r₁ ∩ r₂′, and the projected triangles compared",
-                )
-                .with("largest difference of corresponding sides", sig(differ))
-                .with("rebuilt Q′", v3(&c.rebuilt[0]))
-                .with("rebuilt R′", v3(&c.rebuilt[1]))
-                .with(
-                    "what is left free",
-                    "two conditions for three unknowns (n, u₂, the angle): the printed points fix the construction up to one parameter, so they are reproduced by any member",
-                ),
-            )
-        }
-        None => (
-            Verdict::Contradicted,
-            "no construction found that carries Q, R to the printed Q′, R′".into(),
-            Evidence::new("minimum-norm Newton from a fixed grid of starts"),
-        ),
+fn printed_points(case: &TwoFramesCase) -> ([Vector3<f64>; 5], [Vector3<f64>; 5]) {
+    let p = &case.counterexample.points;
+    let v =
+        |f: &dyn Fn(&Printed) -> f64, i: usize| Vector3::new(f(&p[i][0]), f(&p[i][1]), f(&p[i][2]));
+    (
+        std::array::from_fn(|i| v(&Printed::to_f64, i)),
+        std::array::from_fn(|i| v(&Printed::half_unit, i)),
+    )
+}
+
+fn figure(b: &ResultBuilder, case: &TwoFramesCase, pts: &[Vector3<f64>; 5], c: &Counterexample) {
+    let tri = |q: Vector3<f64>, r: Vector3<f64>| [pts[0], q, r];
+    let first = tri(pts[1], pts[2]);
+    let second = tri(pts[3], pts[4]);
+    let v1 = (view(&first, &c.u1), view(&second, &c.u1));
+    let v2 = view(&first, &c.u2);
+    let v2p = align(&v2, &view(&second, &c.u2_prime));
+    let layer = |name: &str, style: Style, pts: Vec<[f64; 2]>, primed: bool| {
+        Layer::new(name, Shape::Polygon, style, pts).labelled(if primed {
+            &["P", "Q′", "R′"]
+        } else {
+            &["P", "Q", "R"]
+        })
     };
-    if let Some(c) = &c {
-        let tri = |q: Vector3<f64>, r: Vector3<f64>| [pts[0], q, r];
-        let first = tri(pts[1], pts[2]);
-        let second = tri(pts[3], pts[4]);
-        let v1 = (view(&first, &c.u1), view(&second, &c.u1));
-        let v2 = view(&first, &c.u2);
-        let v2p = align(&v2, &view(&second, &c.u2_prime));
-        let layer = |name: &str, style: Style, pts: Vec<[f64; 2]>, primed: bool| {
-            Layer::new(name, Shape::Polygon, style, pts).labelled(if primed {
-                &["P", "Q′", "R′"]
-            } else {
-                &["P", "Q", "R"]
-            })
-        };
-        b.figure(Figure {
+    b.figure(Figure {
             id: "fig-two-frames".into(),
             claim: case.counterexample.claim.claim.clone(),
             title: "§5.1: two triangles, the same two views".into(),
@@ -117,193 +78,209 @@ pub(super) fn check(b: &ResultBuilder, case: &TwoFramesCase) -> Result<Vec<Claim
                 ),
             ],
         });
+}
+
+fn counterexample_result(b: &ResultBuilder, case: &TwoFramesCase) -> ClaimResult {
+    let (pts, half) = printed_points(case);
+    let fit = fit_counterexample(pts, half);
+    if let Some(c) = &fit.construction {
+        figure(b, case, &pts, c);
     }
+    // the mutant: Q′'s second coordinate moved by the mutant's half units
+    let mut moved = pts;
+    moved[3].y += case.mutant_half_units * half[3].y;
+    let rejected = !judge_counterexample(&fit_counterexample(moved, half));
+    let mut r = b
+        .claim(&case.counterexample.claim)
+        .printed("points", Value::label(case.counterexample.names.join(", ")))
+        .computed("construction found", Value::flag(fit.construction.is_some()))
+        .computed("rebuilt Q′, R′ off the printed ones (half units, largest)", Value::real(fit.rebuilt_ratio))
+        .computed("smallest side difference over the sides' rounding", Value::real(fit.difference_ratio))
+        .computed("image mismatch over 64ε", Value::real(fit.mismatch_ratio))
+        .tolerance(Tolerance::bound(1.0, ToleranceSource::PrintedPrecision, "ratios to the printed half units (rebuilt points), to the triangle-inequality bound of the sides, and to 64ε (images)"))
+        .power(Power::mutant(rejected, "Q′ with its second coordinate moved by the mutant's half units: the same construction and test reject it"))
+        .method("u₁ along Q′ − Q; the axis n ⟂ u₁ through P, the view u₂ ⟂ n and the rotation about n solved (minimum-norm Newton from a fixed grid) so that Q′, R′ lie on the rotated lines; Q′, R′ rebuilt as q₁ ∩ q₂′ and r₁ ∩ r₂′, the projected triangles compared; two conditions for three unknowns, so any member of the construction reproduces the printed points");
+    if let Some(c) = &fit.construction {
+        r = r
+            .detail("sides of PQR", Value::reals(&c.sides))
+            .detail("sides of PQ′R′", Value::reals(&c.sides_prime))
+            .detail("u₂", Value::reals(&[c.u2.x, c.u2.y, c.u2.z]))
+            .detail(
+                "u₂′",
+                Value::reals(&[c.u2_prime.x, c.u2_prime.y, c.u2_prime.z]),
+            )
+            .detail("axis n", Value::reals(&[c.axis.x, c.axis.y, c.axis.z]))
+            .detail("rotation (rad)", Value::real(c.angle));
+    }
+    r.verdict(Verdict::holds(judge_counterexample(&fit)))
+}
+
+pub(super) fn check(b: &ResultBuilder, case: &TwoFramesCase) -> Result<Vec<ClaimResult>> {
+    let mut out = vec![counterexample_result(b, case)];
+    let fam = family_census(
+        case.points,
+        case.trials,
+        case.seed,
+        &case.betas,
+        case.control_shift,
+    );
+    let deficiencies: Vec<usize> = (3..=case.points.max(4))
+        .map(|p| identifiability(p, 2, case.seed).map(|r| r.deficiency))
+        .collect::<Result<_>>()?;
+    let ok = judge_family(&fam, case.trials);
     out.push(
-        b.result(
-            &case.counterexample.claim,
-            None,
-            verdict,
-            case.counterexample
-                .names
-                .iter()
-                .zip(&case.counterexample.points)
-                .map(|(n, p)| format!("{n}({}, {}, {})", p[0], p[1], p[2]))
-                .collect::<Vec<_>>()
-                .join(", "),
-            computed,
-            Some(OldTolerance {
-                value: format!("±{}", sig(half)),
-                source: "half a unit in the last printed decimal of the coordinates".into(),
-            }),
-            ev,
-        ),
+        fam_values(
+            b.claim(&case.construction)
+                .printed("points per scene", Value::count(case.points)),
+            &fam,
+            case,
+        )
+        .verdict(Verdict::holds(ok)),
     );
-
-    // 2. The family at random scenes, and the construction it is.
-    let betas = [0.35, 0.9, 1.6, 2.4];
-    let mut worst_reprojection: f64 = 0.0;
-    let mut smallest_difference = f64::INFINITY;
-    let mut truth_found = 0;
-    for t in 0..case.trials {
-        let scene = Scene::random(case.points, 2, case.seed.wrapping_add(t as u64));
-        let tr = scene.tracks();
-        let Some(members) = family(&tr.frames[0], &tr.frames[1], &betas) else {
-            continue;
-        };
-        worst_reprojection = members
-            .iter()
-            .map(|m| m.reprojection)
-            .fold(worst_reprojection, f64::max);
-        for i in 0..members.len() {
-            for j in i + 1..members.len() {
-                smallest_difference = smallest_difference
-                    .min(shape_difference(&members[i].points, &members[j].points).0);
-            }
-        }
-        let beta = scene.motions[1].rotation.matrix()[(2, 2)]
-            .clamp(-1.0, 1.0)
-            .acos();
-        if let Some(m) = family(&tr.frames[0], &tr.frames[1], &[beta]) {
-            if shape_difference(&m[0].points, &scene.body.points).0 < 1e-9 {
-                truth_found += 1;
-            }
-        }
-    }
-    let deficiencies: Vec<(usize, usize)> = (3..=case.points.max(4))
-        .filter_map(|p| {
-            identifiability(p, 2, case.seed)
-                .ok()
-                .map(|r| (p, r.deficiency))
-        })
-        .collect();
-    let ok = worst_reprojection < 1e-9 && smallest_difference > 1e-6 && truth_found == case.trials;
-    let ev = Evidence::new(
-        "seeded random bodies in two frames: the affine epipolar constraint with equal scale gives rotated \
-         image coordinates (x′, y′) with y′₁ = y′₂, and for each angle β the depths (x₂′ − cos β x₁′)/sin β; \
-         each member is reprojected and compared with the others",
-    )
-    .with("scenes, points (seed)", format!("{}, {} ({})", case.trials, case.points, case.seed))
-    .with("angles β of the members", sig_list(&betas))
-    .with("largest reprojection error of a member (relative)", below(worst_reprojection))
-    .with("smallest shape difference between two members (largest distance change / diameter)", sig(smallest_difference))
-    .with("scenes whose true body is the member at the true angle", truth_found)
-    .with(
-        "Jacobian deficiency at two frames, p = 3 …",
-        deficiencies.iter().map(|(p, d)| format!("p = {p}: {d}")).collect::<Vec<_>>().join(", "),
+    out.push(
+        fam_values(
+            b.claim(&case.family)
+                .suffix("family")
+                .printed("points per scene", Value::count(case.points)),
+            &fam,
+            case,
+        )
+        .computed(
+            "Jacobian deficiency at two frames, p = 3 …",
+            Value::reals(&deficiencies.iter().map(|d| *d as f64).collect::<Vec<_>>()),
+        )
+        .verdict(Verdict::holds(ok && deficiencies.iter().all(|d| *d == 1))),
     );
-    out.push(b.result(
-        &case.construction,
-        None,
-        Verdict::holds(ok),
-        "rotating the second view about the axis n orthogonal to both viewing directions gives other bodies with the same two images".into(),
-        format!(
-            "every member of the one-parameter family reprojects onto both images (error {}), members differ in shape \
-             (at least {} of the diameter), the true body is one of them in {} of {} scenes; the family's dimension, 1, \
-             is the Jacobian deficiency at two frames for every p tried",
-            below(worst_reprojection),
-            sig(smallest_difference),
-            truth_found,
-            case.trials
-        ),
-        Some(OldTolerance::exact("reprojection at rounding level; shapes compared by pairwise distances")),
-        ev.clone(),
-    ));
-    out.push(b.result(
-        &case.family,
-        Some("family"),
-        Verdict::holds(ok && deficiencies.iter().all(|d| d.1 == 1)),
-        "no increase in the number of points recovers structure and motion from two frames".into(),
-        format!(
-            "for {} points a one-parameter family of non-congruent bodies reproduces both frames exactly; deficiency 1 for p = 3 … {}",
-            case.points,
-            case.points.max(4)
-        ),
-        Some(OldTolerance::exact("exact rank; reprojection at rounding level")),
-        ev,
-    ));
+    out.push(fourth_point_result(b, case)?);
+    out.push(curves_result(b, case));
+    Ok(out)
+}
 
-    // 3. The fourth point's single piece of information.
+fn fam_values<'b>(
+    c: super::ClaimBuilder<'b>,
+    fam: &FamilyCensus,
+    case: &TwoFramesCase,
+) -> super::ClaimBuilder<'b> {
+    c.computed("scenes", Value::count_of(fam.scenes, case.trials))
+        .computed("largest reprojection error over its bound", Value::real(fam.worst_reprojection_ratio))
+        .computed("smallest shape difference between members over its bound", Value::real(fam.smallest_difference_ratio))
+        .computed("scenes whose true body is the member at the true angle", Value::count_of(fam.truth_found, case.trials))
+        .tolerance(Tolerance::bound(1.0, ToleranceSource::ErrorBound, "ratios to the Davis–Kahan bound (1 + 2/sin β)·64ε·λ_max/(λ₂ − λ₁) of the epipolar vector"))
+        .power(Power::mutant(fam.nonrigid_accepted == 0, "one point of frame 2 moved off the body by the control shift: no member reprojects within the bound"))
+        .detail("largest reprojection error (relative)", Value::below(fam.worst_reprojection))
+        .detail("smallest shape difference (relative)", Value::real(fam.smallest_difference))
+        .detail("angles β", Value::reals(&case.betas))
+        .detail("controls accepted", Value::count_of(fam.nonrigid_accepted, fam.scenes))
+        .detail("seed", Value::exact(case.seed))
+        .method("seeded random bodies in two frames: the affine epipolar constraint with equal scale gives rotated image coordinates with equal y′, and for each angle β the depths (x₂′ − cos β x₁′)/sin β; each member reprojected and compared with the others")
+}
+
+fn fourth_point_result(b: &ResultBuilder, case: &TwoFramesCase) -> Result<ClaimResult> {
     let r3 = identifiability(3, 2, case.seed)?;
     let r4 = identifiability(4, 2, case.seed)?;
-    let redundant = 4 - (r4.exact_rank - r3.exact_rank);
-    out.push(b.result(
-        &case.fourth_point,
-        None,
-        Verdict::holds(redundant == 1 && r4.deficiency == 1),
-        "the fourth point carries only one piece of information in the second image instead of two".into(),
-        format!(
-            "exact Jacobian rank at two frames: {} for three points, {} for four; the fourth point's four image \
-             coordinates raise the rank by {}: {} of them is implied by the others (its epipolar line), and the \
-             family stays one-dimensional (deficiency {})",
-            r3.exact_rank,
-            r4.exact_rank,
-            r4.exact_rank - r3.exact_rank,
-            redundant,
-            r4.deficiency
-        ),
-        Some(OldTolerance::exact("exact rank over ℚ at a rational scene")),
-        Evidence::new("exact Jacobian ranks (§2.1 parametrisation) at seeded rational scenes of three and four points")
-            .with("seed", case.seed),
-    ));
+    let gain = r4.exact_rank - r3.exact_rank;
+    Ok(b.claim(&case.fourth_point)
+        .printed("pieces of information of the fourth point in frame 2", Value::count(1))
+        .computed("exact Jacobian rank, three points", Value::count(r3.exact_rank))
+        .computed("exact Jacobian rank, four points", Value::count(r4.exact_rank))
+        .computed("rank added by the fourth point's four coordinates", Value::count(gain))
+        .computed("deficiency with four points", Value::count(r4.deficiency))
+        .tolerance(Tolerance::exact("exact rank over ℚ at a rational scene"))
+        .power(Power::exact_value("integer ranks: only a gain of 3 (one coordinate implied, its epipolar line) with deficiency 1 passes"))
+        .method("exact Jacobian ranks (§2.1 parametrisation) at seeded rational scenes of three and four points")
+        .detail("seed", Value::exact(case.seed))
+        .verdict(Verdict::holds(gain == 3 && r4.deficiency == 1)))
+}
 
-    // 4. Curves.
-    let curve = trefoil(case.curve_samples);
-    let mut g = rng(case.seed);
-    let second = random_rotation(&mut g);
-    let scene = Scene {
-        body: Body::new(curve),
-        motions: vec![
-            Motion::identity(),
-            Motion {
-                rotation: second,
-                translation: nalgebra::Vector2::zeros(),
-            },
-        ],
+fn curves_result(b: &ResultBuilder, case: &TwoFramesCase) -> ClaimResult {
+    let second = random_rotation(&mut rng(case.seed));
+    let Some(f) = curve_family(trefoil(case.curve_samples), second) else {
+        return b
+            .claim(&case.curves)
+            .printed("samples", Value::count(case.curve_samples))
+            .computed("equal-scale epipolar geometry", Value::flag(false))
+            .power(Power::none("no family: nothing to control"))
+            .verdict(Verdict::Contradicted);
     };
-    let tr = scene.tracks();
-    let beta = second.matrix()[(2, 2)].clamp(-1.0, 1.0).acos();
-    let others = [(beta * 0.5).max(0.05), (beta + 0.6).min(3.0)];
-    let members = family(&tr.frames[0], &tr.frames[1], &[beta, others[0], others[1]]);
-    let (verdict, computed, ev) = match members {
-        Some(m) => {
-            let truth = shape_difference(&m[0].points, &scene.body.points).0;
-            let diffs: Vec<(f64, f64)> = m[1..]
-                .iter()
-                .map(|x| shape_difference(&scene.body.points, &x.points))
-                .collect();
-            let worst = m.iter().map(|x| x.reprojection).fold(0.0, f64::max);
-            let ok = worst < 1e-9 && truth < 1e-9 && diffs.iter().all(|d| d.0 > 1e-3);
-            (
-                Verdict::holds(ok),
-                format!(
-                    "a trefoil of {} points in two views: the members at β = {} reproduce both projections (error {}) \
-                     and differ from the true curve by {} of its diameter in the largest distance change ({} RMS after \
-                     the best rigid alignment)",
-                    case.curve_samples,
-                    sig_list(&others),
-                    below(worst),
-                    sig_list(&diffs.iter().map(|d| d.0).collect::<Vec<_>>()),
-                    sig_list(&diffs.iter().map(|d| d.1).collect::<Vec<_>>())
-                ),
-                Evidence::new("the two-view family applied to a sampled smooth closed curve (all correspondences known)")
-                    .with("true angle β", sig(beta))
-                    .with("the true curve is the member at β (shape difference)", below(truth)),
-            )
+    let differ = f.differences.iter().all(|d| d.0 > f.difference_bound);
+    let ok = f.worst_reprojection.0 <= f.worst_reprojection.1 && f.truth.0 <= f.truth.1 && differ;
+    b.claim(&case.curves)
+        .printed("samples of a trefoil", Value::count(case.curve_samples))
+        .computed("largest reprojection error, and its bound", Value::reals(&[f.worst_reprojection.0, f.worst_reprojection.1]))
+        .computed("member at the true angle vs the curve, and the bound", Value::reals(&[f.truth.0, f.truth.1]))
+        .computed("other members vs the curve (largest distance change)", Value::reals(&f.differences.iter().map(|d| d.0).collect::<Vec<_>>()))
+        .tolerance(Tolerance::bound(f.difference_bound, ToleranceSource::ErrorBound, "the Davis–Kahan bound of the family's members"))
+        .power(Power::mutant(differ, "the other members, put through the same shape test against the curve, are rejected as the curve"))
+        .method("the two-view family applied to a sampled smooth closed curve (all correspondences known)")
+        .detail("true angle β", Value::real(f.beta))
+        .detail("other angles", Value::reals(&f.others))
+        .detail("RMS after the best rigid alignment", Value::reals(&f.differences.iter().map(|d| d.1).collect::<Vec<_>>()))
+        .verdict(Verdict::holds(ok))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn fit(rebuilt: f64, diff: f64, mismatch: f64, found: bool) -> CounterexampleFit {
+        let p = [
+            Vector3::zeros(),
+            Vector3::x(),
+            Vector3::y(),
+            Vector3::z(),
+            Vector3::x(),
+        ];
+        let c = crate::derivations::two_frames::counterexample(p);
+        CounterexampleFit {
+            construction: if found { c } else { None },
+            rebuilt_ratio: rebuilt,
+            difference_ratio: diff,
+            mismatch_ratio: mismatch,
         }
-        None => (
-            Verdict::Contradicted,
-            "the curve's two views have no equal-scale epipolar geometry".into(),
-            Evidence::new("the two-view family"),
-        ),
-    };
-    out.push(b.result(
-        &case.curves,
-        None,
-        verdict,
-        "infinitely many 3-D curves fit two projections".into(),
-        computed,
-        Some(OldTolerance::exact("reprojection at rounding level")),
-        ev,
-    ));
-    Ok(out)
+    }
+
+    #[test]
+    fn counterexample_judge_both_sides() {
+        let ok = fit(0.5, 3.0, 0.5, true);
+        if ok.construction.is_some() {
+            assert!(judge_counterexample(&ok));
+            assert!(!judge_counterexample(&fit(1.5, 3.0, 0.5, true)));
+            assert!(!judge_counterexample(&fit(0.5, 0.9, 0.5, true)));
+            assert!(!judge_counterexample(&fit(0.5, 3.0, 2.0, true)));
+        }
+        assert!(!judge_counterexample(&fit(0.5, 3.0, 0.5, false)));
+    }
+
+    #[test]
+    fn family_judge_both_sides() {
+        let good = FamilyCensus {
+            scenes: 3,
+            worst_reprojection_ratio: 0.1,
+            smallest_difference_ratio: 1e6,
+            truth_found: 3,
+            ..Default::default()
+        };
+        assert!(judge_family(&good, 3));
+        assert!(!judge_family(
+            &FamilyCensus {
+                worst_reprojection_ratio: 2.0,
+                ..good.clone()
+            },
+            3
+        ));
+        assert!(!judge_family(
+            &FamilyCensus {
+                smallest_difference_ratio: 0.5,
+                ..good.clone()
+            },
+            3
+        ));
+        assert!(!judge_family(
+            &FamilyCensus {
+                truth_found: 2,
+                ..good
+            },
+            3
+        ));
+    }
 }

@@ -5,6 +5,11 @@
 //! functions p, q, r of the projections. Substituted into F₁:
 //! f_{b²} b⁴ + b² (c² f_cb + f_b) + (c² f_c + c⁴ f_{c²} + f_Cst) = 0.
 
+use std::collections::BTreeMap;
+
+use num_rational::BigRational;
+use num_traits::{Signed, Zero};
+
 use crate::algebra::{Poly, RatFn};
 use crate::derivations::twofold::frame_equation;
 
@@ -166,11 +171,114 @@ pub fn quadratic_formula_solves(sigma: i64, kappa: i64) -> bool {
     })
 }
 
+/// Δ_b at exact data: a quadratic D₀ + D₁C + D₂C² in C = c², from the symbolic elimination
+/// evaluated over ℚ, with the ratio f_cb / f_{b²} of the eliminated equation.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ExactDeltaB {
+    /// (D₀, D₁, D₂).
+    pub coefficients: [BigRational; 3],
+    /// f_cb / f_{b²}; `None` when f_{b²} = 0.
+    pub f_cb_over_f_b2: Option<BigRational>,
+}
+
+impl ExactDeltaB {
+    /// Δ_b at C = c².
+    pub fn eval(&self, c2: &BigRational) -> BigRational {
+        let [d0, d1, d2] = &self.coefficients;
+        d0 + c2 * (d1 + c2 * d2)
+    }
+
+    /// The sign of Δ_b just above C = c² (on (C, C + δ) for every small δ > 0): the first
+    /// nonzero of Δ_b(C), Δ_b′(C), D₂; 0 when Δ_b vanishes identically.
+    pub fn sign_above(&self, c2: &BigRational) -> i8 {
+        let [_, d1, d2] = &self.coefficients;
+        let two = BigRational::from_integer(2.into());
+        let slope = d1 + &two * c2 * d2;
+        [self.eval(c2), slope, d2.clone()]
+            .iter()
+            .find(|x| !x.is_zero())
+            .map_or(0, |x| if x.is_positive() { 1 } else { -1 })
+    }
+
+    /// Whether Δ_b < 0 for every C > `c2`: negative just above and D₂ ≤ 0 (a quadratic
+    /// negative just above C with a non-positive leading coefficient stays negative, since
+    /// its derivative there is then negative too).
+    pub fn negative_beyond(&self, c2: &BigRational) -> bool {
+        self.sign_above(c2) < 0 && !self.coefficients[2].is_positive()
+    }
+}
+
+/// The frame coefficients the symbolic elimination is written in, from the squared
+/// projections (a², b², c²) of one frame: faca = 2(−a² + b² + c²), facb, facc likewise,
+/// facCst = a⁴ + b⁴ + c⁴ − 2a²b² − 2a²c² − 2b²c².
+fn frame_symbols(k: u32, [a, b, c]: &[BigRational; 3], out: &mut BTreeMap<String, BigRational>) {
+    let two = BigRational::from_integer(2.into());
+    out.insert(format!("faca{k}"), &two * (b + c - a));
+    out.insert(format!("facb{k}"), &two * (a + c - b));
+    out.insert(format!("facc{k}"), &two * (a + b - c));
+    let cst = a * a + b * b + c * c - &two * (a * b + a * c + b * c);
+    out.insert(format!("facCst{k}"), cst);
+}
+
+/// Δ_b of the appendix's quadratic over ℚ, for the squared projections of PQ, QR, RP in
+/// frames 1 and 2; `e` is [`eliminate_symbolic`]. `None` where the elimination divides by
+/// zero (equal coefficients of a² in the two frames).
+pub fn exact_delta_b(
+    e: &Eliminated,
+    sq1: &[BigRational; 3],
+    sq2: &[BigRational; 3],
+) -> Option<ExactDeltaB> {
+    let mut vals = BTreeMap::new();
+    frame_symbols(1, sq1, &mut vals);
+    frame_symbols(2, sq2, &mut vals);
+    let at = |f: &RatFn| f.eval(&vals);
+    let (fb2, fcb, fb, fc, fc2, fcst) = (
+        at(&e.f_b2)?,
+        at(&e.f_cb)?,
+        at(&e.f_b)?,
+        at(&e.f_c)?,
+        at(&e.f_c2)?,
+        at(&e.f_cst)?,
+    );
+    let four = BigRational::from_integer(4.into());
+    let two = BigRational::from_integer(2.into());
+    // (C f_cb + f_b)² − 4 f_b² (C f_c + C² f_c² + f_Cst)
+    let coefficients = [
+        &fb * &fb - &four * &fb2 * &fcst,
+        &two * &fcb * &fb - &four * &fb2 * &fc,
+        &fcb * &fcb - &four * &fb2 * &fc2,
+    ];
+    let f_cb_over_f_b2 = (!fb2.is_zero()).then(|| &fcb / &fb2);
+    Some(ExactDeltaB {
+        coefficients,
+        f_cb_over_f_b2,
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
-    use num_rational::BigRational;
-    use std::collections::BTreeMap;
+
+    #[test]
+    fn exact_delta_b_matches_the_float_quadratic() {
+        // projections (4, 8, 4) and (4, 5, 1) of the scene below; at c² = 5 the true b² = 9
+        // is a root, so Δ_b ≥ 0 there
+        let q = |v: [i64; 3]| v.map(|x| BigRational::from_integer(x.into()));
+        let d = exact_delta_b(&eliminate_symbolic(), &q([4, 8, 4]), &q([4, 5, 1])).unwrap();
+        let at5 = d.eval(&BigRational::from_integer(5.into()));
+        assert!(!at5.is_negative());
+        assert!(d.f_cb_over_f_b2.is_some());
+        let flat = ExactDeltaB {
+            coefficients: [
+                BigRational::zero(),
+                -BigRational::from_integer(1.into()),
+                BigRational::zero(),
+            ],
+            f_cb_over_f_b2: None,
+        };
+        assert_eq!(flat.sign_above(&BigRational::zero()), -1);
+        assert!(flat.negative_beyond(&BigRational::zero()));
+    }
 
     #[test]
     fn an_exact_scene_satisfies_the_eliminated_equation() {

@@ -48,8 +48,8 @@ fn depths(sq: [f64; 3], proj: [f64; 3], sign: f64) -> Option<[f64; 3]> {
     let r: Vec<f64> = (0..3)
         .map(|e| {
             let d = sq[e] - proj[e];
-            // rounding may leave −ε for an edge parallel to the image
-            (d >= -1e-9 * sq[e]).then(|| d.max(0.0).sqrt())
+            // rounding may leave −64ε(e² + eᵢ²) for an edge parallel to the image
+            (d >= 0.0 || crate::algebra::negligible(d, sq[e] + proj[e])).then(|| d.max(0.0).sqrt())
         })
         .collect::<Option<_>>()?;
     let patterns = [[1.0, 1.0, -1.0], [1.0, -1.0, 1.0], [-1.0, 1.0, 1.0]];
@@ -69,13 +69,10 @@ fn squared(f: &[Vector2<f64>; 4]) -> [f64; 3] {
     ]
 }
 
-/// b² from the Appendix A quadratic at a given c² (both roots when real) and the a² that go
-/// with them: F₁ − F₂ gives a² = p b² + q c² + r; substituted into F₁, A b⁴ + B b² + C = 0.
-pub fn b_squared(
-    f1: &[Vector2<f64>; 4],
-    f2: &[Vector2<f64>; 4],
-    c2: f64,
-) -> Option<[(f64, f64); 2]> {
+/// The Appendix A quadratic at c²: F₁ − F₂ gives a² = p b² + q c² + r; substituted into
+/// F₁, A b⁴ + B b² + C = 0. Returns (A, B, C, p, s) with a² = p b² + s; `None` when F₁ − F₂
+/// has no a² term.
+fn quadratic_at(f1: &[Vector2<f64>; 4], f2: &[Vector2<f64>; 4], c2: f64) -> Option<[f64; 5]> {
     let (g1, g2) = (
         FrameCoefficients::new(squared(f1)),
         FrameCoefficients::new(squared(f2)),
@@ -88,6 +85,23 @@ pub fn b_squared(
     let a = p * p - 2.0 * p + 1.0;
     let b = 2.0 * p * s - 2.0 * s - 2.0 * c2 - 2.0 * p * c2 + 2.0 * g1.alpha * p + 2.0 * g1.beta;
     let c = s * s + c2 * c2 - 2.0 * s * c2 + g1.k + 2.0 * g1.alpha * s + 2.0 * g1.gamma * c2;
+    Some([a, b, c, p, s])
+}
+
+/// Δ_b = B² − 4AC of the Appendix A quadratic at c², in floating point (NaN when the
+/// quadratic does not exist).
+pub fn float_delta_b(f1: &[Vector2<f64>; 4], f2: &[Vector2<f64>; 4], c2: f64) -> f64 {
+    quadratic_at(f1, f2, c2).map_or(f64::NAN, |[a, b, c, _, _]| b * b - 4.0 * a * c)
+}
+
+/// b² from the Appendix A quadratic at a given c² (both roots when real) and the a² that go
+/// with them: F₁ − F₂ gives a² = p b² + q c² + r; substituted into F₁, A b⁴ + B b² + C = 0.
+pub fn b_squared(
+    f1: &[Vector2<f64>; 4],
+    f2: &[Vector2<f64>; 4],
+    c2: f64,
+) -> Option<[(f64, f64); 2]> {
+    let [a, b, c, p, s] = quadratic_at(f1, f2, c2)?;
     let disc = b * b - 4.0 * a * c;
     if disc < 0.0 || a == 0.0 {
         return None;
@@ -146,13 +160,7 @@ pub fn paper_tests(f1: &[Vector2<f64>; 4], f2: &[Vector2<f64>; 4], c: f64) -> Ve
             );
             let to2 = |x: Vector3<f64>| rot * (x - x1[0]) + x2[0];
             let (ta2, tb2) = (to2(ta), to2(tb));
-            let dir = Vector2::new(tb2.x - ta2.x, tb2.y - ta2.y);
-            let off = f2[3] - Vector2::new(ta2.x, ta2.y);
-            let distance = if dir.norm() == 0.0 {
-                off.norm()
-            } else {
-                (dir.x * off.y - dir.y * off.x).abs() / dir.norm()
-            };
+            let distance = crate::model::point_line_distance(f2[3], ta2.xy(), tb2.xy());
             out.push(PaperTest {
                 c,
                 sign_b: if k == 0 { -1.0 } else { 1.0 },

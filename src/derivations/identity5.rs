@@ -35,11 +35,5 @@ pub fn line_distance(f1: &[Vector2<f64>; 5], f2: &[Vector2<f64>; 5]) -> Option<f
     let b = affine(r1, p1 - r1, q1 - r1, s1)?;
     let sa = t2 + a.x * (p2 - t2) + a.y * (q2 - t2);
     let sb = r2 + b.x * (p2 - r2) + b.y * (q2 - r2);
-    let dir = sb - sa;
-    let off = s2 - sa;
-    Some(if dir.norm() == 0.0 {
-        off.norm()
-    } else {
-        (dir.x * off.y - dir.y * off.x).abs() / dir.norm()
-    })
+    Some(crate::model::point_line_distance(s2, sa, sb))
 }

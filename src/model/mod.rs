@@ -9,6 +9,9 @@ use rand_chacha::ChaCha8Rng;
 
 use crate::error::{Error, Result};
 
+mod image;
+pub use image::point_line_distance;
+
 /// The seeded, portable generator used everywhere (ChaCha8: same stream on every platform).
 pub fn rng(seed: u64) -> ChaCha8Rng {
     ChaCha8Rng::seed_from_u64(seed)

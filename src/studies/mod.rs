@@ -1,14 +1,19 @@
 //! Experiments: everything seeded and repeated (Monte Carlo, censuses, rounding propagation,
-//! witness searches). Studies return numbers and exact values, never text.
+//! witness searches, the reconstruction of the author's program). Studies return numbers and
+//! exact values, never text.
 
 pub mod audit;
+pub mod author_program;
 pub mod census;
 pub mod ex2;
 pub mod ex4;
 pub mod family_samples;
+pub mod identity_census;
 pub mod noise;
 pub mod noise_request;
+pub mod panels;
 pub mod points;
 pub mod printed_matrix;
 pub mod rounding;
+pub mod two_frames;
 pub mod twofold;

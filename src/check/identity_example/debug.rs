@@ -1,0 +1,537 @@
+//! The debug printouts of §5.2's example judged number by number, the error lines, and the
+//! two "correct" attempts.
+
+use super::{
+    block_assignments, num_g, ClaimResult, Power, ResultBuilder, Tolerance, ToleranceSource, Value,
+    Verdict,
+};
+use crate::cases::{DebugAttempt, IdentityExampleCase, Printed};
+use crate::studies::author_program::{
+    delta_at_bound, recompute, DeltaAtBound, Example, Recomputed,
+};
+use crate::studies::identity_census::{both_signs_generic, rank_example};
+
+/// One printed block with what the study made of it.
+pub(super) struct Block<'a> {
+    pub attempt: &'a DebugAttempt,
+    /// The assignments whose re-centred frame 2 matches the printed T₂, Q₂, P₂.
+    pub matches: Vec<[usize; 4]>,
+    pub recomputed: Option<Recomputed>,
+}
+
+impl Block<'_> {
+    /// The block's assignment, when exactly one matches.
+    pub fn assignment(&self) -> Option<[usize; 4]> {
+        (self.matches.len() == 1).then(|| self.matches[0])
+    }
+}
+
+pub(super) fn blocks<'a>(
+    case: &'a IdentityExampleCase,
+    ex: &Example,
+    frame1: &[usize; 4],
+) -> Vec<Block<'a>> {
+    let d = case.debug.significant_digits;
+    case.debug
+        .attempts
+        .iter()
+        .map(|a| {
+            let matches = block_assignments(ex, a, d);
+            let recomputed = (matches.len() == 1).then(|| {
+                let pb = [a.pb[0].to_f64(), a.pb[1].to_f64()];
+                recompute(
+                    ex,
+                    frame1,
+                    &matches[0],
+                    num_g(&a.d, d),
+                    f64::from(a.version),
+                    pb,
+                )
+            });
+            Block {
+                attempt: a,
+                matches,
+                recomputed: recomputed.flatten(),
+            }
+        })
+        .collect()
+}
+
+/// One printed number against its recomputation.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(super) struct NumberCheck {
+    pub agree: bool,
+    /// The printed magnitude lies inside the propagated bound: its digits (even its sign) are
+    /// not determined by the rounded inputs, so only "zero to rounding" is checked.
+    pub rounding_level: bool,
+    /// The printed number moved by the mutant's half units either way is rejected.
+    pub mutant_rejected: bool,
+    /// The acceptance half-width in the printed number's half units.
+    pub width: f64,
+}
+
+/// Accept when |computed − printed| ≤ bound + float + half. The mutant moves the printed
+/// value by `k` half units (for a printed exact zero, the half unit a number of size one has
+/// at the printed significant digits, `zero_half`).
+pub(super) fn judge_number(
+    printed: f64,
+    half: f64,
+    computed: f64,
+    bound: f64,
+    float: f64,
+    k: f64,
+    zero_half: f64,
+) -> NumberCheck {
+    let tol = bound + float + half;
+    let h = if half > 0.0 { half } else { zero_half };
+    let accepts = |x: f64| (computed - x).abs() <= tol;
+    NumberCheck {
+        agree: accepts(printed),
+        rounding_level: printed != 0.0 && printed.abs() <= bound + float,
+        mutant_rejected: !accepts(printed + k * h) && !accepts(printed - k * h),
+        width: tol / h,
+    }
+}
+
+fn printed_twelve(a: &DebugAttempt) -> [&Printed; 12] {
+    [
+        &a.b2, &a.pak[0], &a.pak[1], &a.pak[2], &a.pbk[0], &a.pbk[1], &a.pbk[2], &a.pa[0],
+        &a.pa[1], &a.pb[0], &a.pb[1], &a.line[2],
+    ]
+}
+
+/// Per quantity: (agree, undetermined, mutants rejected, determined) and the widest width of
+/// a determined number; a number is undetermined when it is at rounding level or its
+/// acceptance is wider than the mutant (those go to `ex5-debug/undetermined`).
+fn number_checks(
+    case: &IdentityExampleCase,
+    blocks: &[Block],
+) -> (Vec<[usize; 4]>, Vec<f64>, usize) {
+    let d = case.debug.significant_digits;
+    let zero_half = 0.5 * 10f64.powi(1 - d as i32);
+    let k = case.debug.mutant_half_units;
+    let mut counts = vec![[0usize; 4]; 12];
+    let mut widest = vec![0.0_f64; 12];
+    let mut unmatched = 0;
+    for bl in blocks {
+        let Some(r) = &bl.recomputed else {
+            unmatched += 1;
+            continue;
+        };
+        for (q, p) in printed_twelve(bl.attempt).iter().enumerate() {
+            let n = num_g(p, d);
+            let c = judge_number(
+                n.value,
+                n.half,
+                r.values[q],
+                r.bounds[q],
+                r.float_bound,
+                k,
+                zero_half,
+            );
+            counts[q][0] += usize::from(c.agree);
+            if c.rounding_level || !c.mutant_rejected {
+                counts[q][1] += 1;
+            } else {
+                counts[q][2] += 1;
+                counts[q][3] += 1;
+                widest[q] = widest[q].max(c.width);
+            }
+        }
+    }
+    (counts, widest, unmatched)
+}
+
+pub(super) fn results(
+    b: &ResultBuilder,
+    case: &IdentityExampleCase,
+    ex: &Example,
+    frame1: &[usize; 4],
+    blocks: &[Block],
+) -> Vec<ClaimResult> {
+    vec![
+        debug_result(b, case, blocks),
+        undetermined_result(b, case, ex, frame1, blocks),
+        depths_result(b, case, blocks),
+        choice_result(b, case, blocks),
+        errors_result(b, case, ex, frame1, blocks),
+        deltab_result(b, case, ex, frame1, blocks),
+    ]
+}
+
+/// The debug numbers: reproduced within rounding when every number agrees and every mutant
+/// of a number with determined digits is rejected.
+pub(super) fn judge_debug(agree: usize, total: usize, unmatched: usize) -> Verdict {
+    if agree == total && unmatched == 0 {
+        Verdict::ReproducedWithinRounding
+    } else {
+        Verdict::Contradicted
+    }
+}
+
+fn debug_result(b: &ResultBuilder, case: &IdentityExampleCase, blocks: &[Block]) -> ClaimResult {
+    let (counts, widest, unmatched) = number_checks(case, blocks);
+    let total: usize = blocks.iter().filter(|x| x.recomputed.is_some()).count() * 12;
+    let sum = |i: usize| counts.iter().map(|c| c[i]).sum::<usize>();
+    let (agree, level, rejected, checked) = (sum(0), sum(1), sum(2), sum(3));
+    let mut c = b
+        .claim(&case.debug.claim)
+        .printed("debug blocks", Value::count(case.debug.attempts.len()))
+        .printed("numbers recomputed per block", Value::count(12))
+        .computed("numbers reproduced", Value::count_of(agree, total))
+        .computed("blocks without a unique assignment or a real b", Value::count(unmatched))
+        .computed("numbers whose digits the rounded frames do not determine (see ex5-debug/undetermined)", Value::count(level))
+        .tolerance(Tolerance::bound(0.0, ToleranceSource::Propagated, "per number: half a unit in the sixth significant digit (none for a printed 0) + the first-order effect of the frames' and d0's rounding + 64ε × the block's largest number"))
+        .power(Power::mutant(checked > 0 && rejected == checked, "every number whose digits are determined, moved by the mutant's half units either way, is rejected by the same test"))
+        .method("each block's assignment read off its printed T₂, Q₂, P₂ (unique); the paper's procedure at c = the printed d0 with the block's sign of b, the frame-2 depth sign whose Pb is nearer the printed one")
+        .detail("mutants rejected", Value::count_of(rejected, checked));
+    for (q, name) in case.debug.quantities.iter().enumerate() {
+        c = c
+            .detail(
+                &format!("{name}: reproduced"),
+                Value::count_of(counts[q][0], total / 12),
+            )
+            .detail(
+                &format!("{name}: widest acceptance (half units)"),
+                Value::real(widest[q]),
+            );
+    }
+    c.verdict(judge_debug(agree, total, unmatched))
+}
+
+fn depths_result(b: &ResultBuilder, case: &IdentityExampleCase, blocks: &[Block]) -> ClaimResult {
+    let d = case.debug.significant_digits;
+    let (mut by_r, mut by_p, mut n, mut miss) = (0, 0, 0, 0.0_f64);
+    for bl in blocks {
+        let Some(r) = &bl.recomputed else { continue };
+        for (k, p) in [&bl.attempt.pa[2], &bl.attempt.pb[2]]
+            .into_iter()
+            .enumerate()
+        {
+            let x = num_g(p, d);
+            let tol = r.depths_r_bound[k] + x.half + r.float_bound;
+            n += 1;
+            let off = (x.value - r.depths_r[k]).abs();
+            if off <= tol {
+                by_r += 1;
+            } else {
+                miss = miss.max(off / tol);
+            }
+            by_p += usize::from((x.value - r.depths_p[k]).abs() <= tol);
+        }
+    }
+    b.claim(&case.debug.claim)
+        .suffix("depths-and-line-split")
+        .printed("third coordinates of Pa and Pb", Value::count(n))
+        .computed("hypothesis R at depth 0 in frame 2: reproduced", Value::count_of(by_r, n))
+        .computed("hypothesis R at depth 0: largest miss (tolerances)", Value::real(miss))
+        .computed("hypothesis P at depth 0 in frame 2: reproduced", Value::count_of(by_p, n))
+        .power(Power::none("not reproducible: the program's depth convention for the rest, and how it splits (Linie) into two sides, are not in the paper (only the difference is checked, in ex5-debug)"))
+        .method("the printed depths against ours under each hypothesis, with the propagated bound")
+        .verdict(Verdict::NotReproducible)
+}
+
+fn choice_result(b: &ResultBuilder, case: &IdentityExampleCase, blocks: &[Block]) -> ClaimResult {
+    let proj: Vec<f64> = blocks
+        .iter()
+        .filter_map(|x| x.recomputed.as_ref().map(|r| r.d_over_projection))
+        .collect();
+    let small: Vec<f64> = blocks
+        .iter()
+        .filter_map(|x| x.recomputed.as_ref().and_then(|r| r.d_over_smallest))
+        .collect();
+    let span = |v: &[f64]| {
+        v.iter()
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), x| {
+                (l.min(*x), h.max(*x))
+            })
+    };
+    let ((pl, ph), (sl, sh)) = (span(&proj), span(&small));
+    b.claim(&case.debug.claim)
+        .suffix("choice-of-d")
+        .printed("d0 per block", Value::count(blocks.len()))
+        .computed("hypothesis d0 = k × longest projection of RP: k ranges over", Value::interval(pl, ph))
+        .computed("hypothesis d0 = k × smallest admissible c: k ranges over", Value::interval(sl, sh))
+        .power(Power::none("not reproducible: the paper gives no rule for \"the a priori selected value for c\"; no constant factor fits"))
+        .method("d0 of every block against the longest projection of its edge and the smallest c the paper allows")
+        .detail("d0 / longest projection", Value::reals(&proj))
+        .detail("d0 / smallest admissible c", Value::reals(&small))
+        .verdict(Verdict::NotReproducible)
+}
+
+/// The assignments no block shows.
+fn skipped(blocks: &[Block]) -> Vec<[usize; 4]> {
+    let shown: Vec<[usize; 4]> = blocks.iter().filter_map(Block::assignment).collect();
+    crate::algebra::permutations4()
+        .into_iter()
+        .filter(|a| !shown.contains(a))
+        .collect()
+}
+
+/// Each printed ratio matched to the never-real assignments: Some(index) when exactly one
+/// ratio agrees within half + bound.
+pub(super) fn match_ratio(printed: f64, half: f64, candidates: &[(f64, f64)]) -> Option<usize> {
+    let hits: Vec<usize> = (0..candidates.len())
+        .filter(|&i| (candidates[i].0 - printed).abs() <= half + candidates[i].1)
+        .collect();
+    (hits.len() == 1).then(|| hits[0])
+}
+
+/// The error lines' ratios against the never-real assignments.
+struct RatioChecks {
+    all: Vec<DeltaAtBound>,
+    skip: Vec<[usize; 4]>,
+    /// (f_cb / f_b², its bound) of each never-real assignment, and the assignment.
+    cand: Vec<(f64, f64, [usize; 4])>,
+    /// Per printed ratio: its value, the assignment it matches, whether the mutant is
+    /// rejected, and the acceptance width in half units.
+    per: Vec<(f64, Option<usize>, bool, f64)>,
+}
+
+fn ratio_checks(
+    case: &IdentityExampleCase,
+    ex: &Example,
+    frame1: &[usize; 4],
+    blocks: &[Block],
+) -> RatioChecks {
+    let d = case.debug.significant_digits;
+    let all = delta_at_bound(ex, frame1);
+    let skip = skipped(blocks);
+    // the bound: the frames' rounding propagated, plus 64ε of the ratio for its evaluation
+    let cand: Vec<(f64, f64, [usize; 4])> = all
+        .iter()
+        .filter(|x| x.never_real)
+        .map(|x| {
+            let r = x.ratio.unwrap_or(f64::NAN);
+            (
+                r,
+                x.ratio_bound + r.abs() * crate::algebra::NEGLIGIBLE_ULPS * f64::EPSILON,
+                x.assignment,
+            )
+        })
+        .collect();
+    let pairs: Vec<(f64, f64)> = cand.iter().map(|c| (c.0, c.1)).collect();
+    let k = case.debug.mutant_half_units;
+    let per = case
+        .debug
+        .errors
+        .iter()
+        .flat_map(|e| e.ratios.iter())
+        .map(|r| {
+            let (v, h) = (r.to_f64(), num_g(r, d).half);
+            let m = match_ratio(v, h, &pairs);
+            let rejected = match_ratio(v + k * h, h, &pairs).is_none()
+                && match_ratio(v - k * h, h, &pairs).is_none();
+            let width = m.map_or(f64::INFINITY, |i| (h + pairs[i].1) / h);
+            (v, m, rejected, width)
+        })
+        .collect();
+    RatioChecks {
+        all,
+        skip,
+        cand,
+        per,
+    }
+}
+
+fn errors_result(
+    b: &ResultBuilder,
+    case: &IdentityExampleCase,
+    ex: &Example,
+    frame1: &[usize; 4],
+    blocks: &[Block],
+) -> ClaimResult {
+    let r = ratio_checks(case, ex, frame1, blocks);
+    let mut hit: Vec<usize> = r.per.iter().filter_map(|x| x.1).collect();
+    hit.sort();
+    hit.dedup();
+    let determined: Vec<&(f64, Option<usize>, bool, f64)> = r.per.iter().filter(|x| x.2).collect();
+    let never_skipped = r.cand.iter().all(|x| r.skip.contains(&x.2));
+    let ok = r.per.iter().all(|x| x.1.is_some()) && hit.len() == r.cand.len() && never_skipped;
+    let float_negative = r.all.iter().filter(|x| x.float_at_bound < 0.0).count();
+    b.claim(&case.debug.claim)
+        .suffix("errors")
+        .printed("\"ERROR: Fdg_dg / Fdg_g2\" lines", Value::count(r.per.len()))
+        .printed("ratios", Value::reals(&r.per.iter().map(|x| x.0).collect::<Vec<_>>()))
+        .computed("assignments without a block", Value::count_of(r.skip.len(), r.all.len()))
+        .computed("assignments with Δ_b < 0 for every c above its bound (exact over ℚ)", Value::count(r.cand.len()))
+        .computed("all of them without a block", Value::flag(never_skipped))
+        .computed("printed ratios equal to f_cb / f_b² of exactly one of them", Value::count_of(r.per.iter().filter(|x| x.1.is_some()).count(), r.per.len()))
+        .computed("those assignments matched", Value::count_of(hit.len(), r.cand.len()))
+        .tolerance(Tolerance::bound(0.0, ToleranceSource::Propagated, "half a unit in the sixth significant digit + the first-order effect of the frames' rounding on f_cb / f_b² + 64ε of it"))
+        .power(Power::mutant(!determined.is_empty(), "every printed ratio whose digits the frames determine, moved by the mutant's half units either way, matches no assignment (the rest: ex5-debug/undetermined)"))
+        .method("\"Fdg_dg / Fdg_g2\" read as f_cb / f_b² of the Appendix A quadratic; Δ_b evaluated exactly over ℚ at the printed frames: it is exactly 0 at the lower bound c² = the longest squared projection of RP for every assignment, so its floating-point sign there is noise; the sign just above the bound and the leading coefficient decide, exactly")
+        .detail("mutants rejected", Value::count_of(determined.len(), r.per.len()))
+        .detail("Δ_b = 0 exactly at the bound", Value::count_of(r.all.iter().filter(|x| x.zero_at_bound).count(), r.all.len()))
+        .detail("a floating-point evaluation at the bound calls it negative (noise)", Value::count_of(float_negative, r.all.len()))
+        .detail("never-real assignments' f_cb / f_b²", Value::reals(&r.cand.iter().map(|c| c.0).collect::<Vec<_>>()))
+        .detail("never-real assignments", Value::label(format!("{:?}", r.cand.iter().map(|c| c.2).collect::<Vec<_>>())))
+        .verdict(if ok { Verdict::ReproducedWithinRounding } else { Verdict::NotReproducible })
+}
+
+/// The printed numbers whose check cannot reject the mutant: at rounding level, or with an
+/// acceptance wider than the mutant (ill-conditioned at the printed frames).
+fn undetermined_result(
+    b: &ResultBuilder,
+    case: &IdentityExampleCase,
+    ex: &Example,
+    frame1: &[usize; 4],
+    blocks: &[Block],
+) -> ClaimResult {
+    let d = case.debug.significant_digits;
+    let zero_half = 0.5 * 10f64.powi(1 - d as i32);
+    let k = case.debug.mutant_half_units;
+    let (mut level, mut wide) = (Vec::new(), Vec::new());
+    for (i, bl) in blocks.iter().enumerate() {
+        let Some(r) = &bl.recomputed else { continue };
+        for (q, p) in printed_twelve(bl.attempt).iter().enumerate() {
+            let n = num_g(p, d);
+            let c = judge_number(
+                n.value,
+                n.half,
+                r.values[q],
+                r.bounds[q],
+                r.float_bound,
+                k,
+                zero_half,
+            );
+            if c.rounding_level {
+                level.push(format!("block {} {}", i + 1, case.debug.quantities[q]));
+            } else if !c.mutant_rejected {
+                wide.push((
+                    format!("block {} {}", i + 1, case.debug.quantities[q]),
+                    c.width,
+                ));
+            }
+        }
+    }
+    let ratios = ratio_checks(case, ex, frame1, blocks);
+    for (v, _, rejected, width) in &ratios.per {
+        if !rejected {
+            wide.push((format!("Fdg ratio {v}"), *width));
+        }
+    }
+    b.claim(&case.debug.claim)
+        .suffix("undetermined")
+        .printed("numbers whose digits the rounded frames do not determine", Value::count(level.len() + wide.len()))
+        .computed("at rounding level (|printed| within the propagated bound: zero to rounding, sign undetermined)", Value::label(level.join("; ")))
+        .computed("agreeing only within a bound wider than the mutant", Value::label(wide.iter().map(|w| w.0.clone()).collect::<Vec<_>>().join("; ")))
+        .computed("their acceptance half-widths (half units)", Value::reals(&wide.iter().map(|w| w.1).collect::<Vec<_>>()))
+        .power(Power::none("the same test accepts these numbers moved by the mutant's half units: agreement says nothing about their digits"))
+        .method("the debug numbers and error ratios whose propagated bound exceeds the mutant's half units (or their own magnitude)")
+        .verdict(Verdict::Inconclusive)
+}
+
+fn deltab_result(
+    b: &ResultBuilder,
+    case: &IdentityExampleCase,
+    ex: &Example,
+    frame1: &[usize; 4],
+    blocks: &[Block],
+) -> ClaimResult {
+    let all = delta_at_bound(ex, frame1);
+    let skip = skipped(blocks);
+    let rest: Vec<&DeltaAtBound> = all
+        .iter()
+        .filter(|x| skip.contains(&x.assignment) && !x.never_real)
+        .collect();
+    let negative: usize = case.debug.errors.iter().map(|e| e.delta_b_negative).sum();
+    b.claim(&case.debug.claim)
+        .suffix("errors-deltab")
+        .printed("\"ERROR: Root of deltab negative\" lines", Value::count(negative))
+        .computed("assignments without a block and with real b above the bound", Value::count(rest.len()))
+        .computed("hypothesis Δ_b < 0 just above the bound: assignments where it holds", Value::count_of(rest.iter().filter(|x| x.sign_above < 0).count(), rest.len()))
+        .computed("hypothesis Δ_b < 0 at the smaller frame's projection of RP (c below the bound): holds", Value::count_of(rest.iter().filter(|x| x.sign_at_smaller < 0).count(), rest.len()))
+        .power(Power::none("not reproducible: the c the program used for these assignments is not printed, and Δ_b of the paper's quadratic is positive for every c above the bound"))
+        .method("the assignments the printout skips without an Fdg line, through the exact Δ_b")
+        .detail("assignments", Value::label(format!("{:?}", rest.iter().map(|x| x.assignment).collect::<Vec<_>>())))
+        .verdict(Verdict::NotReproducible)
+}
+
+pub(super) fn correct(
+    b: &ResultBuilder,
+    case: &IdentityExampleCase,
+    ex: &Example,
+    truth: &[usize; 4],
+    blocks: &[Block],
+) -> Vec<ClaimResult> {
+    let r = rank_example(ex, truth, case.census_c_factor);
+    let first_two = blocks.len() >= 2
+        && blocks[0].assignment() == Some(*truth)
+        && blocks[1].assignment() == Some(*truth)
+        && blocks[0].attempt.version != blocks[1].attempt.version;
+    let on_line =
+        !r.true_distances.is_empty() && r.true_distances.iter().all(|d| *d <= r.true_bound);
+    let runner_up = r
+        .by_paper
+        .iter()
+        .find(|x| x.0 != *truth)
+        .map_or(f64::INFINITY, |x| x.1);
+    let within: Vec<[usize; 4]> = r
+        .by_paper
+        .iter()
+        .filter(|x| x.1 <= r.true_bound)
+        .map(|x| x.0)
+        .collect();
+    let (both, scenes) = both_signs_generic(case.census_trials, case.seed, case.census_c_factor);
+    let tol = Tolerance::bound(
+        r.true_bound,
+        ToleranceSource::Propagated,
+        "first-order effect of the frames' rounding on the distance, plus 3√(64ε) × the image size",
+    );
+    let first = b
+        .claim(&case.correct)
+        .printed("attempts called correct", Value::count(2))
+        .computed("first two blocks: the true assignment, opposite signs of b", Value::flag(first_two))
+        .computed("distances of T₂ from its line, true assignment", Value::reals(&r.true_distances))
+        .computed("generic scenes where both signs of b put T₂ on its line", Value::count_of(both, scenes))
+        .tolerance(tol.clone())
+        .power(Power::mutant(runner_up > r.true_bound, "the best wrong assignment, through the same distance test, is rejected"))
+        .method("the procedure at c = census_c_factor × the smallest admissible c for the true assignment; seeded generic scenes (both values of b are members of the two-view family, not a right and a wrong one)")
+        .detail("best wrong assignment's distance", Value::real(runner_up))
+        .detail("generic scenes: seed", Value::exact(case.seed))
+        .verdict(Verdict::holds(first_two && on_line));
+    let epi_first = r.by_epipolar.first().map(|x| x.0);
+    let ranking = b
+        .claim(&case.correct)
+        .suffix("ranking")
+        .printed("the assignment that puts T₂ on its line", Value::label(format!("{truth:?}")))
+        .computed("assignments within the bound by the paper's distance", Value::label(format!("{within:?}")))
+        .computed("first by the equal-scale epipolar residual", Value::label(format!("{:?}", epi_first.unwrap_or([0; 4]))))
+        .tolerance(tol)
+        .power(Power::mutant(runner_up > r.true_bound, "every wrong assignment is rejected by the same bound"))
+        .method("every assignment of frame 2 (re-centred at its R) through the paper's procedure at census_c_factor × its smallest admissible c, and through the affine epipolar constraint with the coordinates' rounding (the body is planar: equal scale is met inside a two-dimensional null space)")
+        .detail("by the paper's distance", Value::reals(&r.by_paper.iter().map(|x| x.1).collect::<Vec<_>>()))
+        .detail("by the epipolar residual", Value::reals(&r.by_epipolar.iter().map(|x| x.1).collect::<Vec<_>>()))
+        .verdict(if within == [*truth] && epi_first == Some(*truth) { Verdict::Reproduced } else { Verdict::Contradicted });
+    vec![first, ranking]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn number_judge_both_sides() {
+        let c = judge_number(23.9807, 5e-5, 23.98071, 1e-6, 1e-13, 100.0, 5e-6);
+        assert!(c.agree && !c.rounding_level && c.mutant_rejected);
+        let far = judge_number(23.9807, 5e-5, 23.9812, 1e-6, 1e-13, 100.0, 5e-6);
+        assert!(!far.agree);
+        // a printed rounding-level number: agrees, but its digits are not determined
+        let z = judge_number(2.3e-14, 5e-20, 3e-7, 1e-6, 1e-13, 100.0, 5e-6);
+        assert!(z.agree && z.rounding_level);
+        // a bound far wider than the mutant: the mutant is accepted
+        let wide = judge_number(1.0, 5e-6, 1.0, 1e-2, 0.0, 100.0, 5e-6);
+        assert!(wide.agree && !wide.mutant_rejected);
+    }
+
+    #[test]
+    fn debug_and_ratio_judges_both_sides() {
+        assert_eq!(judge_debug(384, 384, 0), Verdict::ReproducedWithinRounding);
+        assert_eq!(judge_debug(383, 384, 0), Verdict::Contradicted);
+        assert_eq!(judge_debug(384, 384, 1), Verdict::Contradicted);
+        let cand = [(-2.10003, 1e-6), (-1.72575, 1e-6)];
+        assert_eq!(match_ratio(-2.10003, 5e-6, &cand), Some(0));
+        assert_eq!(match_ratio(-2.1005, 5e-6, &cand), None);
+    }
+}
