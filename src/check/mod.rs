@@ -50,7 +50,6 @@ impl<'a> ResultBuilder<'a> {
             case: self.case,
             claim,
             suffix: None,
-            section: None,
             printed: Vec::new(),
             computed: Vec::new(),
             tolerance: None,
@@ -66,7 +65,6 @@ pub(crate) struct ClaimBuilder<'b> {
     case: &'b Case,
     claim: &'b ClaimRef,
     suffix: Option<String>,
-    section: Option<String>,
     printed: Vec<Quantity>,
     computed: Vec<Quantity>,
     tolerance: Option<Tolerance>,
@@ -79,12 +77,6 @@ impl ClaimBuilder<'_> {
     /// Make the id `claim/suffix`.
     pub(crate) fn suffix(mut self, s: &str) -> Self {
         self.suffix = Some(s.into());
-        self
-    }
-
-    /// The paper section of this result, when it differs from the claim's and the case's.
-    pub(crate) fn section(mut self, s: &str) -> Self {
-        self.section = Some(s.into());
         self
     }
 
@@ -157,9 +149,9 @@ impl ClaimBuilder<'_> {
             },
             claim: claim.claim.clone(),
             case: self.case.id.clone(),
-            section: self
+            section: claim
                 .section
-                .or_else(|| claim.section.clone())
+                .clone()
                 .unwrap_or_else(|| self.case.source.section.clone()),
             lines: claim.lines.clone(),
             quote: claim.quote.clone(),

@@ -215,12 +215,13 @@ pub fn render(r: &Report) -> String {
             r.summary.get(v.name()).copied().unwrap_or(0)
         );
     }
-    s.push_str("</table><h3>Errata and contradicted claims</h3><ul>");
-    for c in r
-        .claims
-        .iter()
-        .filter(|c| matches!(c.verdict, Verdict::Erratum | Verdict::Contradicted))
-    {
+    s.push_str("</table><h3>Errata, contradicted claims and unnamed exceptions</h3><ul>");
+    for c in r.claims.iter().filter(|c| {
+        matches!(
+            c.verdict,
+            Verdict::Erratum | Verdict::Contradicted | Verdict::HoldsGenerically
+        )
+    }) {
         let _ = write!(
             s,
             "<li>{} <a href=\"#{}\"><code>{}</code></a> (<a href=\"#{}\">§{}</a>): {}</li>",
