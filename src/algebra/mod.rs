@@ -5,9 +5,12 @@ mod interval;
 mod lanczos;
 pub mod mpoly;
 mod newton;
+mod parse;
 mod poly;
 mod rank;
 mod ratfn;
+#[cfg(test)]
+mod reference;
 mod sturm;
 
 pub use float_roots::{
@@ -17,9 +20,13 @@ pub use float_roots::{
 pub use interval::Interval;
 pub use lanczos::largest_eigenvalue;
 pub use newton::min_norm_newton;
-pub use poly::{parse_decimal, Monomial, Poly};
+pub use parse::parse_decimal;
+pub use poly::{Monomial, Poly};
 pub use rank::{exact_rank, exact_solve, svd_rank, svd_rank_above, ExactRankMethod, SvdRank};
-pub use ratfn::{agree_at_random_points, solve_linear, PointEvaluation, RatFn};
+pub use ratfn::{
+    agree_at_random_points, determinant, solve_linear, solve_linear_fraction_free, PointEvaluation,
+    RatFn,
+};
 pub use sturm::{RealRoot, UPoly};
 
 use num_rational::BigRational;
