@@ -3,6 +3,7 @@
 mod float_roots;
 mod interval;
 mod lanczos;
+pub mod modp;
 pub mod mpoly;
 mod newton;
 mod parse;
