@@ -407,3 +407,143 @@ impl fmt::Display for RefPoly {
     }
 }
 
+
+/// Differential tests: the packed engine against this one, on random polynomials with
+/// small and word-overflowing coefficients. Both print canonically, so equal text is
+/// equal polynomials (and the printed forms the snapshots hold stay the same).
+#[cfg(test)]
+mod differential {
+    use super::RefPoly;
+    use crate::algebra::mpoly::{mul_array, mul_heap};
+    use crate::algebra::{Monomial, Poly};
+    use num_bigint::BigInt;
+    use num_rational::BigRational;
+    use proptest::prelude::*;
+    use std::collections::BTreeMap;
+
+    const VARS: [&str; 4] = ["a", "b", "c", "d_1"];
+
+    type Terms = Vec<(i64, i64, bool, [u32; 4])>;
+
+    fn terms(max: usize) -> impl Strategy<Value = Terms> {
+        prop::collection::vec(
+            ((-9i64..=9), (1i64..=4), prop::bool::weighted(0.2), [0u32..=3, 0u32..=2, 0u32..=2, 0u32..=1]),
+            0..max,
+        )
+    }
+
+    /// The same polynomial in both engines; a flagged coefficient is multiplied by 2⁶³ + 1.
+    fn both(t: &Terms) -> (Poly, RefPoly) {
+        let (mut p, mut r) = (Poly::zero(), RefPoly::zero());
+        for (n, d, big, e) in t {
+            let mut c = BigRational::new((*n).into(), (*d).into());
+            if *big {
+                c *= BigRational::from_integer(BigInt::from(i64::MAX) + 2);
+            }
+            let (mut pm, mut rm) = (Poly::constant(c.clone()), RefPoly::constant(c));
+            for (v, k) in VARS.iter().zip(e) {
+                pm = &pm * &Poly::var(v).pow(*k);
+                rm = &rm * &RefPoly::var(v).pow(*k);
+            }
+            p = &p + &pm;
+            r = &r + &rm;
+        }
+        (p, r)
+    }
+
+    fn same(p: &Poly, r: &RefPoly) -> Result<(), TestCaseError> {
+        prop_assert_eq!(p.to_string(), r.to_string());
+        let pt: Vec<(Monomial, BigRational)> = p.terms().collect();
+        prop_assert_eq!(pt.len(), r.len());
+        prop_assert_eq!((p.degree(), p.variables()), (r.degree(), r.variables()));
+        Ok(())
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig { cases: 192, rng_seed: proptest::test_runner::RngSeed::Fixed(11), ..ProptestConfig::default() })]
+
+        #[test]
+        fn ring_operations_agree(a in terms(7), b in terms(7), e in 0u32..4) {
+            let ((pa, ra), (pb, rb)) = (both(&a), both(&b));
+            same(&pa, &ra)?;
+            same(&(&pa * &pb), &(&ra * &rb))?;
+            same(&(&pa - &pb), &(&ra - &rb))?;
+            same(&pa.pow(e), &ra.pow(e))?;
+            for v in VARS {
+                prop_assert_eq!(pa.degree_in(v), ra.degree_in(v));
+                let (pc, rc) = (pa.coefficients_in(v), ra.coefficients_in(v));
+                prop_assert_eq!(pc.len(), rc.len());
+                for (x, y) in pc.iter().zip(&rc) {
+                    same(x, y)?;
+                }
+            }
+            prop_assert_eq!(pa.ratio_to(&pb), ra.ratio_to(&rb));
+            let k = BigRational::new((-3).into(), 7.into());
+            prop_assert_eq!(pa.scale(&k).ratio_to(&pa), ra.scale(&k).ratio_to(&ra));
+        }
+
+        #[test]
+        fn substitution_and_evaluation_agree(a in terms(6), q in terms(4), v in 0usize..4, x in prop::array::uniform4(-30i64..30)) {
+            let ((pa, ra), (pq, rq)) = (both(&a), both(&q));
+            same(&pa.substitute(VARS[v], &pq), &ra.substitute(VARS[v], &rq))?;
+            let at: BTreeMap<String, BigRational> = VARS.iter().zip(x).map(|(n, k)| (n.to_string(), BigRational::new(k.into(), 3.into()))).collect();
+            prop_assert_eq!(pa.eval(&at), ra.eval(&at));
+            let atf: BTreeMap<String, f64> = VARS.iter().zip(x).map(|(n, k)| (n.to_string(), k as f64 / 3.0)).collect();
+            prop_assert_eq!(pa.eval_f64(&atf).map(f64::to_bits), ra.eval_f64(&atf).map(f64::to_bits));
+        }
+
+        #[test]
+        fn exact_division_agrees(a in terms(6), b in terms(5), c in terms(2)) {
+            let ((pa, ra), (pb, rb), (pc, rc)) = (both(&a), both(&b), both(&c));
+            let (pab, rab) = (&pa * &pb, &ra * &rb);
+            let (pq, rq) = (pab.div_exact(&pb), rab.div_exact(&rb));
+            prop_assert_eq!(pq.is_some(), rq.is_some());
+            if let (Some(pq), Some(rq)) = (&pq, &rq) {
+                same(pq, rq)?;
+            }
+            let (pn, rn) = (&pab + &pc, &rab + &rc);
+            let (x, y) = (pn.div_exact(&pb), rn.div_exact(&rb));
+            prop_assert_eq!(x.as_ref().map(|p| p.to_string()), y.as_ref().map(|p| p.to_string()));
+        }
+
+        #[test]
+        fn gcd_is_a_common_divisor_the_factor_divides(a in terms(5), b in terms(5), c in terms(4)) {
+            let ((pa, ra), (pb, rb), (pc, rc)) = (both(&a), both(&b), both(&c));
+            let (x, y) = (&pa * &pc, &pb * &pc);
+            if let Some(g) = x.gcd(&y) {
+                let rg = RefPoly::from_text(&g);
+                if !x.is_zero() || !y.is_zero() {
+                    prop_assert!((&ra * &rc).div_exact(&rg).is_some());
+                    prop_assert!((&rb * &rc).div_exact(&rg).is_some());
+                }
+                if !pc.is_zero() && !(x.is_zero() && y.is_zero()) {
+                    prop_assert!(g.div_exact(&pc).is_some(), "{} ∤ {}", pc, g);
+                }
+            }
+        }
+
+        #[test]
+        fn heap_and_array_products_agree(a in terms(12), b in terms(12)) {
+            let ((pa, _), (pb, _)) = (both(&a), both(&b));
+            let (x, y) = (pa.primitive().1.clone(), pb.primitive().1.clone());
+            // in a common ring: the product of the Polys aligns them
+            let z = &pa * &pb;
+            if x.nvars() == y.nvars() && x.nvars() == z.ring().nvars() {
+                let heap = mul_heap(&x, &y);
+                prop_assert_eq!(&heap, z.primitive().1);
+                if let Some(arr) = mul_array(&x, &y) {
+                    prop_assert_eq!(arr, heap);
+                }
+            }
+        }
+    }
+
+    impl RefPoly {
+        /// The reference image of a packed polynomial, term by term.
+        fn from_text(p: &Poly) -> RefPoly {
+            p.terms().fold(RefPoly::zero(), |acc, (m, c)| {
+                &acc + &RefPoly::from_monomial(super::Monomial(m.factors().to_vec())).scale(&c)
+            })
+        }
+    }
+}
