@@ -138,7 +138,8 @@ pub fn agree_mod_p(
     vars.extend(right.variables());
     vars.sort();
     vars.dedup();
-    let degree = (left.num.degree() + right.den.degree()).max(right.num.degree() + left.den.degree());
+    let degree =
+        (left.num.degree() + right.den.degree()).max(right.num.degree() + left.den.degree());
     let k = Fp::from_rational(ratio);
     let mut agreeing = 0;
     for _ in 0..points {

@@ -203,7 +203,11 @@ impl Poly {
     /// Both in the ring of the variables of either.
     fn align<'a>(a: &'a Poly, b: &'a Poly) -> (Arc<Ring>, Cow<'a, MPoly>, Cow<'a, MPoly>) {
         if Arc::ptr_eq(&a.ring, &b.ring) || a.ring == b.ring {
-            return (a.ring.clone(), Cow::Borrowed(&a.prim), Cow::Borrowed(&b.prim));
+            return (
+                a.ring.clone(),
+                Cow::Borrowed(&a.prim),
+                Cow::Borrowed(&b.prim),
+            );
         }
         let (u, ta, tb) = a.ring.union(&b.ring);
         let deg = a.prim.degree().max(b.prim.degree());
@@ -221,7 +225,10 @@ impl Poly {
             other.content.clone()
         };
         if self.is_zero() {
-            return Poly { content: cb, ..other.clone() };
+            return Poly {
+                content: cb,
+                ..other.clone()
+            };
         }
         if other.is_zero() {
             return self.clone();
@@ -233,7 +240,13 @@ impl Poly {
         let fb = cb.numer() * (&l / cb.denom());
         let g = fa.gcd(&fb);
         let (fa, fb) = (Coef::from_big(fa / &g), Coef::from_big(fb / &g));
-        let scaled = |p: &MPoly, f: &Coef| if *f == Coef::Small(1) { p.clone() } else { p.scale(f) };
+        let scaled = |p: &MPoly, f: &Coef| {
+            if *f == Coef::Small(1) {
+                p.clone()
+            } else {
+                p.scale(f)
+            }
+        };
         let sum = &scaled(&pa, &fa) + &scaled(&pb, &fb);
         Poly::from_parts(ring, BigRational::new(g, l), sum)
     }

@@ -414,7 +414,13 @@ pub fn solve_linear_fraction_free(m: &[Vec<RatFn>], rhs: &[RatFn]) -> Option<Vec
                 row[i] = full[n].clone();
             }
             let num = determinant(&ai)?;
-            Some(RatFn { num, den: det.clone() }.reduced())
+            Some(
+                RatFn {
+                    num,
+                    den: det.clone(),
+                }
+                .reduced(),
+            )
         })
         .collect()
 }

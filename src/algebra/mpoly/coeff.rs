@@ -239,7 +239,10 @@ mod tests {
         let sq = m.mul(&m);
         assert!(matches!(sq, Coef::Big(_)));
         assert_eq!(sq.div_exact(&m), Some(m.clone()));
-        assert_eq!(Coef::Small(i64::MIN).neg().to_big(), -BigInt::from(i64::MIN));
+        assert_eq!(
+            Coef::Small(i64::MIN).neg().to_big(),
+            -BigInt::from(i64::MIN)
+        );
         let mut acc = Acc::default();
         for _ in 0..4 {
             acc.add_mul(&sq.clone(), &Coef::Small(1));

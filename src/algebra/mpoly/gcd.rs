@@ -65,7 +65,13 @@ fn heu(a: &MPoly, b: &MPoly) -> Option<MPoly> {
     let Some(i) = (0..n).find(|&i| ua[i] || ub[i]) else {
         return Some(MPoly::constant(n, Coef::Small(1)));
     };
-    let norm = |p: &MPoly| p.coefs().iter().map(|c| c.to_big().abs()).max().unwrap_or_default();
+    let norm = |p: &MPoly| {
+        p.coefs()
+            .iter()
+            .map(|c| c.to_big().abs())
+            .max()
+            .unwrap_or_default()
+    };
     let mut xi: BigInt = norm(a).min(norm(b)) * 2 + 29;
     let deg = u64::from(a.degree_in(i).max(b.degree_in(i)));
     let bits = |p: &MPoly| p.coefs().iter().map(Coef::bits).max().unwrap_or(0);

@@ -44,7 +44,11 @@ pub fn mul_heap(a: &MPoly, b: &MPoly) -> MPoly {
         return MPoly::zero(a.nvars());
     }
     let (a, b) = MPoly::common_packing(a, b, a.degree() + b.degree());
-    let (a, b) = if a.len() <= b.len() { (&a, &b) } else { (&b, &a) };
+    let (a, b) = if a.len() <= b.len() {
+        (&a, &b)
+    } else {
+        (&b, &a)
+    };
     with_key!(a.pack.words, heap_kernel(a, b))
 }
 
@@ -54,7 +58,12 @@ pub fn mul_heap(a: &MPoly, b: &MPoly) -> MPoly {
 fn heap_kernel<K: Key>(a: &MPoly, b: &MPoly) -> MPoly {
     let ak: Vec<K> = (0..a.len()).map(|i| K::load(a.packed(i))).collect();
     let bk: Vec<K> = (0..b.len()).map(|j| K::load(b.packed(j))).collect();
-    let small = |p: &MPoly| p.coefs.iter().map(Coef::small).collect::<Option<Vec<i64>>>();
+    let small = |p: &MPoly| {
+        p.coefs
+            .iter()
+            .map(Coef::small)
+            .collect::<Option<Vec<i64>>>()
+    };
     let smalls = small(a).zip(small(b));
     let mut out = MPoly {
         pack: a.pack,
@@ -74,7 +83,8 @@ fn heap_kernel<K: Key>(a: &MPoly, b: &MPoly) -> MPoly {
                 Some((sa, sb)) => acc.add_i128(i128::from(sa[iu]) * i128::from(sb[ju])),
                 None => acc.add_mul(&a.coefs[iu], &b.coefs[ju]),
             }
-            let next = (ju + 1 < bk.len()).then(|| (ak[iu].add(&bk[ju + 1]), iu as u32, ju as u32 + 1));
+            let next =
+                (ju + 1 < bk.len()).then(|| (ak[iu].add(&bk[ju + 1]), iu as u32, ju as u32 + 1));
             heap.replace_top(next);
             // row i + 1 enters only once row i has started (Monagan–Pearce)
             if ju == 0 && iu + 1 < ak.len() {
@@ -135,7 +145,9 @@ fn array_kernel<K: Key>(a: &MPoly, b: &MPoly, dims: &[usize], pack: Packing) -> 
             .sum()
     };
     let small = |c: &Coef| i128::from(c.small().unwrap_or(0));
-    let mut bs: Vec<(usize, i128)> = (0..b.len()).map(|j| (index(b, j), small(&b.coefs[j]))).collect();
+    let mut bs: Vec<(usize, i128)> = (0..b.len())
+        .map(|j| (index(b, j), small(&b.coefs[j])))
+        .collect();
     bs.sort_unstable_by_key(|t| t.0);
     let size: usize = dims.iter().product();
     let mut acc = vec![0i128; size];

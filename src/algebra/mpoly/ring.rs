@@ -93,7 +93,13 @@ impl Ring {
                 .iter()
                 .zip(&self.names)
                 .filter(|(k, _)| **k > 0)
-                .map(|(k, n)| if *k == 1 { n.to_string() } else { format!("{n}^{k}") })
+                .map(|(k, n)| {
+                    if *k == 1 {
+                        n.to_string()
+                    } else {
+                        format!("{n}^{k}")
+                    }
+                })
                 .collect();
             let _ = match (mono.is_empty(), abs.is_unit()) {
                 (true, _) => write!(s, "{abs}"),
