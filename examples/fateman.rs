@@ -28,6 +28,11 @@ fn main() {
     let start = Instant::now();
     let prod = mul_with(&p, &q, method);
     let secs = start.elapsed().as_secs_f64();
-    println!("N = {n}: {} × {} terms -> {} terms ({method:?})", p.len(), q.len(), prod.len());
+    println!(
+        "N = {n}: {} × {} terms -> {} terms ({method:?})",
+        p.len(),
+        q.len(),
+        prod.len()
+    );
     println!("{secs:.3}");
 }
