@@ -332,16 +332,19 @@ impl Poly {
 
     /// Evaluate at a rational point; `None` if a variable has no value.
     pub fn eval(&self, values: &BTreeMap<String, BigRational>) -> Option<BigRational> {
-        let at: Vec<BigRational> = self
+        let at: Vec<&BigRational> = self
             .ring
             .names()
             .iter()
-            .map(|n| values.get(&**n).cloned())
+            .map(|n| values.get(&**n))
             .collect::<Option<_>>()?;
         if self.is_zero() {
             return Some(BigRational::zero());
         }
-        Some(&self.content * self.prim.eval(&at))
+        let nums: Vec<BigInt> = at.iter().map(|x| x.numer().clone()).collect();
+        let dens: Vec<BigInt> = at.iter().map(|x| x.denom().clone()).collect();
+        let (n, d) = self.prim.eval_fraction(&nums, &dens);
+        Some(&self.content * BigRational::new(n, d))
     }
 
     /// Evaluate in floating point; `None` if a variable has no value. Term by term in the

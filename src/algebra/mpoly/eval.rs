@@ -95,6 +95,46 @@ impl MPoly {
         sum
     }
 
+    /// The value at the rational point `nums[i] / dens[i]` as `(numerator, denominator)`,
+    /// by integer arithmetic only: with dᵢ raised to the degree kᵢ of the polynomial in
+    /// variable i, `Π dᵢ^kᵢ · p(n/d) = Σ c · Π nᵢ^eᵢ · dᵢ^(kᵢ−eᵢ)`, so no gcd is taken
+    /// until the caller forms the one quotient.
+    pub fn eval_fraction(&self, nums: &[BigInt], dens: &[BigInt]) -> (BigInt, BigInt) {
+        let deg: Vec<usize> = (0..self.nvars())
+            .map(|i| self.degree_in(i) as usize)
+            .collect();
+        let table = |x: &BigInt, d: usize| {
+            let mut pw = vec![BigInt::from(1)];
+            for k in 0..d {
+                let next = &pw[k] * x;
+                pw.push(next);
+            }
+            pw
+        };
+        let np: Vec<Vec<BigInt>> = nums.iter().zip(&deg).map(|(x, d)| table(x, *d)).collect();
+        let dp: Vec<Vec<BigInt>> = dens.iter().zip(&deg).map(|(x, d)| table(x, *d)).collect();
+        let mut sum = BigInt::from(0);
+        for t in 0..self.len() {
+            let m = self.packed(t);
+            let mut v = self.coefs[t].to_big();
+            for i in 0..self.nvars() {
+                let e = self.pack.exponent(m, i) as usize;
+                if e > 0 {
+                    v *= &np[i][e];
+                }
+                if deg[i] > e {
+                    v *= &dp[i][deg[i] - e];
+                }
+            }
+            sum += v;
+        }
+        let den = dp
+            .iter()
+            .zip(&deg)
+            .fold(BigInt::from(1), |acc, (p, d)| acc * &p[*d]);
+        (sum, den)
+    }
+
     /// The polynomial with variable `i` replaced by the integer `x` (variable `i` then no
     /// longer occurs): one pass over the terms with a power table of `x`.
     pub fn eval_var(&self, i: usize, x: &BigInt) -> MPoly {
