@@ -5,12 +5,17 @@ mod float_roots;
 mod gram;
 mod interval;
 mod lanczos;
+pub mod modp;
+pub mod mpoly;
 mod newton;
+mod parse;
 mod perm;
 mod poly;
 mod procrustes;
 mod rank;
 mod ratfn;
+#[cfg(test)]
+mod reference;
 mod sturm;
 
 pub use diff::central_jacobian;
@@ -22,11 +27,15 @@ pub use gram::gram;
 pub use interval::Interval;
 pub use lanczos::largest_eigenvalue;
 pub use newton::{min_norm_newton, min_norm_newton_step};
+pub use parse::parse_decimal;
 pub use perm::{permutations, permutations4};
-pub use poly::{parse_decimal, Monomial, Poly};
+pub use poly::{Monomial, Poly};
 pub use procrustes::{complete_rotation, kabsch, orthonormal_rows};
 pub use rank::{exact_rank, exact_solve, svd_rank, svd_rank_above, ExactRankMethod, SvdRank};
-pub use ratfn::{agree_at_random_points, solve_linear, PointEvaluation, RatFn};
+pub use ratfn::{
+    agree_at_random_points, determinant, solve_linear, solve_linear_fraction_free, PointEvaluation,
+    RatFn,
+};
 pub use sturm::{RealRoot, UPoly};
 
 use num_rational::BigRational;

@@ -1,17 +1,23 @@
 //! Exact multivariate polynomials over ℚ with named variables.
 //!
-//! The representation is canonical (a sorted map from monomials to non-zero rational
-//! coefficients), so structural equality is polynomial equality.
+//! A [`Poly`] is a rational content times a primitive integer polynomial ([`MPoly`]) in
+//! the ring of exactly the variables that occur (sorted by name), the primitive part with a
+//! positive leading coefficient and the narrowest packing: a canonical form, so structural
+//! equality is polynomial equality. Products need no gcd (Gauss's lemma: the product of
+//! primitive polynomials is primitive); sums take one content.
 
+use std::borrow::Cow;
 use std::collections::BTreeMap;
 use std::fmt;
 use std::ops::{Add, Mul, Neg, Sub};
+use std::sync::Arc;
 
 use num_bigint::BigInt;
+use num_integer::Integer;
 use num_rational::BigRational;
 use num_traits::{One, Signed, ToPrimitive, Zero};
 
-use super::RatFn;
+use super::mpoly::{Coef, MPoly, Ring};
 use crate::error::ParseError;
 
 /// A monomial: variables with positive exponents, sorted by variable name.
@@ -43,46 +49,9 @@ impl Monomial {
             .unwrap_or(0)
     }
 
-    /// The monomial with `name` removed.
-    fn without(&self, name: &str) -> Monomial {
-        Monomial(self.0.iter().filter(|(v, _)| v != name).cloned().collect())
-    }
-
     /// Variables and exponents.
     pub fn factors(&self) -> &[(String, u32)] {
         &self.0
-    }
-
-    fn mul(&self, other: &Monomial) -> Monomial {
-        let mut out: Vec<(String, u32)> = Vec::with_capacity(self.0.len() + other.0.len());
-        let (mut i, mut j) = (0, 0);
-        while i < self.0.len() || j < other.0.len() {
-            match (self.0.get(i), other.0.get(j)) {
-                (Some(a), Some(b)) if a.0 == b.0 => {
-                    out.push((a.0.clone(), a.1 + b.1));
-                    i += 1;
-                    j += 1;
-                }
-                (Some(a), Some(b)) if a.0 < b.0 => {
-                    out.push(a.clone());
-                    i += 1;
-                }
-                (Some(_), Some(b)) => {
-                    out.push(b.clone());
-                    j += 1;
-                }
-                (Some(a), None) => {
-                    out.push(a.clone());
-                    i += 1;
-                }
-                (None, Some(b)) => {
-                    out.push(b.clone());
-                    j += 1;
-                }
-                (None, None) => break,
-            }
-        }
-        Monomial(out)
     }
 }
 
@@ -95,22 +64,63 @@ impl Monomial {
 /// let q = Poly::parse("a^2 + 2*a*b + b^2").unwrap();
 /// assert_eq!(p, q);
 /// ```
-#[derive(Clone, Debug, PartialEq, Eq, Default)]
+#[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Poly {
-    terms: BTreeMap<Monomial, BigRational>,
+    ring: Arc<Ring>,
+    /// Zero exactly for the zero polynomial.
+    content: BigRational,
+    prim: MPoly,
+}
+
+impl Default for Poly {
+    fn default() -> Self {
+        Poly::zero()
+    }
+}
+
+fn empty_ring() -> Arc<Ring> {
+    Arc::new(Ring::default())
 }
 
 impl Poly {
     /// The zero polynomial.
     pub fn zero() -> Self {
-        Poly::default()
+        Poly {
+            ring: empty_ring(),
+            content: BigRational::zero(),
+            prim: MPoly::zero(0),
+        }
+    }
+
+    /// `scale · p` in canonical form (`p` any integer polynomial in `ring`).
+    fn from_parts(ring: Arc<Ring>, scale: BigRational, p: MPoly) -> Poly {
+        if p.is_zero() || scale.is_zero() {
+            return Poly::zero();
+        }
+        let (g, pp) = p.primitive();
+        let used = pp.used();
+        let (ring, pp) = if used.iter().all(|u| *u) {
+            (ring, pp)
+        } else {
+            (Arc::new(ring.subset(&used)), pp.drop_vars(&used))
+        };
+        Poly {
+            ring,
+            content: scale * BigRational::from_integer(g.to_big()),
+            prim: pp,
+        }
     }
 
     /// A rational constant.
     pub fn constant(c: BigRational) -> Self {
-        let mut p = Poly::zero();
-        p.add_term(Monomial::one(), c);
-        p
+        if c.is_zero() {
+            return Poly::zero();
+        }
+        Poly {
+            ring: empty_ring(),
+            content: c,
+            prim: MPoly::constant(0, Coef::Small(1)),
+        }
     }
 
     /// An integer constant.
@@ -120,157 +130,228 @@ impl Poly {
 
     /// The variable `name`.
     pub fn var(name: &str) -> Self {
-        let mut p = Poly::zero();
-        p.add_term(Monomial::var(name), BigRational::one());
-        p
+        Poly::from_monomial(Monomial::var(name))
     }
 
     /// The monomial `m` with coefficient 1.
     pub fn from_monomial(m: Monomial) -> Self {
-        let mut p = Poly::zero();
-        p.add_term(m, BigRational::one());
-        p
+        let names: Vec<&str> = m.0.iter().map(|(v, _)| v.as_str()).collect();
+        let ring = Ring::new(&names);
+        let mut e = vec![0u32; ring.nvars()];
+        for (v, k) in &m.0 {
+            if let Some(i) = ring.index(v) {
+                e[i] += k;
+            }
+        }
+        let p = MPoly::from_terms(ring.nvars(), vec![(e, Coef::Small(1))]);
+        Poly::from_parts(Arc::new(ring), BigRational::one(), p)
+    }
+
+    /// The ring of the variables that occur.
+    pub fn ring(&self) -> &Ring {
+        &self.ring
+    }
+
+    /// `(content, primitive part)`: `self = content · primitive`, the primitive part an
+    /// integer polynomial in [`Poly::ring`] with coprime coefficients and a positive leading
+    /// coefficient (graded lexicographic order, variables by name).
+    pub fn primitive(&self) -> (&BigRational, &MPoly) {
+        (&self.content, &self.prim)
     }
 
     /// Whether this is the zero polynomial.
     pub fn is_zero(&self) -> bool {
-        self.terms.is_empty()
+        self.prim.is_zero()
     }
 
     /// Number of terms.
     pub fn len(&self) -> usize {
-        self.terms.len()
+        self.prim.len()
     }
 
     /// Whether there are no terms (same as [`Poly::is_zero`]).
     pub fn is_empty(&self) -> bool {
-        self.terms.is_empty()
+        self.prim.is_zero()
     }
 
-    /// Terms, in canonical order.
-    pub fn terms(&self) -> impl Iterator<Item = (&Monomial, &BigRational)> {
-        self.terms.iter()
+    /// Terms, in canonical order (by monomial: variable names, then exponents).
+    pub fn terms(&self) -> impl Iterator<Item = (Monomial, BigRational)> {
+        let mut t: Vec<(Monomial, BigRational)> = (0..self.len())
+            .map(|i| (self.monomial(i), self.coefficient(i)))
+            .collect();
+        t.sort_by(|a, b| a.0.cmp(&b.0));
+        t.into_iter()
     }
 
-    fn add_term(&mut self, m: Monomial, c: BigRational) {
-        if c.is_zero() {
-            return;
+    fn monomial(&self, i: usize) -> Monomial {
+        let e = self.prim.exponents(i);
+        Monomial(
+            self.ring
+                .names()
+                .iter()
+                .zip(e)
+                .filter(|(_, k)| *k > 0)
+                .map(|(n, k)| (n.to_string(), k))
+                .collect(),
+        )
+    }
+
+    fn coefficient(&self, i: usize) -> BigRational {
+        &self.content * BigRational::from_integer(self.prim.coef(i).to_big())
+    }
+
+    /// Both in the ring of the variables of either.
+    fn align<'a>(a: &'a Poly, b: &'a Poly) -> (Arc<Ring>, Cow<'a, MPoly>, Cow<'a, MPoly>) {
+        if Arc::ptr_eq(&a.ring, &b.ring) || a.ring == b.ring {
+            return (
+                a.ring.clone(),
+                Cow::Borrowed(&a.prim),
+                Cow::Borrowed(&b.prim),
+            );
         }
-        let entry = self.terms.entry(m);
-        match entry {
-            std::collections::btree_map::Entry::Vacant(v) => {
-                v.insert(c);
-            }
-            std::collections::btree_map::Entry::Occupied(mut o) => {
-                let s = o.get() + c;
-                if s.is_zero() {
-                    o.remove();
-                } else {
-                    *o.get_mut() = s;
-                }
-            }
+        let (u, ta, tb) = a.ring.union(&b.ring);
+        let deg = a.prim.degree().max(b.prim.degree());
+        let pack = super::mpoly::Packing::for_degree(u.nvars(), deg);
+        let pa = Cow::Owned(a.prim.remap(&ta, pack));
+        let pb = Cow::Owned(b.prim.remap(&tb, pack));
+        (Arc::new(u), pa, pb)
+    }
+
+    /// `self + sign · other` over a common denominator of the contents.
+    fn combine(&self, other: &Poly, negate: bool) -> Poly {
+        let cb = if negate {
+            -&other.content
+        } else {
+            other.content.clone()
+        };
+        if self.is_zero() {
+            return Poly {
+                content: cb,
+                ..other.clone()
+            };
         }
+        if other.is_zero() {
+            return self.clone();
+        }
+        let (ring, pa, pb) = Poly::align(self, other);
+        let ca = &self.content;
+        let l = ca.denom().lcm(cb.denom());
+        let fa = ca.numer() * (&l / ca.denom());
+        let fb = cb.numer() * (&l / cb.denom());
+        let g = fa.gcd(&fb);
+        let (fa, fb) = (Coef::from_big(fa / &g), Coef::from_big(fb / &g));
+        let scaled = |p: &MPoly, f: &Coef| {
+            if *f == Coef::Small(1) {
+                p.clone()
+            } else {
+                p.scale(f)
+            }
+        };
+        let sum = &scaled(&pa, &fa) + &scaled(&pb, &fb);
+        Poly::from_parts(ring, BigRational::new(g, l), sum)
     }
 
     /// Multiply by a rational constant.
     pub fn scale(&self, c: &BigRational) -> Poly {
-        if c.is_zero() {
+        if c.is_zero() || self.is_zero() {
             return Poly::zero();
         }
         Poly {
-            terms: self.terms.iter().map(|(m, k)| (m.clone(), k * c)).collect(),
+            content: &self.content * c,
+            ..self.clone()
         }
     }
 
     /// Integer power.
     pub fn pow(&self, e: u32) -> Poly {
-        let mut result = Poly::int(1);
-        let mut base = self.clone();
-        let mut e = e;
-        while e > 0 {
-            if e & 1 == 1 {
-                result = &result * &base;
-            }
-            e >>= 1;
-            if e > 0 {
-                base = &base * &base;
-            }
+        if e == 0 {
+            return Poly::int(1);
         }
-        result
+        Poly {
+            ring: self.ring.clone(),
+            content: num_traits::pow(self.content.clone(), e as usize),
+            prim: self.prim.pow(e),
+        }
     }
 
     /// All variable names, sorted.
     pub fn variables(&self) -> Vec<String> {
-        let mut v: Vec<String> = self
-            .terms
-            .keys()
-            .flat_map(|m| m.0.iter().map(|(n, _)| n.clone()))
-            .collect();
-        v.sort();
-        v.dedup();
-        v
+        self.ring.names().iter().map(|n| n.to_string()).collect()
     }
 
     /// Total degree (0 for constants and for zero).
     pub fn degree(&self) -> u32 {
-        self.terms.keys().map(Monomial::degree).max().unwrap_or(0)
+        self.prim.degree() as u32
     }
 
     /// Degree in one variable.
     pub fn degree_in(&self, name: &str) -> u32 {
-        self.terms
-            .keys()
-            .map(|m| m.exponent(name))
-            .max()
-            .unwrap_or(0)
+        self.ring.index(name).map_or(0, |i| self.prim.degree_in(i))
     }
 
     /// Coefficients with respect to `name`: `self = Σ coeffs[e] · name^e`.
     pub fn coefficients_in(&self, name: &str) -> Vec<Poly> {
-        let d = self.degree_in(name) as usize;
-        let mut out = vec![Poly::zero(); d + 1];
-        for (m, c) in &self.terms {
-            out[m.exponent(name) as usize].add_term(m.without(name), c.clone());
-        }
-        out
+        let Some(i) = self.ring.index(name) else {
+            return vec![self.clone()];
+        };
+        self.prim
+            .coefficients_in(i)
+            .into_iter()
+            .map(|p| Poly::from_parts(self.ring.clone(), self.content.clone(), p))
+            .collect()
     }
 
-    /// Substitute the polynomial `value` for the variable `name`.
+    /// Substitute the polynomial `value` for the variable `name`: `Σₑ cₑ · valueᵉ` over the
+    /// coefficients in `name`, each power a product of the squares `value^(2^k)`.
     pub fn substitute(&self, name: &str, value: &Poly) -> Poly {
+        if self.ring.index(name).is_none() {
+            return self.clone();
+        }
+        let mut squares = vec![value.clone()];
         let mut out = Poly::zero();
-        let mut powers: Vec<Poly> = vec![Poly::int(1)];
-        for (m, c) in &self.terms {
-            let e = m.exponent(name) as usize;
-            while powers.len() <= e {
-                let next = powers.last().map(|p| p * value).unwrap_or_default();
-                powers.push(next);
+        for (e, c) in self.coefficients_in(name).iter().enumerate() {
+            if c.is_zero() {
+                continue;
             }
-            let rest = Poly {
-                terms: BTreeMap::from([(m.without(name), c.clone())]),
-            };
-            out = &out + &(&rest * &powers[e]);
+            let mut term = c.clone();
+            let mut k = 0;
+            while (e >> k) > 0 {
+                if squares.len() <= k {
+                    let s = &squares[k - 1] * &squares[k - 1];
+                    squares.push(s);
+                }
+                if (e >> k) & 1 == 1 {
+                    term = &term * &squares[k];
+                }
+                k += 1;
+            }
+            out = &out + &term;
         }
         out
     }
 
     /// Evaluate at a rational point; `None` if a variable has no value.
     pub fn eval(&self, values: &BTreeMap<String, BigRational>) -> Option<BigRational> {
-        let mut sum = BigRational::zero();
-        for (m, c) in &self.terms {
-            let mut t = c.clone();
-            for (v, e) in &m.0 {
-                let x = values.get(v)?;
-                t *= num_traits::pow(x.clone(), *e as usize);
-            }
-            sum += t;
+        let at: Vec<&BigRational> = self
+            .ring
+            .names()
+            .iter()
+            .map(|n| values.get(&**n))
+            .collect::<Option<_>>()?;
+        if self.is_zero() {
+            return Some(BigRational::zero());
         }
-        Some(sum)
+        let nums: Vec<BigInt> = at.iter().map(|x| x.numer().clone()).collect();
+        let dens: Vec<BigInt> = at.iter().map(|x| x.denom().clone()).collect();
+        let (n, d) = self.prim.eval_fraction(&nums, &dens);
+        Some(&self.content * BigRational::new(n, d))
     }
 
-    /// Evaluate in floating point; `None` if a variable has no value.
+    /// Evaluate in floating point; `None` if a variable has no value. Term by term in the
+    /// canonical order, each coefficient rounded once (the rounding of the first engine).
     pub fn eval_f64(&self, values: &BTreeMap<String, f64>) -> Option<f64> {
         let mut sum = 0.0;
-        for (m, c) in &self.terms {
+        for (m, c) in self.terms() {
             let mut t = c.to_f64()?;
             for (v, e) in &m.0 {
                 t *= values.get(v)?.powi(*e as i32);
@@ -280,25 +361,7 @@ impl Poly {
         Some(sum)
     }
 
-    /// The leading term in graded lexicographic order (total degree, then the exponents of
-    /// the variables in alphabetical order): a monomial order, so division terminates.
-    fn leading(&self) -> Option<(&Monomial, &BigRational)> {
-        self.terms.iter().max_by(|(a, _), (b, _)| {
-            a.degree().cmp(&b.degree()).then_with(|| {
-                // the first variable (alphabetically) whose exponents differ decides
-                let mut vars: Vec<&String> = a.0.iter().chain(&b.0).map(|(v, _)| v).collect();
-                vars.sort();
-                vars.dedup();
-                vars.iter()
-                    .map(|v| a.exponent(v).cmp(&b.exponent(v)))
-                    .find(|o| o.is_ne())
-                    .unwrap_or(std::cmp::Ordering::Equal)
-            })
-        })
-    }
-
-    /// `self / d` when `d` divides `self` exactly (multivariate division with remainder
-    /// zero), else `None`.
+    /// `self / d` when `d` divides `self` exactly, else `None`.
     ///
     /// # Example
     /// ```
@@ -308,46 +371,49 @@ impl Poly {
     /// assert_eq!(p.div_exact(&Poly::parse("x - 2y").unwrap()), None);
     /// ```
     pub fn div_exact(&self, d: &Poly) -> Option<Poly> {
-        let (dm, dc) = d.leading()?;
-        let (dm, dc) = (dm.clone(), dc.clone());
-        let mut r = self.clone();
-        let mut q = Poly::zero();
-        while let Some((rm, rc)) = r.leading() {
-            // the quotient of the leading monomials, if it is a monomial
-            let mut t = Vec::new();
-            for (v, e) in &rm.0 {
-                let de = dm.exponent(v);
-                if de > *e {
-                    return None;
-                }
-                if *e > de {
-                    t.push((v.clone(), e - de));
-                }
-            }
-            if dm.0.iter().any(|(v, _)| rm.exponent(v) == 0) {
-                return None;
-            }
-            let term = Poly {
-                terms: BTreeMap::from([(Monomial(t), rc / &dc)]),
-            };
-            r = &r - &(&term * d);
-            q = &q + &term;
+        if d.is_zero() {
+            return None;
         }
-        Some(q)
+        if self.is_zero() {
+            return Some(Poly::zero());
+        }
+        // a variable of d that self lacks: d cannot divide (self ≠ 0)
+        if d.ring.names().iter().any(|n| self.ring.index(n).is_none()) {
+            return None;
+        }
+        let (ring, pa, pb) = Poly::align(self, d);
+        // Gauss: primitive / primitive, when exact over ℚ, is an integer polynomial
+        let q = pa.div_exact(&pb)?;
+        Some(Poly::from_parts(ring, &self.content / &d.content, q))
+    }
+
+    /// The greatest common divisor with content one and a positive leading coefficient (in
+    /// the order of [`Poly::primitive`]); `None` when the heuristic gcd gives up.
+    ///
+    /// # Example
+    /// ```
+    /// use orthocheck::algebra::Poly;
+    /// let a = Poly::parse("(x + y)^2 (x - 1)/3").unwrap();
+    /// let b = Poly::parse("6(x + y)(y + 2)").unwrap();
+    /// assert_eq!(a.gcd(&b), Some(Poly::parse("x + y").unwrap()));
+    /// ```
+    pub fn gcd(&self, other: &Poly) -> Option<Poly> {
+        let (ring, pa, pb) = Poly::align(self, other);
+        let g = pa.gcd(&pb)?;
+        Some(Poly::from_parts(ring, BigRational::one(), g.primitive().1))
     }
 
     /// If `self = k · other` for a non-zero rational `k`, return `k`.
     pub fn ratio_to(&self, other: &Poly) -> Option<BigRational> {
-        let (m0, c0) = other.terms.iter().next()?;
-        let k = self.terms.get(m0)? / c0;
-        (k != BigRational::zero() && *self == other.scale(&k)).then_some(k)
+        let same = !self.is_zero() && self.ring == other.ring && self.prim == other.prim;
+        same.then(|| &self.content / &other.content)
     }
 
     /// Parse an expression with `+ - * ^`, parentheses, rational numbers (`3`, `2.5`, `1/3`
     /// through division by a number) and identifiers (`a`, `a_1`, `A_Cst`). Juxtaposition
     /// multiplies, as in printed formulas: `2(a^2 - b^2)c^2`.
     pub fn parse(text: &str) -> Result<Poly, ParseError> {
-        let r = parse_rational(text, &BTreeMap::new())?;
+        let r = super::parse::parse_rational(text, &BTreeMap::new())?;
         r.to_poly().ok_or(ParseError {
             position: 0,
             message: "only division by a non-zero number".into(),
@@ -355,78 +421,58 @@ impl Poly {
     }
 }
 
-/// Parse into a rational function; identifiers with a definition stand for it.
-pub(crate) fn parse_rational(
-    text: &str,
-    defs: &BTreeMap<String, RatFn>,
-) -> Result<RatFn, ParseError> {
-    let tokens = tokenize(text)?;
-    let mut parser = Parser {
-        tokens,
-        pos: 0,
-        defs,
-    };
-    let p = parser.sum()?;
-    if parser.pos != parser.tokens.len() {
-        return Err(parser.error("unexpected input after the expression"));
-    }
-    Ok(p)
-}
-
 impl Add for &Poly {
     type Output = Poly;
     fn add(self, rhs: &Poly) -> Poly {
-        let mut out = self.clone();
-        for (m, c) in &rhs.terms {
-            out.add_term(m.clone(), c.clone());
-        }
-        out
+        self.combine(rhs, false)
     }
 }
 
 impl Sub for &Poly {
     type Output = Poly;
     fn sub(self, rhs: &Poly) -> Poly {
-        let mut out = self.clone();
-        for (m, c) in &rhs.terms {
-            out.add_term(m.clone(), -c.clone());
-        }
-        out
+        self.combine(rhs, true)
     }
 }
 
 impl Mul for &Poly {
     type Output = Poly;
+    /// Contents multiply; the product of the primitive parts is primitive (Gauss), with a
+    /// positive leading coefficient, in all the variables of both.
     fn mul(self, rhs: &Poly) -> Poly {
-        let mut out = Poly::zero();
-        for (m1, c1) in &self.terms {
-            for (m2, c2) in &rhs.terms {
-                out.add_term(m1.mul(m2), c1 * c2);
-            }
+        if self.is_zero() || rhs.is_zero() {
+            return Poly::zero();
         }
-        out
+        let (ring, pa, pb) = Poly::align(self, rhs);
+        Poly {
+            ring,
+            content: &self.content * &rhs.content,
+            prim: &*pa * &*pb,
+        }
     }
 }
 
 impl Neg for &Poly {
     type Output = Poly;
     fn neg(self) -> Poly {
-        self.scale(&-BigRational::one())
+        Poly {
+            content: -&self.content,
+            ..self.clone()
+        }
     }
 }
 
 impl fmt::Display for Poly {
     /// Terms by descending total degree, then by variable order; `0` for zero.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        if self.terms.is_empty() {
+        if self.is_zero() {
             return write!(f, "0");
         }
-        let mut terms: Vec<_> = self.terms.iter().collect();
+        let mut terms: Vec<_> = self.terms().collect();
         terms.sort_by(|(a, _), (b, _)| b.degree().cmp(&a.degree()).then_with(|| a.cmp(b)));
         for (i, (m, c)) in terms.iter().enumerate() {
-            let neg = c.is_negative();
             let abs = c.abs();
-            match (i, neg) {
+            match (i, c.is_negative()) {
                 (0, true) => write!(f, "-")?,
                 (0, false) => {}
                 (_, true) => write!(f, " - ")?,
@@ -451,196 +497,6 @@ impl fmt::Display for Poly {
             }
         }
         Ok(())
-    }
-}
-
-#[derive(Clone, Debug, PartialEq)]
-enum Token {
-    Num(BigRational),
-    Ident(String),
-    Op(char),
-}
-
-fn tokenize(text: &str) -> Result<Vec<(usize, Token)>, ParseError> {
-    let chars: Vec<char> = text.chars().collect();
-    let mut out = Vec::new();
-    let mut i = 0;
-    while i < chars.len() {
-        let ch = chars[i];
-        if ch.is_whitespace() {
-            i += 1;
-        } else if ch.is_ascii_digit() || ch == '.' {
-            let start = i;
-            while i < chars.len() && (chars[i].is_ascii_digit() || chars[i] == '.') {
-                i += 1;
-            }
-            let s: String = chars[start..i].iter().collect();
-            let value = parse_decimal(&s).ok_or_else(|| ParseError {
-                position: start,
-                message: format!("'{s}' is not a number"),
-            })?;
-            out.push((start, Token::Num(value)));
-        } else if ch.is_alphabetic() {
-            let start = i;
-            while i < chars.len() && (chars[i].is_alphanumeric() || chars[i] == '_') {
-                i += 1;
-            }
-            out.push((start, Token::Ident(chars[start..i].iter().collect())));
-        } else if "+-*/^()".contains(ch) {
-            out.push((i, Token::Op(ch)));
-            i += 1;
-        } else {
-            return Err(ParseError {
-                position: i,
-                message: format!("unexpected character '{ch}'"),
-            });
-        }
-    }
-    Ok(out)
-}
-
-/// An exact decimal such as `1.2345` or `-16`; `None` if malformed.
-pub fn parse_decimal(s: &str) -> Option<BigRational> {
-    let (neg, body) = match s.strip_prefix('-') {
-        Some(rest) => (true, rest),
-        None => (false, s.strip_prefix('+').unwrap_or(s)),
-    };
-    let (int, frac) = match body.split_once('.') {
-        Some((i, f)) => (i, f),
-        None => (body, ""),
-    };
-    if (int.is_empty() && frac.is_empty())
-        || !int.chars().all(|c| c.is_ascii_digit())
-        || !frac.chars().all(|c| c.is_ascii_digit())
-    {
-        return None;
-    }
-    let digits = format!("{int}{frac}");
-    let num: BigInt = digits.parse().ok()?;
-    let den = num_traits::pow(BigInt::from(10), frac.len());
-    let v = BigRational::new(num, den);
-    Some(if neg { -v } else { v })
-}
-
-struct Parser<'a> {
-    tokens: Vec<(usize, Token)>,
-    pos: usize,
-    defs: &'a BTreeMap<String, RatFn>,
-}
-
-impl Parser<'_> {
-    fn peek(&self) -> Option<&Token> {
-        self.tokens.get(self.pos).map(|(_, t)| t)
-    }
-
-    fn error(&self, message: &str) -> ParseError {
-        ParseError {
-            position: self
-                .tokens
-                .get(self.pos)
-                .map(|(p, _)| *p)
-                .unwrap_or(usize::MAX),
-            message: message.to_string(),
-        }
-    }
-
-    fn sum(&mut self) -> Result<RatFn, ParseError> {
-        let mut acc = match self.peek() {
-            Some(Token::Op('-')) => {
-                self.pos += 1;
-                -&self.product()?
-            }
-            Some(Token::Op('+')) => {
-                self.pos += 1;
-                self.product()?
-            }
-            _ => self.product()?,
-        };
-        loop {
-            match self.peek() {
-                Some(Token::Op('+')) => {
-                    self.pos += 1;
-                    acc = &acc + &self.product()?;
-                }
-                Some(Token::Op('-')) => {
-                    self.pos += 1;
-                    acc = &acc - &self.product()?;
-                }
-                _ => return Ok(acc),
-            }
-        }
-    }
-
-    fn product(&mut self) -> Result<RatFn, ParseError> {
-        let mut acc = self.power()?;
-        loop {
-            match self.peek() {
-                Some(Token::Op('*')) => {
-                    self.pos += 1;
-                    acc = &acc * &self.power()?;
-                }
-                Some(Token::Op('/')) => {
-                    self.pos += 1;
-                    let d = self.power()?;
-                    acc = (&acc / &d).ok_or_else(|| self.error("division by zero"))?;
-                }
-                Some(Token::Num(_)) | Some(Token::Ident(_)) | Some(Token::Op('(')) => {
-                    acc = &acc * &self.power()?;
-                }
-                _ => return Ok(acc),
-            }
-        }
-    }
-
-    fn power(&mut self) -> Result<RatFn, ParseError> {
-        let base = self.primary()?;
-        if let Some(Token::Op('^')) = self.peek() {
-            self.pos += 1;
-            match self.peek().cloned() {
-                Some(Token::Num(n)) if n.is_integer() => {
-                    self.pos += 1;
-                    let e = n
-                        .to_integer()
-                        .to_u32()
-                        .ok_or_else(|| self.error("exponent too large"))?;
-                    return Ok(base.pow(e));
-                }
-                _ => return Err(self.error("exponent must be a non-negative integer")),
-            }
-        }
-        Ok(base)
-    }
-
-    fn primary(&mut self) -> Result<RatFn, ParseError> {
-        match self.peek().cloned() {
-            Some(Token::Num(n)) => {
-                self.pos += 1;
-                Ok(Poly::constant(n).into())
-            }
-            Some(Token::Ident(name)) => {
-                self.pos += 1;
-                Ok(match self.defs.get(&name) {
-                    Some(d) => d.clone(),
-                    None => RatFn::var(&name),
-                })
-            }
-            Some(Token::Op('(')) => {
-                self.pos += 1;
-                let inner = self.sum()?;
-                match self.peek() {
-                    Some(Token::Op(')')) => {
-                        self.pos += 1;
-                        Ok(inner)
-                    }
-                    _ => Err(self.error("missing ')'")),
-                }
-            }
-            Some(Token::Op('-')) => {
-                self.pos += 1;
-                Ok(-&self.power()?)
-            }
-            _ => Err(self.error("expected a number, a variable or '('")),
-        }
     }
 }
 

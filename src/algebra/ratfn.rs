@@ -48,13 +48,13 @@ impl RatFn {
 
     /// Parse an expression like [`Poly::parse`], with division by any non-zero expression.
     pub fn parse(text: &str) -> Result<RatFn, ParseError> {
-        super::poly::parse_rational(text, &BTreeMap::new())
+        super::parse::parse_rational(text, &BTreeMap::new())
     }
 
     /// Parse with named definitions: an identifier that has a definition stands for it
     /// (the paper's abbreviations, such as `d_a1` or `f_cb`).
     pub fn parse_with(text: &str, defs: &BTreeMap<String, RatFn>) -> Result<RatFn, ParseError> {
-        super::poly::parse_rational(text, defs)
+        super::parse::parse_rational(text, defs)
     }
 
     /// Whether the two are the same rational function: n₁d₂ = n₂d₁ exactly.
@@ -306,6 +306,123 @@ impl RatFn {
     pub fn one() -> Self {
         Poly::constant(BigRational::one()).into()
     }
+
+    /// The same function in lowest terms: numerator and denominator divided by their gcd
+    /// (each quotient checked by exact division), the denominator with content one and a
+    /// positive leading coefficient, so equal functions get equal parts. When the
+    /// heuristic gcd gives up, only the denominator is normalised.
+    ///
+    /// The arithmetic operators keep the forms they build (a displayed derivation shows the
+    /// factors its steps produced); call this where smallness matters more.
+    ///
+    /// # Example
+    /// ```
+    /// use orthocheck::algebra::{Poly, RatFn};
+    /// let f = RatFn::parse("(2x^2 - 2y^2) / (4x + 4y)").unwrap().reduced();
+    /// assert_eq!((f.num.to_string(), f.den.to_string()), ("1/2*x - 1/2*y".into(), "1".into()));
+    /// ```
+    pub fn reduced(&self) -> RatFn {
+        if self.num.is_zero() {
+            return RatFn::default();
+        }
+        let (num, den) = match self.num.gcd(&self.den) {
+            Some(g) if g.degree() > 0 => match (self.num.div_exact(&g), self.den.div_exact(&g)) {
+                (Some(n), Some(d)) => (n, d),
+                _ => (self.num.clone(), self.den.clone()),
+            },
+            _ => (self.num.clone(), self.den.clone()),
+        };
+        let c = den.primitive().0.recip();
+        RatFn {
+            num: num.scale(&c),
+            den: den.scale(&c),
+        }
+    }
+}
+
+/// A row of rational functions over their common denominator: polynomials, the same
+/// equation multiplied through.
+fn polynomial_row(row: &[RatFn]) -> Vec<Poly> {
+    // l = lcm of the denominators (their product when the gcd gives up)
+    let mut l = Poly::int(1);
+    for f in row {
+        let g = l.gcd(&f.den).unwrap_or_else(|| Poly::int(1));
+        l = &l * &f.den.div_exact(&g).unwrap_or_else(|| f.den.clone());
+    }
+    row.iter()
+        .map(|f| match l.div_exact(&f.den) {
+            Some(k) => &f.num * &k,
+            None => Poly::zero(),
+        })
+        .collect()
+}
+
+/// The determinant by Bareiss's fraction-free elimination: every division is exact
+/// (Sylvester's identity), so entries stay polynomials of bounded size. `None` only if an
+/// exact division failed, which the identity rules out.
+pub fn determinant(m: &[Vec<Poly>]) -> Option<Poly> {
+    let n = m.len();
+    let mut a: Vec<Vec<Poly>> = m.to_vec();
+    let (mut prev, mut negate) = (Poly::int(1), false);
+    for k in 0..n {
+        let Some(p) = (k..n).find(|&r| !a[r][k].is_zero()) else {
+            return Some(Poly::zero());
+        };
+        if p != k {
+            a.swap(k, p);
+            negate = !negate;
+        }
+        for i in k + 1..n {
+            for j in k + 1..n {
+                let t = &(&a[k][k] * &a[i][j]) - &(&a[i][k] * &a[k][j]);
+                a[i][j] = t.div_exact(&prev)?;
+            }
+        }
+        prev = a[k][k].clone();
+    }
+    Some(if negate { -&prev } else { prev })
+}
+
+/// Solve the square system `m · x = rhs` fraction-free: rows over common denominators,
+/// then Cramer's rule with Bareiss determinants, each solution in lowest terms
+/// ([`RatFn::reduced`]); `None` when singular. The same solutions as [`solve_linear`], in
+/// canonical form.
+///
+/// # Example
+/// ```
+/// use orthocheck::algebra::{solve_linear_fraction_free, RatFn};
+/// let m = vec![vec![RatFn::var("u"), RatFn::int(1)], vec![RatFn::int(1), RatFn::var("v")]];
+/// let x = solve_linear_fraction_free(&m, &[RatFn::int(1), RatFn::int(0)]).unwrap();
+/// assert!(x[0].equals(&RatFn::parse("v / (u v - 1)").unwrap()));
+/// ```
+pub fn solve_linear_fraction_free(m: &[Vec<RatFn>], rhs: &[RatFn]) -> Option<Vec<RatFn>> {
+    let n = m.len();
+    let rows: Vec<Vec<Poly>> = m
+        .iter()
+        .zip(rhs)
+        .map(|(r, b)| polynomial_row(&[r.as_slice(), std::slice::from_ref(b)].concat()))
+        .collect();
+    let a: Vec<Vec<Poly>> = rows.iter().map(|r| r[..n].to_vec()).collect();
+    let det = determinant(&a)?;
+    if det.is_zero() {
+        return None;
+    }
+    (0..n)
+        .map(|i| {
+            let mut ai = a.clone();
+            for (row, full) in ai.iter_mut().zip(&rows) {
+                row[i] = full[n].clone();
+            }
+            let num = determinant(&ai)?;
+            Some(
+                RatFn {
+                    num,
+                    den: det.clone(),
+                }
+                .reduced(),
+            )
+        })
+        .collect()
 }
 
 #[cfg(test)]
@@ -325,5 +442,17 @@ mod tests {
         let x = solve_linear(&m, &[RatFn::int(1), RatFn::int(0)]).unwrap();
         assert!(x[0].equals(&RatFn::parse("v / (u v - 1)").unwrap()));
         assert!(RatFn::parse("1/(a - a)").is_err());
+        let y = solve_linear_fraction_free(&m, &[RatFn::int(1), RatFn::int(0)]).unwrap();
+        assert!(x.iter().zip(&y).all(|(a, b)| a.equals(b)));
+    }
+
+    #[test]
+    fn reduction_cancels_and_normalises() {
+        let f = RatFn::parse("(x^2 - y^2)(z + 1) / (3(x - y)(z + 1)^2)").unwrap();
+        let r = f.reduced();
+        assert!(r.equals(&f));
+        assert_eq!(r.num.to_string(), "1/3*x + 1/3*y");
+        assert_eq!(r.den.to_string(), "z + 1");
+        assert_eq!(RatFn::parse("0 / x").unwrap().reduced().den, Poly::int(1));
     }
 }

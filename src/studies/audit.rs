@@ -182,7 +182,7 @@ fn accept(
 /// numerator gets `+1` instead, so that a proportional check cannot absorb the change).
 pub fn flip_one_term(e: &RatFn) -> Option<(Monomial, RatFn)> {
     let (m, c) = e.num.terms().next()?;
-    let term = &Poly::from_monomial(m.clone()).scale(c);
+    let term = &Poly::from_monomial(m.clone()).scale(&c);
     let num = if e.num.len() == 1 {
         &e.num + &Poly::int(1)
     } else {

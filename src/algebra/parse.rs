@@ -1,0 +1,219 @@
+//! The expression parser shared by [`Poly::parse`] and [`RatFn::parse`]: `+ - * / ^`,
+//! parentheses, exact decimals and identifiers; juxtaposition multiplies.
+
+use std::collections::BTreeMap;
+
+use num_bigint::BigInt;
+use num_rational::BigRational;
+use num_traits::ToPrimitive;
+
+use super::{Poly, RatFn};
+use crate::error::ParseError;
+
+/// Parse into a rational function; identifiers with a definition stand for it.
+pub(crate) fn parse_rational(
+    text: &str,
+    defs: &BTreeMap<String, RatFn>,
+) -> Result<RatFn, ParseError> {
+    let tokens = tokenize(text)?;
+    let mut parser = Parser {
+        tokens,
+        pos: 0,
+        defs,
+    };
+    let p = parser.sum()?;
+    if parser.pos != parser.tokens.len() {
+        return Err(parser.error("unexpected input after the expression"));
+    }
+    Ok(p)
+}
+
+#[derive(Clone, Debug, PartialEq)]
+enum Token {
+    Num(BigRational),
+    Ident(String),
+    Op(char),
+}
+
+fn tokenize(text: &str) -> Result<Vec<(usize, Token)>, ParseError> {
+    let chars: Vec<char> = text.chars().collect();
+    let mut out = Vec::new();
+    let mut i = 0;
+    while i < chars.len() {
+        let ch = chars[i];
+        if ch.is_whitespace() {
+            i += 1;
+        } else if ch.is_ascii_digit() || ch == '.' {
+            let start = i;
+            while i < chars.len() && (chars[i].is_ascii_digit() || chars[i] == '.') {
+                i += 1;
+            }
+            let s: String = chars[start..i].iter().collect();
+            let value = parse_decimal(&s).ok_or_else(|| ParseError {
+                position: start,
+                message: format!("'{s}' is not a number"),
+            })?;
+            out.push((start, Token::Num(value)));
+        } else if ch.is_alphabetic() {
+            let start = i;
+            while i < chars.len() && (chars[i].is_alphanumeric() || chars[i] == '_') {
+                i += 1;
+            }
+            out.push((start, Token::Ident(chars[start..i].iter().collect())));
+        } else if "+-*/^()".contains(ch) {
+            out.push((i, Token::Op(ch)));
+            i += 1;
+        } else {
+            return Err(ParseError {
+                position: i,
+                message: format!("unexpected character '{ch}'"),
+            });
+        }
+    }
+    Ok(out)
+}
+
+/// An exact decimal such as `1.2345` or `-16`; `None` if malformed.
+pub fn parse_decimal(s: &str) -> Option<BigRational> {
+    let (neg, body) = match s.strip_prefix('-') {
+        Some(rest) => (true, rest),
+        None => (false, s.strip_prefix('+').unwrap_or(s)),
+    };
+    let (int, frac) = match body.split_once('.') {
+        Some((i, f)) => (i, f),
+        None => (body, ""),
+    };
+    if (int.is_empty() && frac.is_empty())
+        || !int.chars().all(|c| c.is_ascii_digit())
+        || !frac.chars().all(|c| c.is_ascii_digit())
+    {
+        return None;
+    }
+    let digits = format!("{int}{frac}");
+    let num: BigInt = digits.parse().ok()?;
+    let den = num_traits::pow(BigInt::from(10), frac.len());
+    let v = BigRational::new(num, den);
+    Some(if neg { -v } else { v })
+}
+
+struct Parser<'a> {
+    tokens: Vec<(usize, Token)>,
+    pos: usize,
+    defs: &'a BTreeMap<String, RatFn>,
+}
+
+impl Parser<'_> {
+    fn peek(&self) -> Option<&Token> {
+        self.tokens.get(self.pos).map(|(_, t)| t)
+    }
+
+    fn error(&self, message: &str) -> ParseError {
+        ParseError {
+            position: self
+                .tokens
+                .get(self.pos)
+                .map(|(p, _)| *p)
+                .unwrap_or(usize::MAX),
+            message: message.to_string(),
+        }
+    }
+
+    fn sum(&mut self) -> Result<RatFn, ParseError> {
+        let mut acc = match self.peek() {
+            Some(Token::Op('-')) => {
+                self.pos += 1;
+                -&self.product()?
+            }
+            Some(Token::Op('+')) => {
+                self.pos += 1;
+                self.product()?
+            }
+            _ => self.product()?,
+        };
+        loop {
+            match self.peek() {
+                Some(Token::Op('+')) => {
+                    self.pos += 1;
+                    acc = &acc + &self.product()?;
+                }
+                Some(Token::Op('-')) => {
+                    self.pos += 1;
+                    acc = &acc - &self.product()?;
+                }
+                _ => return Ok(acc),
+            }
+        }
+    }
+
+    fn product(&mut self) -> Result<RatFn, ParseError> {
+        let mut acc = self.power()?;
+        loop {
+            match self.peek() {
+                Some(Token::Op('*')) => {
+                    self.pos += 1;
+                    acc = &acc * &self.power()?;
+                }
+                Some(Token::Op('/')) => {
+                    self.pos += 1;
+                    let d = self.power()?;
+                    acc = (&acc / &d).ok_or_else(|| self.error("division by zero"))?;
+                }
+                Some(Token::Num(_)) | Some(Token::Ident(_)) | Some(Token::Op('(')) => {
+                    acc = &acc * &self.power()?;
+                }
+                _ => return Ok(acc),
+            }
+        }
+    }
+
+    fn power(&mut self) -> Result<RatFn, ParseError> {
+        let base = self.primary()?;
+        if let Some(Token::Op('^')) = self.peek() {
+            self.pos += 1;
+            match self.peek().cloned() {
+                Some(Token::Num(n)) if n.is_integer() => {
+                    self.pos += 1;
+                    let e = n
+                        .to_integer()
+                        .to_u32()
+                        .ok_or_else(|| self.error("exponent too large"))?;
+                    return Ok(base.pow(e));
+                }
+                _ => return Err(self.error("exponent must be a non-negative integer")),
+            }
+        }
+        Ok(base)
+    }
+
+    fn primary(&mut self) -> Result<RatFn, ParseError> {
+        match self.peek().cloned() {
+            Some(Token::Num(n)) => {
+                self.pos += 1;
+                Ok(Poly::constant(n).into())
+            }
+            Some(Token::Ident(name)) => {
+                self.pos += 1;
+                Ok(match self.defs.get(&name) {
+                    Some(d) => d.clone(),
+                    None => RatFn::var(&name),
+                })
+            }
+            Some(Token::Op('(')) => {
+                self.pos += 1;
+                let inner = self.sum()?;
+                match self.peek() {
+                    Some(Token::Op(')')) => {
+                        self.pos += 1;
+                        Ok(inner)
+                    }
+                    _ => Err(self.error("missing ')'")),
+                }
+            }
+            Some(Token::Op('-')) => {
+                self.pos += 1;
+                Ok(-&self.power()?)
+            }
+            _ => Err(self.error("expected a number, a variable or '('")),
+        }
+    }
+}
