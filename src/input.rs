@@ -189,9 +189,21 @@ fn parse_csv(text: &str, path: &Path, order: PointOrder) -> Result<Tracks> {
             format!("expected `frame,point,x,y`, found `{header}`"),
         ));
     }
+    let (frame_ids, rows) = csv_rows(lines, path)?;
+    csv_frames(&frame_ids, &rows, path, hline, order)
+}
+
+/// One CSV row: a point's name, its image position and its line.
+type CsvRow = (String, Vector2<f64>, u64);
+
+/// The rows of a CSV tracks file, grouped by frame in order of first appearance.
+fn csv_rows<'t>(
+    lines: impl Iterator<Item = (u64, &'t str)>,
+    path: &Path,
+) -> Result<(Vec<String>, Vec<Vec<CsvRow>>)> {
     // frames in order of first appearance; each a list of (name, point, line)
     let mut frame_ids: Vec<String> = Vec::new();
-    let mut rows: Vec<Vec<(String, Vector2<f64>, u64)>> = Vec::new();
+    let mut rows: Vec<Vec<CsvRow>> = Vec::new();
     // hashed look-ups keep reading linear in the number of rows
     let mut frame_index: HashMap<String, usize> = HashMap::new();
     let mut seen: HashSet<(usize, String)> = HashSet::new();
@@ -242,6 +254,17 @@ fn parse_csv(text: &str, path: &Path, order: PointOrder) -> Result<Tracks> {
         }
         rows[idx].push((f[1].to_string(), Vector2::new(xy[0], xy[1]), line));
     }
+    Ok((frame_ids, rows))
+}
+
+/// The frames of grouped CSV rows, every frame with the points of the first.
+fn csv_frames(
+    frame_ids: &[String],
+    rows: &[Vec<CsvRow>],
+    path: &Path,
+    hline: u64,
+    order: PointOrder,
+) -> Result<Tracks> {
     let Some(first) = rows.first() else {
         return Err(located(path, Some(hline), "frame", "no rows".into()));
     };

@@ -511,14 +511,17 @@ pub(super) fn correct(
 mod tests {
     use super::*;
 
+    /// A floating-point error bound of the size the recomputation derives (≈ 450 ulps).
+    const FLOAT: f64 = 450.0 * f64::EPSILON;
+
     #[test]
     fn number_judge_both_sides() {
-        let c = judge_number(23.9807, 5e-5, 23.98071, 1e-6, 1e-13, 100.0, 5e-6);
+        let c = judge_number(23.9807, 5e-5, 23.98071, 1e-6, FLOAT, 100.0, 5e-6);
         assert!(c.agree && !c.rounding_level && c.mutant_rejected);
-        let far = judge_number(23.9807, 5e-5, 23.9812, 1e-6, 1e-13, 100.0, 5e-6);
+        let far = judge_number(23.9807, 5e-5, 23.9812, 1e-6, FLOAT, 100.0, 5e-6);
         assert!(!far.agree);
         // a printed rounding-level number: agrees, but its digits are not determined
-        let z = judge_number(2.3e-14, 5e-20, 3e-7, 1e-6, 1e-13, 100.0, 5e-6);
+        let z = judge_number(2.3e-14, 5e-20, 3e-7, 1e-6, FLOAT, 100.0, 5e-6);
         assert!(z.agree && z.rounding_level);
         // a bound far wider than the mutant: the mutant is accepted
         let wide = judge_number(1.0, 5e-6, 1.0, 1e-2, 0.0, 100.0, 5e-6);
