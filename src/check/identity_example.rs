@@ -310,13 +310,13 @@ mod tests {
 
     #[test]
     fn square_judge_both_sides() {
-        // 4.89898² = 23.99999… against 24 with six significant digits
-        assert!(length_matches_square(4.89898, 5e-6, 24.0, 5e-5));
-        assert!(!length_matches_square(4.899, 5e-6, 24.0, 5e-5));
+        // 5.47723² = 30.00004… against 30 with six significant digits
+        assert!(length_matches_square(5.47723, 5e-6, 30.0, 5e-5));
+        assert!(!length_matches_square(5.4775, 5e-6, 30.0, 5e-5));
         assert!(!length_matches_square(
-            6.40312 + 100.0 * 5e-6,
+            5.19615 + 100.0 * 5e-6,
             5e-6,
-            41.0,
+            27.0,
             0.0
         ));
     }
@@ -325,7 +325,7 @@ mod tests {
     fn printed_zero_has_no_rounding_in_g_format() {
         let z = Printed::parse("-0").unwrap();
         assert_eq!(num_g(&z, 6).half, 0.0);
-        let x = Printed::parse("23.9807").unwrap();
+        let x = Printed::parse("12.3456").unwrap();
         assert!((num_g(&x, 6).half - 5e-5).abs() < 1e-18);
     }
 }

@@ -516,9 +516,9 @@ mod tests {
 
     #[test]
     fn number_judge_both_sides() {
-        let c = judge_number(23.9807, 5e-5, 23.98071, 1e-6, FLOAT, 100.0, 5e-6);
+        let c = judge_number(12.3456, 5e-5, 12.34561, 1e-6, FLOAT, 100.0, 5e-6);
         assert!(c.agree && !c.rounding_level && c.mutant_rejected);
-        let far = judge_number(23.9807, 5e-5, 23.9812, 1e-6, FLOAT, 100.0, 5e-6);
+        let far = judge_number(12.3456, 5e-5, 12.3461, 1e-6, FLOAT, 100.0, 5e-6);
         assert!(!far.agree);
         // a printed rounding-level number: agrees, but its digits are not determined
         let z = judge_number(2.3e-14, 5e-20, 3e-7, 1e-6, FLOAT, 100.0, 5e-6);
@@ -533,8 +533,8 @@ mod tests {
         assert_eq!(judge_debug(384, 384, 0), Verdict::ReproducedWithinRounding);
         assert_eq!(judge_debug(383, 384, 0), Verdict::Contradicted);
         assert_eq!(judge_debug(384, 384, 1), Verdict::Contradicted);
-        let cand = [(-2.10003, 1e-6), (-1.72575, 1e-6)];
-        assert_eq!(match_ratio(-2.10003, 5e-6, &cand), Some(0));
-        assert_eq!(match_ratio(-2.1005, 5e-6, &cand), None);
+        let cand = [(-3.14159, 1e-6), (-1.23456, 1e-6)];
+        assert_eq!(match_ratio(-3.14159, 5e-6, &cand), Some(0));
+        assert_eq!(match_ratio(-3.1420, 5e-6, &cand), None);
     }
 }
