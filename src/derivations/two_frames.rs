@@ -271,94 +271,154 @@ pub struct Counterexample {
 /// two pairs of views are compared.
 pub fn counterexample(pts: [Vector3<f64>; 5]) -> Option<Counterexample> {
     let [p, q, r, q2, r2] = pts;
-    let u1 = (q2 - q).try_normalize(f64::EPSILON)?;
+    let c = Construction::new(pts)?;
     let sides = [(q - p).norm(), (r - q).norm(), (p - r).norm()];
     let sides_prime = [(q2 - p).norm(), (r2 - q2).norm(), (p - r2).norm()];
-    // an orthonormal basis of the plane orthogonal to u₁
-    let ea = u1
-        .cross(&Vector3::z())
-        .try_normalize(1e-6)
-        .unwrap_or_else(|| u1.cross(&Vector3::y()).normalize());
-    let eb = u1.cross(&ea);
-    let setup = |x: &[f64]| {
-        let n = ea * x[0].cos() + eb * x[0].sin();
-        let m = n.cross(&u1);
-        let u2 = u1 * x[1].cos() + m * x[1].sin();
-        let rot = Rotation3::from_axis_angle(&nalgebra::Unit::new_normalize(n), x[2]);
-        (n, u2, rot)
-    };
-    let size = sides
-        .iter()
-        .chain(&sides_prime)
-        .fold(f64::MIN_POSITIVE, |a, b| a.max(*b));
-    let residual = |x: &[f64]| -> Option<Vec<f64>> {
-        let (_, u2, rot) = setup(x);
-        let w = rot * u2;
-        let mut out = Vec::with_capacity(6);
-        for (orig, moved) in [(q, q2), (r, r2)] {
-            let c = (moved - p - rot * (orig - p)).cross(&w) / size;
-            out.extend([c.x, c.y, c.z]);
-        }
-        Some(out)
-    };
-    let mut found = None;
-    'grid: for i in 0..6 {
-        for j in 0..6 {
-            for k in 0..12 {
-                let start = [
-                    0.25 + 0.5 * i as f64,
-                    0.2 + 0.5 * j as f64,
-                    -3.0 + 0.5 * k as f64,
-                ];
-                let Some((x, res)) = crate::algebra::min_norm_newton(&residual, &start, 1e-15, 50)
-                else {
-                    continue;
-                };
-                let (_, u2, rot) = setup(&x);
-                // a genuine construction: a second view away from the first, a real rotation
-                if res <= 1e-15 && u2.cross(&u1).norm() > 0.1 && (rot * u2 - u2).norm() > 1e-3 {
-                    found = Some(x);
-                    break 'grid;
-                }
-            }
-        }
-    }
-    let x = found?;
-    let (axis, u2, rot) = setup(&x);
+    let x = c.solve()?;
+    let (axis, u2, rot) = c.setup(&x);
     let u2_prime = rot * u2;
-    // X′ = q₁ ∩ q₂′: X + s u₁ = P + rot(X − P) + t u₂′, least squares in (s, t)
-    let rebuild = |x: &Vector3<f64>| -> Vector3<f64> {
-        let a = nalgebra::Matrix3x2::from_columns(&[u1, -u2_prime]);
-        let b = p + rot * (x - p) - x;
-        let st = (a.transpose() * a)
-            .try_inverse()
-            .map(|m| m * a.transpose() * b);
-        st.map_or(*x, |st| x + u1 * st[0])
-    };
-    let e = [q - p, r - q, p - r];
-    let e2 = [q2 - p, r2 - q2, p - r2];
-    let proj = |d: &Vector3<f64>, u: &Vector3<f64>| d.norm_squared() - d.dot(u).powi(2);
-    let image_mismatch = e
-        .iter()
-        .zip(&e2)
-        .map(|(a, b)| {
-            (proj(a, &u2) - proj(b, &u2_prime))
-                .abs()
-                .max((proj(a, &u1) - proj(b, &u1)).abs())
-                / (size * size)
-        })
-        .fold(0.0, f64::max);
     Some(Counterexample {
         sides,
         sides_prime,
-        u1,
+        u1: c.u1,
         u2,
         u2_prime,
         axis,
         angle: x[2].sin().atan2(x[2].cos()),
-        image_mismatch,
-        rebuilt: [rebuild(&q), rebuild(&r)],
+        image_mismatch: c.image_mismatch(&u2, &u2_prime),
+        rebuilt: [
+            c.rebuild(&q, &rot, &u2_prime),
+            c.rebuild(&r, &rot, &u2_prime),
+        ],
     })
+}
+
+/// The construction of §5.1 over the printed points, as a function of its unknowns (φ, ψ, θ).
+struct Construction {
+    /// P, Q, R, Q′, R′.
+    pts: [Vector3<f64>; 5],
+    /// The first view, along Q′ − Q.
+    u1: Vector3<f64>,
+    /// With `eb`, an orthonormal basis of the plane orthogonal to u₁.
+    ea: Vector3<f64>,
+    /// u₁ × ea.
+    eb: Vector3<f64>,
+    /// The longest side of either triangle: residuals are relative to it.
+    size: f64,
+}
+
+impl Construction {
+    fn new(pts: [Vector3<f64>; 5]) -> Option<Self> {
+        let [p, q, r, q2, r2] = pts;
+        let u1 = (q2 - q).try_normalize(f64::EPSILON)?;
+        let sides = [(q - p).norm(), (r - q).norm(), (p - r).norm()];
+        let sides_prime = [(q2 - p).norm(), (r2 - q2).norm(), (p - r2).norm()];
+        // an orthonormal basis of the plane orthogonal to u₁
+        let ea = u1
+            .cross(&Vector3::z())
+            .try_normalize(1e-6)
+            .unwrap_or_else(|| u1.cross(&Vector3::y()).normalize());
+        let eb = u1.cross(&ea);
+        let size = sides
+            .iter()
+            .chain(&sides_prime)
+            .fold(f64::MIN_POSITIVE, |a, b| a.max(*b));
+        Some(Self {
+            pts,
+            u1,
+            ea,
+            eb,
+            size,
+        })
+    }
+
+    /// The axis n (angle φ about u₁), the second view u₂ ⟂ n (angle ψ) and the rotation θ
+    /// about n.
+    fn setup(&self, x: &[f64]) -> (Vector3<f64>, Vector3<f64>, Rotation3<f64>) {
+        let n = self.ea * x[0].cos() + self.eb * x[0].sin();
+        let m = n.cross(&self.u1);
+        let u2 = self.u1 * x[1].cos() + m * x[1].sin();
+        let rot = Rotation3::from_axis_angle(&nalgebra::Unit::new_normalize(n), x[2]);
+        (n, u2, rot)
+    }
+
+    /// Q′ and R′ off the lines through P + rot(X − P) along rot(u₂), relative to the size.
+    fn residual(&self, x: &[f64]) -> Option<Vec<f64>> {
+        let [p, q, r, q2, r2] = self.pts;
+        let (_, u2, rot) = self.setup(x);
+        let w = rot * u2;
+        let mut out = Vec::with_capacity(6);
+        for (orig, moved) in [(q, q2), (r, r2)] {
+            let c = (moved - p - rot * (orig - p)).cross(&w) / self.size;
+            out.extend([c.x, c.y, c.z]);
+        }
+        Some(out)
+    }
+
+    /// A member of the construction's family: minimum-norm Newton from a fixed grid of starts.
+    fn solve(&self) -> Option<Vec<f64>> {
+        let residual = |x: &[f64]| self.residual(x);
+        for i in 0..6 {
+            for j in 0..6 {
+                for k in 0..12 {
+                    let start = [
+                        0.25 + 0.5 * i as f64,
+                        0.2 + 0.5 * j as f64,
+                        -3.0 + 0.5 * k as f64,
+                    ];
+                    let Some((x, res)) =
+                        crate::algebra::min_norm_newton(&residual, &start, 1e-15, 50)
+                    else {
+                        continue;
+                    };
+                    let (_, u2, rot) = self.setup(&x);
+                    // a genuine construction: a second view away from the first, a real rotation
+                    if res <= 1e-15
+                        && u2.cross(&self.u1).norm() > 0.1
+                        && (rot * u2 - u2).norm() > 1e-3
+                    {
+                        return Some(x);
+                    }
+                }
+            }
+        }
+        None
+    }
+
+    /// X′ = q₁ ∩ q₂′: X + s u₁ = P + rot(X − P) + t u₂′, least squares in (s, t).
+    fn rebuild(
+        &self,
+        x: &Vector3<f64>,
+        rot: &Rotation3<f64>,
+        u2_prime: &Vector3<f64>,
+    ) -> Vector3<f64> {
+        let p = self.pts[0];
+        let a = nalgebra::Matrix3x2::from_columns(&[self.u1, -u2_prime]);
+        let b = p + rot * (x - p) - x;
+        let st = (a.transpose() * a)
+            .try_inverse()
+            .map(|m| m * a.transpose() * b);
+        st.map_or(*x, |st| x + self.u1 * st[0])
+    }
+
+    /// Largest difference of a projected squared side between the views 2 and between the
+    /// views 1, relative to the largest squared side.
+    fn image_mismatch(&self, u2: &Vector3<f64>, u2_prime: &Vector3<f64>) -> f64 {
+        let [p, q, r, q2, r2] = self.pts;
+        let u1 = self.u1;
+        let e = [q - p, r - q, p - r];
+        let e2 = [q2 - p, r2 - q2, p - r2];
+        let proj = |d: &Vector3<f64>, u: &Vector3<f64>| d.norm_squared() - d.dot(u).powi(2);
+        e.iter()
+            .zip(&e2)
+            .map(|(a, b)| {
+                (proj(a, u2) - proj(b, u2_prime))
+                    .abs()
+                    .max((proj(a, &u1) - proj(b, &u1)).abs())
+                    / (self.size * self.size)
+            })
+            .fold(0.0, f64::max)
+    }
 }
 
 /// The orthographic image of `points` along the unit direction `u`, in a basis of the plane
@@ -448,27 +508,45 @@ pub struct FourthRelation {
 /// seeded rational scene for the ranks).
 pub fn fourth_relation(seed: u64) -> FourthRelation {
     let f: Vec<Poly> = TRIANGLES.iter().map(|t| frame_equation(*t, "i")).collect();
-    let edges = ["a", "b", "c", "d", "f", "g"];
-    // coefficients of each monomial in the edge lengths, as polynomials in the projections
-    let split = |p: &Poly| -> BTreeMap<Monomial, Poly> {
-        let mut out: BTreeMap<Monomial, Poly> = BTreeMap::new();
-        for (m, c) in p.terms() {
-            let (mut e, mut rest) = (Poly::int(1), Poly::constant(c.clone()));
-            for (v, k) in m.factors() {
-                let x = Poly::var(v).pow(*k);
-                if edges.contains(&v.as_str()) {
-                    e = &e * &x;
-                } else {
-                    rest = &rest * &x;
-                }
+    let (linear, obstruction) = linear_dependence(&f);
+    let (shown, counterexample_values) = squares_counterexample(&f);
+    let rows = frame_rows(seed);
+    FourthRelation {
+        linear,
+        obstruction,
+        counterexample: shown,
+        counterexample_values,
+        rank_three: exact_rank(&rows[..3]).0,
+        rank_four: exact_rank(&rows).0,
+    }
+}
+
+/// The edge letters, in the column order of the frame rows.
+const EDGES: [&str; 6] = ["a", "b", "c", "d", "f", "g"];
+
+/// The coefficients of each monomial in the edge lengths, as polynomials in the projections.
+fn edge_coefficients(p: &Poly) -> BTreeMap<Monomial, Poly> {
+    let mut out: BTreeMap<Monomial, Poly> = BTreeMap::new();
+    for (m, c) in p.terms() {
+        let (mut e, mut rest) = (Poly::int(1), Poly::constant(c.clone()));
+        for (v, k) in m.factors() {
+            let x = Poly::var(v).pow(*k);
+            if EDGES.contains(&v.as_str()) {
+                e = &e * &x;
+            } else {
+                rest = &rest * &x;
             }
-            let key = e.terms().next().map(|(m, _)| m.clone()).unwrap_or_default();
-            let entry = out.entry(key).or_default();
-            *entry = &*entry + &rest;
         }
-        out
-    };
-    let parts: Vec<BTreeMap<Monomial, Poly>> = f.iter().map(split).collect();
+        let key = e.terms().next().map(|(m, _)| m.clone()).unwrap_or_default();
+        let entry = out.entry(key).or_default();
+        *entry = &*entry + &rest;
+    }
+    out
+}
+
+/// Whether F_PQR = λ₁F_PQT + λ₂F_QRT + λ₃F_RPT for rational functions λ, and if not, why.
+fn linear_dependence(f: &[Poly]) -> (bool, Option<String>) {
+    let parts: Vec<BTreeMap<Monomial, Poly>> = f.iter().map(edge_coefficients).collect();
     let monomials: BTreeSet<Monomial> = parts.iter().flat_map(|p| p.keys().cloned()).collect();
     let coef =
         |t: usize, m: &Monomial| -> RatFn { parts[t].get(m).cloned().unwrap_or_default().into() };
@@ -483,36 +561,39 @@ pub fn fourth_relation(seed: u64) -> FourthRelation {
         .map(|mm| (0..3).map(|t| coef(t, mm)).collect())
         .collect();
     let rhs: Vec<RatFn> = pick.iter().map(|mm| coef(3, mm)).collect();
-    let (linear, obstruction) = match solve_linear(&m, &rhs) {
-        None => (
+    let Some(lambda) = solve_linear(&m, &rhs) else {
+        return (
             false,
             Some("the a⁴, b⁴, c⁴ coefficients admit no λ".to_string()),
-        ),
-        Some(lambda) => {
-            let sum = |mm: &Monomial| {
-                (0..3).fold(RatFn::default(), |acc, t| {
-                    &acc + &(&lambda[t] * &coef(t, mm))
-                })
-            };
-            // the shortest contradicting coefficient makes the clearest reason
-            let bad = monomials
-                .iter()
-                .filter(|mm| !sum(mm).equals(&coef(3, mm)))
-                .min_by_key(|mm| sum(mm).num.len() + coef(3, mm).num.len());
-            match bad {
-                None => (true, None),
-                Some(mm) => (
-                    false,
-                    Some(format!(
-                        "λ = (1, 1, 1) from a⁴, b⁴, c⁴, but then the coefficient of {} is {} instead of {}",
-                        Poly::from_monomial(mm.clone()),
-                        sum(mm).num,
-                        coef(3, mm).num
-                    )),
-                ),
-            }
-        }
+        );
     };
+    let sum = |mm: &Monomial| {
+        (0..3).fold(RatFn::default(), |acc, t| {
+            &acc + &(&lambda[t] * &coef(t, mm))
+        })
+    };
+    // the shortest contradicting coefficient makes the clearest reason
+    let bad = monomials
+        .iter()
+        .filter(|mm| !sum(mm).equals(&coef(3, mm)))
+        .min_by_key(|mm| sum(mm).num.len() + coef(3, mm).num.len());
+    match bad {
+        None => (true, None),
+        Some(mm) => (
+            false,
+            Some(format!(
+                "λ = (1, 1, 1) from a⁴, b⁴, c⁴, but then the coefficient of {} is {} instead of {}",
+                Poly::from_monomial(mm.clone()),
+                sum(mm).num,
+                coef(3, mm).num
+            )),
+        ),
+    }
+}
+
+/// Squared depth differences where the three twofold-squared relations hold and the fourth
+/// does not, with the four equations' values there.
+fn squares_counterexample(f: &[Poly]) -> (Vec<(String, BigRational)>, Vec<BigRational>) {
     // depth differences with signs chosen per triangle: √D = 3, √F = 2, √G = 1 and
     // √A = √G + √F, √B = √D + √G, √C = √F + √D; then ±√A ± √B ± √C = ±3 ± 4 ± 5 ≠ 0.
     // The projections are arbitrary (1, 2, … in the squares).
@@ -527,7 +608,7 @@ pub fn fourth_relation(seed: u64) -> FourthRelation {
         shown.push((format!("{}² − {}ᵢ²", e, e), rat(*dd, 1)));
     }
     let in_squares = |p: &Poly| -> Poly {
-        edges.iter().fold(p.clone(), |q, e| {
+        EDGES.iter().fold(p.clone(), |q, e| {
             let q = crate::derivations::appendix_a::in_squares(&q, e, &format!("{e}^2"))
                 .unwrap_or_default();
             crate::derivations::appendix_a::in_squares(&q, &format!("{e}_i"), &format!("{e}_i^2"))
@@ -542,7 +623,24 @@ pub fn fourth_relation(seed: u64) -> FourthRelation {
                 .unwrap_or_else(BigRational::zero)
         })
         .collect();
-    // ranks at a rational scene: rows 2(αᵢ − α₁) …, constant Kᵢ − K₁, per triangle
+    (shown, counterexample_values)
+}
+
+/// The point indices (P, Q, R, T = 0, 1, 2, 3) of an edge letter.
+fn edge_points(e: &str) -> (usize, usize) {
+    match e {
+        "a" => (0, 1),
+        "b" => (1, 2),
+        "c" => (2, 0),
+        "d" => (3, 2),
+        "f" => (3, 0),
+        _ => (3, 1),
+    }
+}
+
+/// The frame-differenced equation of each triangle at a seeded rational scene: rows
+/// 2(αᵢ − α₁) … in the edge columns, constant Kᵢ − K₁ last.
+fn frame_rows(seed: u64) -> Vec<Vec<BigRational>> {
     let scene = RationalScene::random(4, 2, seed);
     let proj = |fi: usize, i: usize, j: usize| -> BigRational {
         let r = &scene.rotations[fi];
@@ -555,53 +653,38 @@ pub fn fourth_relation(seed: u64) -> FourthRelation {
             })
             .sum()
     };
-    let pts = |e: &str| -> (usize, usize) {
-        match e {
-            "a" => (0, 1),
-            "b" => (1, 2),
-            "c" => (2, 0),
-            "d" => (3, 2),
-            "f" => (3, 0),
-            _ => (3, 1),
-        }
-    };
     let row = |t: &[&str; 3]| -> Vec<BigRational> {
         let l = |fi: usize| -> [BigRational; 3] {
             t.map(|e| {
-                let (i, j) = pts(e);
+                let (i, j) = edge_points(e);
                 proj(fi, i, j)
             })
         };
-        let coeffs = |x: &[BigRational; 3]| {
-            let two = rat(2, 1);
-            (
-                [
-                    &two * (-&x[0] + &x[1] + &x[2]),
-                    &two * (&x[0] - &x[1] + &x[2]),
-                    &two * (&x[0] + &x[1] - &x[2]),
-                ],
-                &x[0] * &x[0] + &x[1] * &x[1] + &x[2] * &x[2]
-                    - &two * (&x[0] * &x[1] + &x[0] * &x[2] + &x[1] * &x[2]),
-            )
-        };
-        let ((c2, k2), (c1, k1)) = (coeffs(&l(1)), coeffs(&l(0)));
+        let ((c2, k2), (c1, k1)) = (equation_coefficients(&l(1)), equation_coefficients(&l(0)));
         let mut r = vec![BigRational::zero(); 7];
         for (k, e) in t.iter().enumerate() {
-            let col = edges.iter().position(|x| x == e).unwrap_or(0);
+            let col = EDGES.iter().position(|x| x == e).unwrap_or(0);
             r[col] = &c2[k] - &c1[k];
         }
         r[6] = k2 - k1;
         r
     };
-    let rows: Vec<Vec<BigRational>> = TRIANGLES.iter().map(row).collect();
-    FourthRelation {
-        linear,
-        obstruction,
-        counterexample: shown,
-        counterexample_values,
-        rank_three: exact_rank(&rows[..3]).0,
-        rank_four: exact_rank(&rows).0,
-    }
+    TRIANGLES.iter().map(row).collect()
+}
+
+/// The coefficients of a triangle's equation in its three squared edge lengths, and its
+/// constant, from the three squared projections.
+fn equation_coefficients(x: &[BigRational; 3]) -> ([BigRational; 3], BigRational) {
+    let two = rat(2, 1);
+    (
+        [
+            &two * (-&x[0] + &x[1] + &x[2]),
+            &two * (&x[0] - &x[1] + &x[2]),
+            &two * (&x[0] + &x[1] - &x[2]),
+        ],
+        &x[0] * &x[0] + &x[1] * &x[1] + &x[2] * &x[2]
+            - &two * (&x[0] * &x[1] + &x[0] * &x[2] + &x[1] * &x[2]),
+    )
 }
 
 #[cfg(test)]

@@ -170,6 +170,18 @@ fn claim_html(c: &ClaimResult, figures: &[&Figure]) -> String {
 /// The whole page.
 pub fn render(r: &Report) -> String {
     let mut s = String::from("<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">");
+    push_header(&mut s, r);
+    push_seeds(&mut s, r);
+    push_summary(&mut s, r);
+    push_errata(&mut s, r);
+    push_sections(&mut s, r);
+    push_further_figures(&mut s, r);
+    s.push_str("</body></html>\n");
+    s
+}
+
+/// The page title, the stylesheet and the header with the provenance.
+fn push_header(s: &mut String, r: &Report) {
     let title = r.paper.as_ref().map_or("", |p| p.title.as_str());
     let author = r.paper.as_ref().map_or("", |p| p.author.as_str());
     let _ = write!(
@@ -177,7 +189,6 @@ pub fn render(r: &Report) -> String {
         "<title>Reproducibility report — {}</title><style>{CSS}</style></head><body>",
         escape(title)
     );
-    // header
     let p = &r.provenance;
     let _ = write!(
         s,
@@ -190,8 +201,12 @@ pub fn render(r: &Report) -> String {
         escape(p.date.as_deref().unwrap_or("unknown")),
         escape(&p.command)
     );
+}
+
+/// The collapsed table of the seeds of every case.
+fn push_seeds(s: &mut String, r: &Report) {
     s.push_str("<details><summary>seeds of every case</summary><table><tr><th>case</th><th>file</th><th>seeds</th></tr>");
-    for cs in &p.seeds {
+    for cs in &r.provenance.seeds {
         let _ = write!(
             s,
             "<tr><td>{}</td><td><code>{}</code></td><td>{}</td></tr>",
@@ -205,7 +220,10 @@ pub fn render(r: &Report) -> String {
         );
     }
     s.push_str("</table></details>");
-    // summary
+}
+
+/// The count of claims per verdict.
+fn push_summary(s: &mut String, r: &Report) {
     s.push_str("<h2 id=\"summary\">Summary</h2><table><tr><th>verdict</th><th>claims</th></tr>");
     for v in Verdict::ALL {
         let _ = write!(
@@ -215,7 +233,12 @@ pub fn render(r: &Report) -> String {
             r.summary.get(v.name()).copied().unwrap_or(0)
         );
     }
-    s.push_str("</table><h3>Errata, contradicted claims and unnamed exceptions</h3><ul>");
+    s.push_str("</table>");
+}
+
+/// The list of errata, contradicted claims and exceptions the paper never names.
+fn push_errata(s: &mut String, r: &Report) {
+    s.push_str("<h3>Errata, contradicted claims and unnamed exceptions</h3><ul>");
     for c in r.claims.iter().filter(|c| {
         matches!(
             c.verdict,
@@ -234,7 +257,10 @@ pub fn render(r: &Report) -> String {
         );
     }
     s.push_str("</ul>");
-    // sections
+}
+
+/// The claims grouped by paper section, in reading order, each with its figures.
+fn push_sections(s: &mut String, r: &Report) {
     let mut sections: BTreeMap<(u32, Vec<u32>, String), Vec<&ClaimResult>> = BTreeMap::new();
     for c in &r.claims {
         let (a, b) = section_key(&c.section);
@@ -255,6 +281,10 @@ pub fn render(r: &Report) -> String {
             s.push_str(&claim_html(c, &figs));
         }
     }
+}
+
+/// Figures whose claim id has no result of its own.
+fn push_further_figures(s: &mut String, r: &Report) {
     // figures whose claim has several results are shown with the first of them
     let shown: Vec<&str> = r.claims.iter().map(|c| c.id.as_str()).collect();
     let rest: Vec<&Figure> = r
@@ -268,6 +298,4 @@ pub fn render(r: &Report) -> String {
             s.push_str(&figure_html(f));
         }
     }
-    s.push_str("</body></html>\n");
-    s
 }
