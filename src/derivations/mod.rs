@@ -4,6 +4,7 @@
 pub mod appendix_a;
 pub mod dof;
 pub mod formulas;
+pub mod fourth_relation;
 pub mod identity;
 pub mod identity5;
 pub mod noise;
