@@ -82,7 +82,7 @@ fn emit<T: serde::Serialize>(
 /// write failure (a full disk) is an error.
 fn out(text: &str) -> Result<(), Error> {
     use std::io::Write as _;
-    if let Some(bad) = non_finite_token(text) {
+    if let Some(bad) = orthocheck::report::values::non_finite_token(text) {
         return Err(Error::Numerical(format!(
             "a non-finite value (`{bad}`) reached the output; nothing was printed"
         )));
@@ -99,18 +99,6 @@ fn out(text: &str) -> Result<(), Error> {
             message: e.to_string(),
         }),
     }
-}
-
-/// The first word of `text` that spells a non-finite float as the formatters print one.
-fn non_finite_token(text: &str) -> Option<&str> {
-    text.split(|c: char| !(c.is_ascii_alphanumeric() || c == '-' || c == '.'))
-        .map(|w| w.trim_matches('.'))
-        .find(|w| {
-            matches!(
-                *w,
-                "NaN" | "-NaN" | "nan" | "inf" | "-inf" | "infinity" | "-infinity"
-            )
-        })
 }
 
 /// Pretty JSON (an error object in the impossible case that serialising fails).
