@@ -32,10 +32,7 @@ pub use perm::{permutations, permutations4};
 pub use poly::{Monomial, Poly};
 pub use procrustes::{complete_rotation, kabsch, orthonormal_rows};
 pub use rank::{exact_rank, exact_solve, svd_rank, svd_rank_above, ExactRankMethod, SvdRank};
-pub use ratfn::{
-    agree_at_random_points, determinant, solve_linear, solve_linear_fraction_free, PointEvaluation,
-    RatFn,
-};
+pub use ratfn::{determinant, solve_linear, solve_linear_fraction_free, RatFn};
 pub use sturm::{RealRoot, UPoly};
 
 use num_rational::BigRational;

@@ -242,65 +242,6 @@ pub fn solve_linear(m: &[Vec<RatFn>], rhs: &[RatFn]) -> Option<Vec<RatFn>> {
     Some(a.into_iter().map(|r| r[n].clone()).collect())
 }
 
-/// Outcome of evaluating two rational functions at seeded random rational points.
-#[derive(Clone, Debug, PartialEq, serde::Serialize)]
-pub struct PointEvaluation {
-    /// Number of points.
-    pub points: usize,
-    /// Seed of the points.
-    pub seed: u64,
-    /// Points where `left == ratio · right` held exactly.
-    pub agreeing: usize,
-}
-
-/// Schwartz–Zippel check, independent of the expansion: evaluate `left` and `ratio · right`
-/// exactly at seeded random rational points (numerators in [−10⁶, 10⁶], denominators in
-/// [1, 10³]). Two different rational functions agree at such a point with negligible
-/// probability; a point where a denominator vanishes counts as disagreement.
-///
-/// # Example
-/// ```
-/// use orthocheck::algebra::{agree_at_random_points, rat, RatFn};
-/// let l = RatFn::parse("(a + b)^2").unwrap();
-/// let r = RatFn::parse("a^2 + 2a b + b^2").unwrap();
-/// assert_eq!(agree_at_random_points(&l, &r, &rat(1, 1), 16, 3).agreeing, 16);
-/// ```
-pub fn agree_at_random_points(
-    left: &RatFn,
-    right: &RatFn,
-    ratio: &BigRational,
-    points: usize,
-    seed: u64,
-) -> PointEvaluation {
-    use rand::Rng;
-    let mut g = crate::model::rng(seed);
-    let mut vars = left.variables();
-    vars.extend(right.variables());
-    vars.sort();
-    vars.dedup();
-    let mut agreeing = 0;
-    for _ in 0..points {
-        let values: BTreeMap<String, BigRational> = vars
-            .iter()
-            .map(|v| {
-                let n: i64 = g.random_range(-1_000_000..=1_000_000);
-                let d: i64 = g.random_range(1..=1000);
-                (v.clone(), BigRational::new(n.into(), d.into()))
-            })
-            .collect();
-        if let (Some(l), Some(r)) = (left.eval(&values), right.eval(&values)) {
-            if l == r * ratio {
-                agreeing += 1;
-            }
-        }
-    }
-    PointEvaluation {
-        points,
-        seed,
-        agreeing,
-    }
-}
-
 impl RatFn {
     /// One.
     pub fn one() -> Self {
