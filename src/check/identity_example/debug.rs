@@ -100,24 +100,15 @@ fn printed_twelve(a: &DebugAttempt) -> [&Printed; 12] {
     ]
 }
 
-/// Per quantity: (agree, undetermined, mutants rejected, determined) and the widest width of
-/// a determined number; a number is undetermined when it is at rounding level or its
-/// acceptance is wider than the mutant (those go to `ex5-debug/undetermined`).
-fn number_checks(
-    case: &IdentityExampleCase,
-    blocks: &[Block],
-) -> (Vec<[usize; 4]>, Vec<f64>, usize) {
+/// Every printed number of every recomputed block judged against its recomputation:
+/// (block index, quantity index, check).
+fn block_checks(case: &IdentityExampleCase, blocks: &[Block]) -> Vec<(usize, usize, NumberCheck)> {
     let d = case.debug.significant_digits;
     let zero_half = 0.5 * 10f64.powi(1 - d as i32);
     let k = case.debug.mutant_half_units;
-    let mut counts = vec![[0usize; 4]; 12];
-    let mut widest = vec![0.0_f64; 12];
-    let mut unmatched = 0;
-    for bl in blocks {
-        let Some(r) = &bl.recomputed else {
-            unmatched += 1;
-            continue;
-        };
+    let mut out = Vec::new();
+    for (i, bl) in blocks.iter().enumerate() {
+        let Some(r) = &bl.recomputed else { continue };
         for (q, p) in printed_twelve(bl.attempt).iter().enumerate() {
             let n = num_g(p, d);
             let c = judge_number(
@@ -129,14 +120,30 @@ fn number_checks(
                 k,
                 zero_half,
             );
-            counts[q][0] += usize::from(c.agree);
-            if c.rounding_level || !c.mutant_rejected {
-                counts[q][1] += 1;
-            } else {
-                counts[q][2] += 1;
-                counts[q][3] += 1;
-                widest[q] = widest[q].max(c.width);
-            }
+            out.push((i, q, c));
+        }
+    }
+    out
+}
+
+/// Per quantity: (agree, undetermined, mutants rejected, determined) and the widest width of
+/// a determined number; a number is undetermined when it is at rounding level or its
+/// acceptance is wider than the mutant (those go to `ex5-debug/undetermined`).
+fn number_checks(
+    case: &IdentityExampleCase,
+    blocks: &[Block],
+) -> (Vec<[usize; 4]>, Vec<f64>, usize) {
+    let mut counts = vec![[0usize; 4]; 12];
+    let mut widest = vec![0.0_f64; 12];
+    let unmatched = blocks.iter().filter(|bl| bl.recomputed.is_none()).count();
+    for (_, q, c) in block_checks(case, blocks) {
+        counts[q][0] += usize::from(c.agree);
+        if c.rounding_level || !c.mutant_rejected {
+            counts[q][1] += 1;
+        } else {
+            counts[q][2] += 1;
+            counts[q][3] += 1;
+            widest[q] = widest[q].max(c.width);
         }
     }
     (counts, widest, unmatched)
@@ -378,31 +385,15 @@ fn undetermined_result(
     frame1: &[usize; 4],
     blocks: &[Block],
 ) -> ClaimResult {
-    let d = case.debug.significant_digits;
-    let zero_half = 0.5 * 10f64.powi(1 - d as i32);
-    let k = case.debug.mutant_half_units;
     let (mut level, mut wide) = (Vec::new(), Vec::new());
-    for (i, bl) in blocks.iter().enumerate() {
-        let Some(r) = &bl.recomputed else { continue };
-        for (q, p) in printed_twelve(bl.attempt).iter().enumerate() {
-            let n = num_g(p, d);
-            let c = judge_number(
-                n.value,
-                n.half,
-                r.values[q],
-                r.bounds[q],
-                r.float_bound,
-                k,
-                zero_half,
-            );
-            if c.rounding_level {
-                level.push(format!("block {} {}", i + 1, case.debug.quantities[q]));
-            } else if !c.mutant_rejected {
-                wide.push((
-                    format!("block {} {}", i + 1, case.debug.quantities[q]),
-                    c.width,
-                ));
-            }
+    for (i, q, c) in block_checks(case, blocks) {
+        if c.rounding_level {
+            level.push(format!("block {} {}", i + 1, case.debug.quantities[q]));
+        } else if !c.mutant_rejected {
+            wide.push((
+                format!("block {} {}", i + 1, case.debug.quantities[q]),
+                c.width,
+            ));
         }
     }
     let ratios = ratio_checks(case, ex, frame1, blocks);
