@@ -190,6 +190,9 @@ pub struct P4f3ExampleCase {
     pub solution: PrintedSolutions,
     /// The claim the conditioning result answers.
     pub conditioning: ClaimRef,
+    /// The claim of the system solved from the figure's printed digits, when judged.
+    #[serde(default)]
+    pub figure_system: Option<ClaimRef>,
     /// The printed noise runs: each level is judged against random motions of the body and
     /// against the figure's own scene.
     pub noise: Vec<NoiseLevel>,

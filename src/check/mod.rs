@@ -9,6 +9,7 @@ mod identity_example;
 mod noise;
 mod p3f3;
 mod p4f3;
+mod p4f3_joint;
 mod two_frames;
 mod twofold;
 

@@ -3,6 +3,7 @@
 //! `studies::ex4`, `studies::printed_matrix` and `studies::census`; here the verdicts.
 
 use super::figure::{Figure, Layer, Plot, Shape, Style};
+use super::p4f3_joint;
 use super::{ClaimResult, Power, ResultBuilder, Tolerance, ToleranceSource, Value, Verdict};
 use crate::cases::{CensusCase, P4f3ExampleCase, Printed};
 use crate::derivations::noise::LevelResult;
@@ -62,11 +63,6 @@ pub(super) fn check_example(b: &ResultBuilder, case: &P4f3ExampleCase) -> Result
         half: halves,
     };
     let fit = ex4::figure_fit(&bx, &squares, &sq_half);
-    let mut out = vec![
-        body_result(b, case, &fit),
-        figure_result(b, case, &fit, &sq_half),
-    ];
-    figure(b, case, &bx, &fit);
     let mdig = case.matrix.significant_digits;
     let rows: Vec<[f64; 7]> = case
         .matrix
@@ -80,6 +76,17 @@ pub(super) fn check_example(b: &ResultBuilder, case: &P4f3ExampleCase) -> Result
         .iter()
         .map(|r| std::array::from_fn(|j| half(&r[j], mdig)))
         .collect();
+    let shared = p4f3_joint::Shared {
+        bx: &bx,
+        rows: &rows,
+        half: &rh,
+    };
+    let mut out = vec![
+        p4f3_joint::body_result(b, case, &shared),
+        figure_result(b, case, &fit, &sq_half),
+    ];
+    out.extend(p4f3_joint::figure_system_result(b, case, &shared));
+    figure(b, case, &bx, &fit);
     let audit = printed_matrix::run(&printed_matrix::Input {
         bx: &bx,
         points: 4,
@@ -117,45 +124,6 @@ pub(super) fn check_example(b: &ResultBuilder, case: &P4f3ExampleCase) -> Result
         &scene_results,
     ));
     Ok(out)
-}
-
-fn body_result(b: &ResultBuilder, case: &P4f3ExampleCase, fit: &FigureFit) -> ClaimResult {
-    let t = &case.body;
-    let digits = t.significant_digits.unwrap_or(6);
-    let mut r = b.claim(&t.claim);
-    let mut all = fit.realization.realizable;
-    // the weakest pair: the widest interval of squares a printed length allows
-    let mut worst: Option<(f64, f64, f64, f64)> = None;
-    for (l, s) in t.lengths.iter().zip(&t.squares) {
-        let (hl, hs) = (
-            l.half_unit_significant(digits),
-            s.half_unit_significant(digits),
-        );
-        let (lo, hi) = ex4::common_square(l.to_f64(), hl, s.to_f64(), hs);
-        all &= lo <= hi;
-        let (alo, ahi) = (
-            (l.to_f64() - hl).powi(2) - hs,
-            (l.to_f64() + hl).powi(2) + hs,
-        );
-        // allowed: the length's own rounding carried to its square, plus the square's — the
-        // acceptance is exactly the printed precision, so this check is never weak
-        let allowed = (l.to_f64().powi(2) - alo).max(ahi - l.to_f64().powi(2));
-        if worst.is_none_or(|w| ahi - alo > w.1 - w.0) {
-            worst = Some((alo, ahi, l.to_f64().powi(2), allowed));
-        }
-        r = r
-            .printed("length", l)
-            .printed("square", s)
-            .computed("common true square", Value::interval(lo, hi));
-    }
-    let (alo, ahi, sv, allowed) = worst.unwrap_or((0.0, 0.0, 0.0, 0.0));
-    r.computed("Gram eigenvalues of the squares", Value::reals(&fit.realization.eigenvalues))
-        .computed("realizable in 3-D", Value::flag(fit.realization.realizable))
-        .tolerance(Tolerance::bound(digits as f64, ToleranceSource::PrintedPrecision, "half a unit in the last of this many significant digits, on both the length and the square"))
-        .power(Power::interval(alo, ahi, sv, allowed, "printed squares accepted beside the widest printed length, around its square: exactly what its rounding and the square's allow"))
-        .method("interval of each printed length squared against the interval of its printed square; classical scaling of the squares (Gram matrix of the edges from P), eigenvalues above the derived rounding floor")
-        .detail("Gram rounding floor", fit.realization.floor)
-        .verdict(Verdict::holds(all))
 }
 
 /// The acceptance interval of the widest of `acc` as a power statement (allowed: one half unit).

@@ -7,6 +7,7 @@ pub mod author_program;
 pub mod census;
 pub mod ex2;
 pub mod ex4;
+pub mod ex4_joint;
 pub mod family_samples;
 pub mod identity_census;
 pub mod noise;
