@@ -154,6 +154,12 @@ pub struct P3f3ExampleCase {
     pub solutions: PrintedSolutions,
     /// The feasibility rules, applied to the printed solutions.
     pub feasibility: ClaimRef,
+    /// The claim of the rounding analysis restricted to exact views of the body, when judged.
+    #[serde(default)]
+    pub restricted: Option<ClaimRef>,
+    /// The claim of the quadratic's discriminant at the printed data, when judged.
+    #[serde(default)]
+    pub discriminant: Option<ClaimRef>,
     /// Monte Carlo samples of the rounding box.
     pub rounding_trials: usize,
     /// Seed.

@@ -8,6 +8,7 @@ mod identity;
 mod identity_example;
 mod noise;
 mod p3f3;
+mod p3f3_restricted;
 mod p4f3;
 mod p4f3_joint;
 mod two_frames;

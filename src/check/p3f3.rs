@@ -3,6 +3,7 @@
 //! here the printed numbers are loaded, the studies called, and the verdicts judged.
 
 use super::figure::{central_window, thin, Figure, Layer, Plot, Shape, Style};
+use super::p3f3_restricted;
 use super::{ClaimResult, Power, ResultBuilder, Tolerance, ToleranceSource, Value, Verdict};
 use crate::algebra::Interval;
 use crate::cases::{CensusCase, P3f3ExampleCase, Printed};
@@ -83,12 +84,20 @@ pub(super) fn check_example(b: &ResultBuilder, case: &P3f3ExampleCase) -> Result
         trials: case.rounding_trials,
         seed: case.seed,
     });
-    let out = vec![
+    let mut out = vec![
         body_result(b, case),
         solutions_result(b, case, &study, &targets, &target_half),
         figure_result(b, case, &study, &body_half),
         feasibility_result(b, case, &study, &targets),
     ];
+    out.extend(p3f3_restricted::results(
+        b,
+        case,
+        &bx,
+        body,
+        &targets,
+        &target_half,
+    ));
     figures(b, case, &bx, &study, &targets);
     Ok(out)
 }

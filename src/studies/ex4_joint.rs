@@ -236,6 +236,16 @@ fn start(inp: &JointInput) -> Option<Vec<f64>> {
     Some(p)
 }
 
+/// Minimise the largest |rᵢ| of `f` from `x0`: the Lᵖ stages of [`STAGES`], least squares
+/// first. `None` when `f` is undefined at the start.
+pub fn lp_minimax(f: &dyn Fn(&[f64]) -> Option<Vec<f64>>, x0: &[f64]) -> Option<Vec<f64>> {
+    let mut p = x0.to_vec();
+    for power in STAGES {
+        p = lp_stage(f, &p, power)?;
+    }
+    Some(p)
+}
+
 /// Levenberg–Marquardt on Σ gᵢ², gᵢ = sign(rᵢ)|rᵢ|^(p/2): the Lᵖ norm of the residuals.
 fn lp_stage(f: &dyn Fn(&[f64]) -> Option<Vec<f64>>, x0: &[f64], power: f64) -> Option<Vec<f64>> {
     let g = |x: &[f64]| {
@@ -292,13 +302,11 @@ pub fn joint_fit(inp: &JointInput, p0: Option<&[f64]>) -> Option<(JointFit, Vec<
     let frames = frames_of(&inp.figure.center);
     let matches = identify_rows(inp.rows, &frames);
     let f = |p: &[f64]| scaled(inp, &matches, p);
-    let mut p = match p0 {
+    let p0 = match p0 {
         Some(p) => p.to_vec(),
         None => start(inp)?,
     };
-    for power in STAGES {
-        p = lp_stage(&f, &p, power)?;
-    }
+    let p = lp_minimax(&f, &p0)?;
     let (squares, fr, views) = unpack(inp, &p)?;
     let x = flat(&fr);
     let figure_half_units: Vec<f64> = x

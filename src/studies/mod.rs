@@ -6,6 +6,7 @@ pub mod audit;
 pub mod author_program;
 pub mod census;
 pub mod ex2;
+pub mod ex2_restricted;
 pub mod ex4;
 pub mod ex4_joint;
 pub mod family_samples;
