@@ -31,8 +31,47 @@ pub struct TwoFramesCase {
     pub control_shift: f64,
     /// The counterexample's mutant: Q′'s second coordinate moved by this many half units.
     pub mutant_half_units: f64,
+    /// The member of the family the figures draw, when judged.
+    #[serde(default)]
+    pub drawn_member: Option<DrawnMember>,
     /// Seed.
     pub seed: u64,
+}
+
+/// §5.1's figures as drawn, against the printed points.
+#[derive(Clone, Debug, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct DrawnMember {
+    /// The claim.
+    pub claim: ClaimRef,
+    /// The figure label the text says shows the rotated body (the other shows the original).
+    pub rotated_figure: String,
+    /// The pictures.
+    pub drawings: Vec<Drawing>,
+}
+
+/// One picture: drawing coordinates as printed in its `\put` commands.
+#[derive(Clone, Debug, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct Drawing {
+    /// Line range.
+    pub lines: String,
+    /// The figure label it belongs to.
+    pub figure: String,
+    /// The hidden corner of the cube, where its three thin edges start.
+    pub corner: [Printed; 2],
+    /// The other ends of the three thin edges.
+    pub edges: Vec<[Printed; 2]>,
+    /// The names of the three body points labelled (P first).
+    pub label_names: Vec<String>,
+    /// Their label positions.
+    pub labels: Vec<[Printed; 2]>,
+    /// The line n (two ends).
+    pub n: [[Printed; 2]; 2],
+    /// One frame-1 ray (two ends).
+    pub frame1_ray: [[Printed; 2]; 2],
+    /// The frame-2 rays (two ends each).
+    pub frame2_rays: Vec<[[Printed; 2]; 2]>,
 }
 
 /// Printed 3-D points.

@@ -12,6 +12,7 @@ mod p3f3_restricted;
 mod p4f3;
 mod p4f3_joint;
 mod two_frames;
+mod two_frames_member;
 mod twofold;
 
 pub use crate::studies::noise::{run_study, study_of};

@@ -153,6 +153,7 @@ pub(super) fn check(b: &ResultBuilder, case: &TwoFramesCase) -> Result<Vec<Claim
     );
     out.push(fourth_point_result(b, case)?);
     out.push(curves_result(b, case));
+    out.extend(super::two_frames_member::result(b, case));
     Ok(out)
 }
 

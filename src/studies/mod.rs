@@ -5,6 +5,7 @@
 pub mod audit;
 pub mod author_program;
 pub mod census;
+pub mod drawn_member;
 pub mod ex2;
 pub mod ex2_restricted;
 pub mod ex4;
