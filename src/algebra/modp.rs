@@ -133,36 +133,82 @@ pub fn agree_mod_p(
     points: usize,
     seed: u64,
 ) -> ModPAgreement {
+    let k = Fp::from_rational(ratio);
+    let values = cross_values(left, right, points, seed);
+    let agreeing = values
+        .iter()
+        .filter(|v| matches!((v, k), (Some((l, r)), Some(k)) if *l == k.mul(r)))
+        .count();
+    agreement(left, right, points, seed, agreeing)
+}
+
+/// The same screen for `left = k · right` with an unknown non-zero constant k (an equation
+/// `= 0` printed with another sign or scale): k is read off the first point where the right
+/// side does not vanish, every point (that one included) must then agree with it.
+///
+/// # Example
+/// ```
+/// use orthocheck::algebra::{modp::proportional_mod_p, RatFn};
+/// let l = RatFn::parse("-3 (a + b)^2").unwrap();
+/// let r = RatFn::parse("a^2 + 2a b + b^2").unwrap();
+/// assert_eq!(proportional_mod_p(&l, &r, 8, 1).agreeing, 8);
+/// let m = RatFn::parse("a^2 + 3a b + b^2").unwrap();
+/// assert_eq!(proportional_mod_p(&l, &m, 8, 1).agreeing, 1);
+/// ```
+pub fn proportional_mod_p(left: &RatFn, right: &RatFn, points: usize, seed: u64) -> ModPAgreement {
+    let values = cross_values(left, right, points, seed);
+    let k = values
+        .iter()
+        .flatten()
+        .find(|(_, r)| r.0 != 0)
+        .and_then(|(l, r)| Some(l.mul(&r.inv()?)))
+        .filter(|k| k.0 != 0);
+    let agreeing = values
+        .iter()
+        .filter(|v| matches!((v, k), (Some((l, r)), Some(k)) if *l == k.mul(r)))
+        .count();
+    agreement(left, right, points, seed, agreeing)
+}
+
+/// At each seeded point: (`left.num · right.den`, `right.num · left.den`) in 𝔽ₚ, `None`
+/// where p divides the denominator of a content.
+fn cross_values(left: &RatFn, right: &RatFn, points: usize, seed: u64) -> Vec<Option<(Fp, Fp)>> {
     let mut g = crate::model::rng(seed);
     let mut vars = left.variables();
     vars.extend(right.variables());
     vars.sort();
     vars.dedup();
+    (0..points)
+        .map(|_| {
+            let values: Vec<(String, Fp)> = vars
+                .iter()
+                .map(|v| (v.clone(), Fp(g.random_range(0..PRIME))))
+                .collect();
+            let at = |p: &Poly| -> Option<Fp> {
+                let point: Vec<Fp> = p
+                    .ring()
+                    .names()
+                    .iter()
+                    .map(|n| values.iter().find(|(v, _)| **v == **n).map(|(_, x)| *x))
+                    .collect::<Option<_>>()?;
+                eval_poly(p, &point)
+            };
+            let l = at(&left.num)?.mul(&at(&right.den)?);
+            let r = at(&right.num)?.mul(&at(&left.den)?);
+            Some((l, r))
+        })
+        .collect()
+}
+
+fn agreement(
+    left: &RatFn,
+    right: &RatFn,
+    points: usize,
+    seed: u64,
+    agreeing: usize,
+) -> ModPAgreement {
     let degree =
         (left.num.degree() + right.den.degree()).max(right.num.degree() + left.den.degree());
-    let k = Fp::from_rational(ratio);
-    let mut agreeing = 0;
-    for _ in 0..points {
-        let values: Vec<(String, Fp)> = vars
-            .iter()
-            .map(|v| (v.clone(), Fp(g.random_range(0..PRIME))))
-            .collect();
-        let at = |p: &Poly| -> Option<Fp> {
-            let point: Vec<Fp> = p
-                .ring()
-                .names()
-                .iter()
-                .map(|n| values.iter().find(|(v, _)| **v == **n).map(|(_, x)| *x))
-                .collect::<Option<_>>()?;
-            eval_poly(p, &point)
-        };
-        let cross = || -> Option<bool> {
-            let l = at(&left.num)?.mul(&at(&right.den)?);
-            let r = k?.mul(&at(&right.num)?).mul(&at(&left.den)?);
-            Some(l.sub(&r).0 == 0)
-        };
-        agreeing += usize::from(cross() == Some(true));
-    }
     ModPAgreement {
         points,
         seed,

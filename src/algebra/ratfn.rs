@@ -7,7 +7,7 @@ use std::ops::{Add, Div, Mul, Neg, Sub};
 use num_rational::BigRational;
 use num_traits::{One, Zero};
 
-use super::Poly;
+use super::{Monomial, Poly};
 use crate::error::ParseError;
 
 /// `num / den` with `den ≠ 0`.
@@ -279,6 +279,95 @@ impl RatFn {
             den: den.scale(&c),
         }
     }
+}
+
+impl RatFn {
+    /// Substitute every entry of `values` at once. When the values used share one
+    /// denominator D, a numerator or denominator of total degree d in the substituted names
+    /// becomes Σ cₘ·Nᵐ·D^(d−|m|) / D^d: one power of D for all names, where substituting one
+    /// name after another would multiply a power of D per name. Otherwise one after another.
+    ///
+    /// # Example
+    /// ```
+    /// use std::collections::BTreeMap;
+    /// use orthocheck::algebra::RatFn;
+    /// let f = RatFn::parse("u^2 + u v").unwrap();
+    /// let values: BTreeMap<String, RatFn> = [
+    ///     ("u".to_string(), RatFn::parse("x / (x + 1)").unwrap()),
+    ///     ("v".to_string(), RatFn::parse("1 / (x + 1)").unwrap()),
+    /// ].into();
+    /// let g = f.substitute_all(&values);
+    /// assert_eq!(g.den.degree(), 2);
+    /// assert!(g.equals(&RatFn::parse("(x^2 + x) / (x + 1)^2").unwrap()));
+    /// ```
+    pub fn substitute_all(&self, values: &BTreeMap<String, RatFn>) -> RatFn {
+        let vars = self.variables();
+        let used: BTreeMap<&str, &RatFn> = values
+            .iter()
+            .filter(|(k, _)| vars.contains(k))
+            .map(|(k, v)| (k.as_str(), v))
+            .collect();
+        let Some(d0) = used.values().next().map(|v| &v.den) else {
+            return self.clone();
+        };
+        if !used.values().all(|v| v.den == *d0) {
+            return used
+                .iter()
+                .fold(self.clone(), |f, (k, v)| f.substitute(k, v));
+        }
+        let (n, dn) = homogenise_all(&self.num, &used, d0);
+        let (m, dm) = homogenise_all(&self.den, &used, d0);
+        // (n / D^dn) / (m / D^dm)
+        if dn >= dm {
+            RatFn {
+                num: n,
+                den: &m * &d0.pow(dn - dm),
+            }
+        } else {
+            RatFn {
+                num: &n * &d0.pow(dm - dn),
+                den: m,
+            }
+        }
+    }
+}
+
+/// `p` with each name of `used` (value Nⱼ / D) replaced, times D^d: (Σ cₘ·Nᵐ·D^(d−|m|), d),
+/// d the total degree of `p` in those names. Powers are cached.
+fn homogenise_all(p: &Poly, used: &BTreeMap<&str, &RatFn>, d: &Poly) -> (Poly, u32) {
+    let split = |m: &Monomial| -> (Vec<(&str, u32)>, Monomial, u32) {
+        let mut rest = Vec::new();
+        let mut subs = Vec::new();
+        let mut deg = 0;
+        for (name, e) in m.factors() {
+            if let Some((k, _)) = used.get_key_value(name.as_str()) {
+                subs.push((*k, *e));
+                deg += e;
+            } else {
+                rest.push((name.clone(), *e));
+            }
+        }
+        (subs, Monomial::from_sorted(rest), deg)
+    };
+    let terms: Vec<_> = p.terms().map(|(m, c)| (split(&m), c)).collect();
+    let top = terms.iter().map(|((_, _, k), _)| *k).max().unwrap_or(0);
+    let mut powers: BTreeMap<(&str, u32), Poly> = BTreeMap::new();
+    let mut dpow: BTreeMap<u32, Poly> = BTreeMap::new();
+    let mut out = Poly::zero();
+    for ((subs, rest, k), c) in terms {
+        let mut t = Poly::from_monomial(rest).scale(&c);
+        for (name, e) in subs {
+            let v = powers
+                .entry((name, e))
+                .or_insert_with(|| used[name].num.pow(e));
+            t = &t * v;
+        }
+        if top > k {
+            t = &t * dpow.entry(top - k).or_insert_with(|| d.pow(top - k));
+        }
+        out = &out + &t;
+    }
+    (out, top)
 }
 
 /// A row of rational functions over their common denominator: polynomials, the same

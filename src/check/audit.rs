@@ -17,7 +17,7 @@ use crate::derivations::formulas::NAMES;
 use crate::error::Result;
 use crate::report::values::{quantities_text, value_text};
 use crate::studies::audit::{
-    arithmetic, computed, formulas, ArithmeticFinding, Form, FormulaFinding,
+    arithmetic, computed, expanded, formulas, ArithmeticFinding, Form, FormulaFinding,
 };
 use crate::studies::points::PointCheck;
 
@@ -272,8 +272,15 @@ fn text_result(b: &ResultBuilder, t: &TextItem) -> (ClaimResult, Shown) {
 /// Every item of the audit, judged, with what its audit line shows.
 fn judged(b: &ResultBuilder, case: &FormulaAuditCase) -> Result<Vec<(ClaimResult, Shown)>> {
     let mut out = Vec::new();
-    for (f, x) in case.formulas.iter().zip(formulas(case)?) {
+    // each formula beside its expansion to the end
+    for ((f, x), e) in case
+        .formulas
+        .iter()
+        .zip(formulas(case)?)
+        .zip(expanded(case)?)
+    {
         out.push(formula_result(b, f, &x));
+        out.push(expanded_result(b, f, &e));
     }
     out.extend(case.arithmetic.iter().map(|a| arithmetic_result(b, a)));
     out.extend(
@@ -352,7 +359,9 @@ pub fn counts(items: &[AuditItem]) -> Vec<(Verdict, usize)> {
 }
 
 mod computed;
+mod expanded;
 use computed::computed_result;
+use expanded::expanded_result;
 
 #[cfg(test)]
 mod tests {

@@ -19,6 +19,9 @@ use crate::derivations::two_frames::{fourth_relation, FourthRelation};
 use crate::derivations::twofold::{frame_equation, relation_squared};
 use crate::error::{Error, Result};
 
+mod expanded;
+pub use expanded::{expanded, ExpandedFinding, Screened};
+
 /// Which form of a formula was accepted.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Form {
@@ -148,8 +151,24 @@ fn accept(
     seed: u64,
 ) -> Accepted {
     let check = agree_at_points(e, target, &ratio, points, seed);
-    let quadratic = f
-        .quadratic_in
+    let quadratic = accepted_quadratic(e, f);
+    let mutant = flip_one_term(e).map(|(term, m)| Mutant {
+        term,
+        exact_rejected: relation_ratio(&m, target, f.relation).is_none(),
+        points: agree_at_points(&m, target, &ratio, points, seed),
+    });
+    Accepted {
+        form,
+        ratio,
+        points: check,
+        quadratic,
+        mutant,
+    }
+}
+
+/// Per `quadratic_in` group of the item: whether `e` is at most quadratic in those squares.
+fn accepted_quadratic(e: &RatFn, f: &FormulaItem) -> Vec<(Vec<String>, bool)> {
+    f.quadratic_in
         .iter()
         .map(|group| {
             let vars: Vec<&str> = group.iter().map(String::as_str).collect();
@@ -163,19 +182,7 @@ fn accept(
                     && quadratic_in_squares(&e.num, &vars));
             (group.clone(), q)
         })
-        .collect();
-    let mutant = flip_one_term(e).map(|(term, m)| Mutant {
-        term,
-        exact_rejected: relation_ratio(&m, target, f.relation).is_none(),
-        points: agree_at_points(&m, target, &ratio, points, seed),
-    });
-    Accepted {
-        form,
-        ratio,
-        points: check,
-        quadratic,
-        mutant,
-    }
+        .collect()
 }
 
 /// The formula with the sign of the first term of its numerator flipped (a single-term

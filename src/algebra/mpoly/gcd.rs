@@ -80,11 +80,11 @@ fn heu(a: &MPoly, b: &MPoly) -> Option<MPoly> {
             return None;
         }
         let (ea, eb) = (a.eval_var(i, &xi), b.eval_var(i, &xi));
-        if let Some(g) = ea.gcd(&eb) {
-            let cand = lift(&g, i, &xi).primitive().1;
-            if !cand.is_zero() && a.div_exact(&cand).is_some() && b.div_exact(&cand).is_some() {
-                return Some(cand);
-            }
+        // the images only grow with ξ: a level below that gave up gives up again
+        let g = ea.gcd(&eb)?;
+        let cand = lift(&g, i, &xi).primitive().1;
+        if !cand.is_zero() && a.div_exact(&cand).is_some() && b.div_exact(&cand).is_some() {
+            return Some(cand);
         }
         // the growth factor of the original algorithm (≈ 2.73, irrational-looking)
         xi = xi * 73794 / 27011;
