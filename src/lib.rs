@@ -8,6 +8,7 @@ pub mod check;
 pub mod derivations;
 pub mod error;
 pub mod input;
+pub mod limits;
 pub mod model;
 pub mod numfmt;
 pub mod provenance;

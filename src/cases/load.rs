@@ -7,10 +7,7 @@ use crate::error::{Error, InputLocation, Result};
 
 /// Read and validate one case file.
 pub fn load_case(path: &Path) -> Result<Case> {
-    let text = std::fs::read_to_string(path).map_err(|source| Error::Io {
-        path: path.to_path_buf(),
-        source,
-    })?;
+    let text = read_case_text(path)?;
     let mut case = parse_case(&text, path)?;
     case.file = Some(path.to_path_buf());
     Ok(case)
@@ -193,7 +190,113 @@ pub fn case_files(dir: &Path) -> Result<Vec<PathBuf>> {
     Ok(files)
 }
 
-/// Load every case of a folder.
+/// Load every case of a folder: each file valid on its own, no id twice, and every claim a
+/// restatement restates checked by some case of the folder.
 pub fn load_all(dir: &Path) -> Result<Vec<Case>> {
-    case_files(dir)?.iter().map(|p| load_case(p)).collect()
+    let mut cases = Vec::new();
+    let mut texts = Vec::new();
+    for p in case_files(dir)? {
+        let text = read_case_text(&p)?;
+        let mut case = parse_case(&text, &p)?;
+        case.file = Some(p.clone());
+        if let Some(first) = cases.iter().position(|c: &Case| c.id == case.id) {
+            let other = cases[first].file.as_deref().unwrap_or(Path::new("?"));
+            return Err(invalid(
+                &text,
+                &p,
+                "id",
+                format!(
+                    "the id `{}` is already the id of {}",
+                    case.id,
+                    other.display()
+                ),
+            ));
+        }
+        cases.push(case);
+        texts.push((p, text));
+    }
+    known_restated_claims(&cases, &texts)?;
+    Ok(cases)
+}
+
+/// A case file's text, read through the input size limit.
+fn read_case_text(path: &Path) -> Result<String> {
+    use std::io::Read as _;
+    let io = |source| Error::Io {
+        path: path.to_path_buf(),
+        source,
+    };
+    let mut bytes = Vec::new();
+    std::fs::File::open(path)
+        .map_err(io)?
+        .take(crate::input::MAX_TRACKS_BYTES + 1)
+        .read_to_end(&mut bytes)
+        .map_err(io)?;
+    if bytes.len() as u64 > crate::input::MAX_TRACKS_BYTES {
+        return Err(whole_file(
+            path,
+            format!(
+                "larger than the limit of {} bytes (see docs/limits.md)",
+                crate::input::MAX_TRACKS_BYTES
+            ),
+        ));
+    }
+    String::from_utf8(bytes).map_err(|_| whole_file(path, "the file is not UTF-8 text".into()))
+}
+
+/// An error about a whole file (no line, no field).
+fn whole_file(path: &Path, message: String) -> Error {
+    Error::Input {
+        location: InputLocation {
+            file: path.to_path_buf(),
+            line: None,
+            column: None,
+            field: None,
+        },
+        message,
+    }
+}
+
+/// Every id a restatement restates must be a claim some case of the folder refers to
+/// (a `claim:` field anywhere in a case), or the restatement could never be decided.
+fn known_restated_claims(cases: &[Case], texts: &[(PathBuf, String)]) -> Result<()> {
+    let mut known = std::collections::BTreeSet::new();
+    for (p, text) in texts {
+        let tree: serde_json::Value = parse_yaml(text, p)?;
+        collect_claims(&tree, &mut known);
+    }
+    for (case, (p, text)) in cases.iter().zip(texts) {
+        let super::CaseCheck::Restatements(r) = &case.check else {
+            continue;
+        };
+        for (i, item) in r.items.iter().enumerate() {
+            if let Some(id) = item.restates.iter().find(|id| !known.contains(id.as_str())) {
+                return Err(invalid(
+                    text,
+                    p,
+                    &format!("check.restatements.items[{i}].restates"),
+                    format!("`{id}` is not a claim any case of the folder checks"),
+                ));
+            }
+        }
+    }
+    Ok(())
+}
+
+/// The string values of every `claim` key in a parsed case.
+fn collect_claims(v: &serde_json::Value, out: &mut std::collections::BTreeSet<String>) {
+    match v {
+        serde_json::Value::Object(m) => {
+            for (k, x) in m {
+                match (k.as_str(), x) {
+                    ("claim", serde_json::Value::String(id)) => {
+                        out.insert(id.clone());
+                    }
+                    _ => collect_claims(x, out),
+                }
+            }
+        }
+        serde_json::Value::Array(a) => a.iter().for_each(|x| collect_claims(x, out)),
+        _ => {}
+    }
 }

@@ -5,12 +5,14 @@
 
 mod audit;
 mod examples;
+mod formula_size;
 mod identity;
 mod load;
 mod noise;
 mod paper;
 mod printed;
 mod restate;
+mod sizes;
 mod source;
 mod validate;
 

@@ -4,11 +4,14 @@ use std::fmt;
 
 use num_bigint::BigInt;
 use num_rational::BigRational;
-use num_traits::ToPrimitive;
+use num_traits::{ToPrimitive, Zero};
 use serde::de::{self, Deserializer, Visitor};
 use serde::Deserialize;
 
 use crate::algebra::parse_decimal;
+
+/// The largest decimal exponent a printed number may carry (f64 reaches about 1e±308).
+const MAX_EXPONENT: u32 = 330;
 
 /// A number as the paper printed it: exact value plus precision.
 ///
@@ -37,6 +40,11 @@ impl Printed {
             Some((m, e)) => (m, e.parse::<i32>().ok()?),
             None => (t, 0),
         };
+        // beyond f64's range no printed digit could be compared (and the loop below is bounded)
+        if exponent.unsigned_abs() > MAX_EXPONENT {
+            return None;
+        }
+        parse_decimal(mantissa)?;
         let mut value = parse_decimal(mantissa)?;
         let ten = BigRational::from_integer(BigInt::from(10));
         for _ in 0..exponent.unsigned_abs() {
@@ -47,6 +55,11 @@ impl Printed {
             };
         }
         let decimals = mantissa.split_once('.').map_or(0, |(_, f)| f.len() as i32) - exponent;
+        // an exact value f64 cannot hold (overflow, or a non-zero number underflowing to 0)
+        let f = value.to_f64().unwrap_or(f64::NAN);
+        if !f.is_finite() || (f == 0.0 && !value.is_zero()) {
+            return None;
+        }
         Some(Printed {
             text: t.to_string(),
             value,
@@ -98,6 +111,13 @@ impl fmt::Display for Printed {
     }
 }
 
+/// Whether `s` is written as a decimal (`-1.5e-3`), whatever its size.
+fn decimal_syntax(s: &str) -> bool {
+    let t = s.trim();
+    let (m, e) = t.split_once(['e', 'E']).unwrap_or((t, "0"));
+    e.parse::<i64>().is_ok() && parse_decimal(m).is_some()
+}
+
 impl<'de> Deserialize<'de> for Printed {
     fn deserialize<D: Deserializer<'de>>(d: D) -> std::result::Result<Self, D::Error> {
         struct V;
@@ -107,8 +127,13 @@ impl<'de> Deserialize<'de> for Printed {
                 f.write_str("a printed number as a quoted string, e.g. \"1.2345\"")
             }
             fn visit_str<E: de::Error>(self, s: &str) -> std::result::Result<Printed, E> {
-                Printed::parse(s)
-                    .ok_or_else(|| E::custom(format!("'{s}' is not a printed decimal number")))
+                Printed::parse(s).ok_or_else(|| {
+                    E::custom(if decimal_syntax(s) {
+                        format!("'{s}' lies outside the range of a float (about 1e±308)")
+                    } else {
+                        format!("'{s}' is not a printed decimal number")
+                    })
+                })
             }
             fn visit_i64<E: de::Error>(self, v: i64) -> std::result::Result<Printed, E> {
                 self.visit_str(&v.to_string())
@@ -123,5 +148,21 @@ impl<'de> Deserialize<'de> for Printed {
             }
         }
         d.deserialize_str(V)
+    }
+}
+
+#[cfg(test)]
+mod range_tests {
+    use super::*;
+
+    #[test]
+    fn numbers_a_float_cannot_hold_are_refused() {
+        assert!(Printed::parse("1e308").is_some());
+        assert!(Printed::parse("1e999").is_none());
+        assert!(Printed::parse("1e-999").is_none());
+        assert!(Printed::parse("0e-999").is_none());
+        assert!(Printed::parse("1e2000000000").is_none());
+        assert!(Printed::parse("-0.0").is_some());
+        assert!(decimal_syntax("1e999") && !decimal_syntax("1x8"));
     }
 }

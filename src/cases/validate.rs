@@ -4,23 +4,64 @@ use std::path::Path;
 
 use super::load::invalid;
 use super::*;
+use super::{formula_size, sizes};
 use crate::algebra::Poly;
 use crate::error::Result;
 
 /// The case file being validated: turns a field path and a message into a located error.
-struct Validator<'a> {
+pub(super) struct Validator<'a> {
     text: &'a str,
     path: &'a Path,
 }
 
 impl Validator<'_> {
     /// An input error at `field`, located by its line in the case text.
-    fn err<T>(&self, field: &str, message: String) -> Result<T> {
+    pub(super) fn err<T>(&self, field: &str, message: String) -> Result<T> {
         Err(invalid(self.text, self.path, field, message))
+    }
+
+    /// `value` of `what` at `field` within `limit` (`docs/limits.md`).
+    pub(super) fn limit(&self, field: &str, what: &str, value: usize, limit: usize) -> Result<()> {
+        crate::limits::at_most(what, value, limit).or_else(|m| self.err(field, m))
+    }
+
+    /// A list at `field` of at most [`crate::limits::CASE_LIST`] entries.
+    pub(super) fn list(&self, field: &str, len: usize) -> Result<()> {
+        self.limit(field, "the list's length", len, crate::limits::CASE_LIST)
+    }
+
+    /// Names at `field`: none empty, none twice.
+    pub(super) fn names(&self, field: &str, names: &[String]) -> Result<()> {
+        if names.iter().any(|n| n.trim().is_empty()) {
+            return self.err(field, "a name is empty".into());
+        }
+        if let Some((i, n)) = names
+            .iter()
+            .enumerate()
+            .find(|(i, n)| names[..*i].contains(n))
+        {
+            return self.err(
+                &format!("{field}[{i}]"),
+                format!("the name `{n}` appears twice"),
+            );
+        }
+        Ok(())
+    }
+
+    /// The formula at `field` within the formula limits (depth, exponents, expansion),
+    /// before the recursive parser sees it; `defs` sizes the names it may use.
+    fn formula_size(
+        &self,
+        field: &str,
+        f: &str,
+        defs: &std::collections::BTreeMap<String, formula_size::Size>,
+    ) -> Result<formula_size::Size> {
+        formula_size::check(f, defs).or_else(|m| self.err(field, m))
     }
 
     /// The polynomial at `field` must parse.
     fn formula(&self, field: &str, f: &str) -> Result<()> {
+        self.formula_size(field, f, &Default::default())?;
         match Poly::parse(f) {
             Ok(_) => Ok(()),
             Err(e) => self.err(field, format!("formula does not parse: {e}")),
@@ -29,6 +70,7 @@ impl Validator<'_> {
 
     /// The rational function at `field` must parse.
     fn rat_formula(&self, field: &str, f: &str) -> Result<()> {
+        self.formula_size(field, f, &Default::default())?;
         match crate::algebra::RatFn::parse(f) {
             Ok(_) => Ok(()),
             Err(e) => self.err(field, format!("formula does not parse: {e}")),
@@ -42,6 +84,8 @@ pub(super) fn validate(case: &Case, text: &str, path: &Path) -> Result<()> {
     if case.id.trim().is_empty() {
         return v.err("id", "must not be empty".into());
     }
+    sizes::trials_positive(case, v)?;
+    sizes::check_sizes(case, v)?;
     match &case.check {
         CaseCheck::DofCount(c) => dof_count(c, v),
         CaseCheck::DofIdentifiability(c) => dof_identifiability(c, v),
@@ -346,6 +390,7 @@ fn p4f3_example(c: &P4f3ExampleCase, v: &Validator) -> Result<()> {
 }
 
 fn formula_audit(c: &FormulaAuditCase, v: &Validator) -> Result<()> {
+    formula_audit_sizes(c, v)?;
     for (i, d) in c.definitions.iter().enumerate() {
         v.rat_formula(
             &format!("check.formula_audit.definitions[{i}].printed"),
@@ -369,11 +414,33 @@ fn formula_audit(c: &FormulaAuditCase, v: &Validator) -> Result<()> {
     }
     for (i, a) in c.arithmetic.iter().enumerate() {
         for (j, st) in a.steps.iter().enumerate() {
+            let field = format!("check.formula_audit.arithmetic[{i}].steps[{j}]");
+            v.formula_size(&field, st, &Default::default())?;
             if Poly::parse(st).is_err() {
                 return v.err(
                     &format!("check.formula_audit.arithmetic[{i}].steps[{j}]"),
                     format!("'{st}' does not parse"),
                 );
+            }
+        }
+    }
+    Ok(())
+}
+
+/// The audit's formulas within the formula limits, each definition counted at its size
+/// wherever a later formula names it (the audit substitutes definitions).
+fn formula_audit_sizes(c: &FormulaAuditCase, v: &Validator) -> Result<()> {
+    let mut defs = std::collections::BTreeMap::new();
+    for (i, d) in c.definitions.iter().enumerate() {
+        let field = format!("check.formula_audit.definitions[{i}].printed");
+        let size = v.formula_size(&field, &d.printed, &defs)?;
+        defs.insert(d.name.clone(), size);
+    }
+    for (i, f) in c.formulas.iter().enumerate() {
+        for (k, text) in [("printed", &f.printed), ("corrected", &f.corrected)] {
+            if let Some(t) = text {
+                let field = format!("check.formula_audit.formulas[{i}].{k}");
+                v.formula_size(&field, t, &defs)?;
             }
         }
     }

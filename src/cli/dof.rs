@@ -33,6 +33,7 @@ pub struct Args {
 
 /// One (p, k), or the whole grid.
 pub fn run(a: Args) -> Result<(), Error> {
+    check_limits(&a).map_err(Error::InvalidInput)?;
     if a.table {
         let rows = dof::table(a.max_points, a.max_frames, a.seed)?;
         emit(a.json, &rows, |r| report::dof_table_text(r))?;
@@ -42,4 +43,21 @@ pub fn run(a: Args) -> Result<(), Error> {
         emit(a.json, &r, report::dof_text)?;
     }
     Ok(())
+}
+
+/// The sizes within `docs/limits.md` before any work starts.
+fn check_limits(a: &Args) -> Result<(), String> {
+    use orthocheck::limits::{at_most, DOF_FRAMES, DOF_GRID, DOF_POINTS, DOF_POINTS_TIMES_FRAMES};
+    if a.table {
+        at_most("--max-points", a.max_points, DOF_GRID)?;
+        return at_most("--max-frames", a.max_frames, DOF_GRID);
+    }
+    let (p, k) = (a.points.unwrap_or(0), a.frames.unwrap_or(0));
+    at_most("--points", p, DOF_POINTS)?;
+    at_most("--frames", k, DOF_FRAMES)?;
+    at_most(
+        "--points × --frames",
+        p.saturating_mul(k),
+        DOF_POINTS_TIMES_FRAMES,
+    )
 }

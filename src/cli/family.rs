@@ -24,10 +24,9 @@ pub struct Args {
 
 /// Sample the family and print its members.
 pub fn run(a: Args) -> Result<(), Error> {
+    orthocheck::limits::count("--samples", a.samples, orthocheck::limits::FAMILY_SAMPLES)
+        .map_err(Error::InvalidInput)?;
     let t = two_frames(&a.input, PointOrder::ByName)?;
-    if a.samples == 0 {
-        return Err(Error::InvalidInput("--samples must be at least 1".into()));
-    }
     let members =
         sample_family(&t.frames[0], &t.frames[1], a.samples).map_err(|e| in_file(&a.input, e))?;
     let view = report::family_view(&t.names, &members);

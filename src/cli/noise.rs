@@ -31,6 +31,9 @@ pub struct Args {
     /// Folder of case files.
     #[arg(long, default_value = "paper_cases")]
     cases: PathBuf,
+    /// Largest trial count accepted (docs/limits.md); memory stays fixed, time grows.
+    #[arg(long, default_value_t = orthocheck::limits::NOISE_TRIALS)]
+    max_trials: usize,
     /// JSON output.
     #[arg(long)]
     json: bool,
@@ -54,6 +57,7 @@ impl From<ModelArg> for ModelChoice {
 
 /// Resolve the request against the cases, run it with a trial counter on a terminal, print.
 pub fn run(a: Args) -> Result<(), Error> {
+    check_limits(&a).map_err(Error::InvalidInput)?;
     let all = cases::load_all(&a.cases)?;
     let request = NoiseRequest {
         case: a.case.clone(),
@@ -90,4 +94,16 @@ pub fn run(a: Args) -> Result<(), Error> {
     }
     emit(a.json, &summaries, |s| report::noise_text(&a.case, s))?;
     Ok(())
+}
+
+/// Trials, levels and ε within `docs/limits.md` before the cases are read.
+fn check_limits(a: &Args) -> Result<(), String> {
+    use orthocheck::limits::{at_most, count, noise_level, NOISE_LEVELS};
+    if let Some(t) = a.trials {
+        count("--trials", t, a.max_trials).map_err(|m| format!("{m}; --max-trials raises it"))?;
+    }
+    at_most("the number of --levels", a.levels.len(), NOISE_LEVELS)?;
+    a.levels
+        .iter()
+        .try_for_each(|&e| noise_level("--levels", e))
 }

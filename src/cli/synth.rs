@@ -41,16 +41,7 @@ enum FormatArg {
 
 /// Make the scene, write its tracks with a header naming the truth.
 pub fn run(a: Args) -> Result<(), Error> {
-    if a.points == 0 || a.frames == 0 {
-        return Err(Error::InvalidInput(
-            "--points and --frames must be at least 1".into(),
-        ));
-    }
-    if let Some(e) = a.noise.filter(|e| !(e.is_finite() && *e >= 0.0)) {
-        return Err(Error::InvalidInput(format!(
-            "--noise {e}: must be a finite ε ≥ 0"
-        )));
-    }
+    check_limits(&a).map_err(Error::InvalidInput)?;
     let s = synthetic(a.points, a.frames, a.seed, a.noise);
     let header = report::synth_header(&s.scene, a.seed, a.noise);
     let body = match a.format {
@@ -65,4 +56,18 @@ pub fn run(a: Args) -> Result<(), Error> {
             Ok(())
         }
     }
+}
+
+/// The sizes within `docs/limits.md`, and ε in range, before the scene is made.
+fn check_limits(a: &Args) -> Result<(), String> {
+    use orthocheck::limits::{count, SYNTH_FRAMES, SYNTH_POINTS, SYNTH_POINTS_TIMES_FRAMES};
+    count("--points", a.points, SYNTH_POINTS)?;
+    count("--frames", a.frames, SYNTH_FRAMES)?;
+    count(
+        "--points × --frames",
+        a.points.saturating_mul(a.frames),
+        SYNTH_POINTS_TIMES_FRAMES,
+    )?;
+    a.noise
+        .map_or(Ok(()), |e| orthocheck::limits::noise_level("--noise", e))
 }

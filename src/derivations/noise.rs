@@ -74,15 +74,21 @@ pub struct LevelResult {
     pub trials: usize,
     /// Trials without a real solution with non-negative squares.
     pub failures: usize,
-    /// Errors of the successful trials, sorted per metric (`sorted[m]` for metric `m`).
+    /// Errors of the successful trials, sorted per metric (`sorted[m]` for metric `m`): all
+    /// of them up to [`RESERVOIR`] trials, a uniform sample of that size beyond.
     #[serde(skip)]
     pub sorted: [Vec<f64>; 4],
-    /// Per successful trial, recovered over true squared edge for every edge (trial-major,
-    /// `edges` values per trial): the per-edge errors in squares and in lengths follow.
+    /// Per kept successful trial, recovered over true squared edge for every edge
+    /// (trial-major, `edges` values per trial): the per-edge errors in squares and in
+    /// lengths follow.
     #[serde(skip)]
     pub ratios: Vec<f64>,
     /// Edges per trial.
     pub edges: usize,
+    /// When more trials succeeded than [`RESERVOIR`] keeps: the exact sums of the four
+    /// metrics over all of them and their count (the means come from these).
+    #[serde(skip)]
+    pub sums: Option<([f64; 4], usize)>,
 }
 
 impl LevelResult {
@@ -93,6 +99,9 @@ impl LevelResult {
 
     /// The mean of metric `m`.
     pub fn mean(&self, m: usize) -> f64 {
+        if let Some((sums, n)) = self.sums {
+            return sums[m] / n as f64;
+        }
         let v = &self.sorted[m];
         if v.is_empty() {
             return f64::NAN;
@@ -177,76 +186,147 @@ pub struct Study {
     pub motions: Option<Vec<Motion>>,
 }
 
+/// Chunks run in parallel before their results are folded in, in chunk order: bounds the
+/// memory in flight (64 × 1024 trials) and keeps the fold independent of the thread count.
+const BATCH: usize = 64;
+
+/// Successful trials whose ratios a level keeps. Up to this many every trial is kept and the
+/// quantiles are exact (the paper's studies run 10⁴ trials); beyond it a uniform reservoir
+/// sample of this size is kept (Vitter's algorithm R, seeded), so a level holds at most
+/// `RESERVOIR × (edges + 4) × 8` bytes (about 5 MB) whatever the trial count. A quantile
+/// read off the sample then has a rank error below √(ln(2/α)/(2n)) with probability 1 − α
+/// (Dvoretzky–Kiefer–Wolfowitz): n = 65,536, α = 10⁻⁶ gives 0.0105, about one percentile.
+/// Means are exact over all trials (streamed sums), and the judges take the sample size as n.
+pub const RESERVOIR: usize = 1 << 16;
+
+/// What a level keeps while its trials stream past: the reservoir of ratios and exact sums.
+struct Accumulator {
+    /// Ratios of the kept trials, `edges` per trial.
+    kept: Vec<f64>,
+    /// Successful trials seen.
+    seen: usize,
+    /// Sums of the four metrics over every successful trial.
+    sums: [f64; 4],
+    /// The reservoir's own random stream (apart from the trials').
+    g: ChaCha8Rng,
+    edges: usize,
+}
+
+impl Accumulator {
+    fn new(seed: u64, stream: u64, edges: usize) -> Accumulator {
+        let mut g = ChaCha8Rng::seed_from_u64(seed);
+        // the trials use streams (stream << 32) | chunk; this one is outside them
+        g.set_stream(!stream);
+        Accumulator {
+            kept: Vec::new(),
+            seen: 0,
+            sums: [0.0; 4],
+            g,
+            edges,
+        }
+    }
+
+    /// One successful trial's ratios.
+    fn push(&mut self, r: &[f64]) {
+        use rand::Rng as _;
+        let ones = vec![1.0; self.edges];
+        let Some(e) = TrialError::of(r, &ones) else {
+            return;
+        };
+        for (s, v) in self.sums.iter_mut().zip(e.metrics()) {
+            *s += v;
+        }
+        let n = self.seen;
+        self.seen += 1;
+        if n < RESERVOIR {
+            self.kept.extend_from_slice(r);
+        } else {
+            let j = self.g.random_range(0..=n);
+            if j < RESERVOIR {
+                self.kept[j * self.edges..(j + 1) * self.edges].copy_from_slice(r);
+            }
+        }
+    }
+}
+
 /// Run one level: random motions of the body, noise, solve, error of the real solution
 /// nearest the truth. `stream` separates levels and models; `progress` receives finished
-/// trial counts.
+/// trial counts. Memory is bounded by [`RESERVOIR`], not by the trial count.
 pub fn run_level(
     study: &Study,
     model: NoiseModel,
     stream: u64,
     progress: &(dyn Fn(usize) + Sync),
 ) -> LevelResult {
-    let Study {
-        solver,
-        ref body,
-        frames,
-        trials,
-        seed,
-        ref motions,
-    } = *study;
-    let truth: Vec<f64> = edges(body.points.len())
+    let truth: Vec<f64> = edges(study.body.points.len())
         .iter()
-        .map(|&(i, j)| body.squared_distance(i, j))
+        .map(|&(i, j)| study.body.squared_distance(i, j))
         .collect();
     let level = match model {
         NoiseModel::RelativeCoordinate { eps } | NoiseModel::RelativeLength { eps } => eps,
     };
-    let chunks = trials.div_ceil(CHUNK);
-    // per chunk: the ratios of its successful trials, flat
-    let results: Vec<Vec<f64>> = (0..chunks)
-        .into_par_iter()
-        .map(|c| {
-            let mut g = ChaCha8Rng::seed_from_u64(seed);
-            g.set_stream((stream << 32) | c as u64);
-            let n = CHUNK.min(trials - c * CHUNK);
-            let mut out = Vec::with_capacity(n * truth.len());
-            for _ in 0..n {
-                trial(
-                    solver,
-                    body,
-                    frames,
-                    motions.as_deref(),
-                    model,
-                    &truth,
-                    &mut g,
-                    &mut out,
-                );
-            }
-            progress(n);
-            out
-        })
-        .collect();
-    let ratios: Vec<f64> = results.concat();
     let e = truth.len();
-    let ones = vec![1.0; e];
-    let ok: Vec<TrialError> = ratios
+    let mut acc = Accumulator::new(study.seed, stream, e);
+    let chunks = study.trials.div_ceil(CHUNK);
+    for first in (0..chunks).step_by(BATCH) {
+        let batch: Vec<Vec<f64>> = (first..chunks.min(first + BATCH))
+            .into_par_iter()
+            .map(|c| run_chunk(study, model, stream, c, &truth, progress))
+            .collect();
+        for r in batch.iter().flat_map(|b| b.chunks(e)) {
+            acc.push(r);
+        }
+    }
+    let ok: Vec<TrialError> = acc
+        .kept
         .chunks(e)
-        .filter_map(|r| TrialError::of(r, &ones))
+        .filter_map(|r| TrialError::of(r, &vec![1.0; e]))
         .collect();
     let mut sorted: [Vec<f64>; 4] =
         std::array::from_fn(|m| ok.iter().map(|e| e.metrics()[m]).collect());
     for v in &mut sorted {
         v.sort_by(f64::total_cmp);
     }
+    let sampled = acc.seen > RESERVOIR;
     LevelResult {
         level,
         model: model.name().to_string(),
-        trials,
-        failures: trials - ok.len(),
+        trials: study.trials,
+        failures: study.trials - acc.seen,
         sorted,
-        ratios,
+        ratios: acc.kept,
         edges: e,
+        sums: sampled.then_some((acc.sums, acc.seen)),
     }
+}
+
+/// Chunk `c` of a level: its own random stream, its successful trials' ratios, flat.
+fn run_chunk(
+    study: &Study,
+    model: NoiseModel,
+    stream: u64,
+    c: usize,
+    truth: &[f64],
+    progress: &(dyn Fn(usize) + Sync),
+) -> Vec<f64> {
+    let mut g = ChaCha8Rng::seed_from_u64(study.seed);
+    g.set_stream((stream << 32) | c as u64);
+    let n = CHUNK.min(study.trials - c * CHUNK);
+    let mut out = Vec::with_capacity(n * truth.len());
+    for _ in 0..n {
+        trial(
+            study.solver,
+            &study.body,
+            study.frames,
+            study.motions.as_deref(),
+            model,
+            truth,
+            &mut g,
+            &mut out,
+        );
+    }
+    progress(n);
+    out
 }
 
 /// One trial: random (or the fixed) motions, noise, solve; appends the best solution's ratios to `out`
@@ -366,6 +446,31 @@ mod tests {
             pool.install(|| run_level(&s4, NoiseModel::RelativeLength { eps: 0.01 }, 1, &|_| {}));
         assert_eq!(a.sorted, b.sorted);
     }
+
+    #[test]
+    fn beyond_the_reservoir_memory_stays_fixed_and_means_stay_exact() {
+        let s = Study {
+            solver: StudySolver::P3f3,
+            body: Body::triangle(3.0, 4.0, 5.0).unwrap(),
+            frames: 3,
+            trials: 2 * RESERVOIR,
+            seed: 2,
+            motions: None,
+        };
+        let model = NoiseModel::RelativeCoordinate { eps: 0.001 };
+        let r = run_level(&s, model, 0, &|_| {});
+        let (sums, n) = r.sums.expect("more trials than the reservoir");
+        assert_eq!(n, s.trials - r.failures);
+        assert_eq!(r.ratios.len(), RESERVOIR * r.edges);
+        assert!(r.sorted.iter().all(|v| v.len() == RESERVOIR));
+        assert!((r.mean(0) - sums[0] / n as f64).abs() == 0.0 && r.mean(0).is_finite());
+        let one = rayon::ThreadPoolBuilder::new()
+            .num_threads(1)
+            .build()
+            .unwrap();
+        let b = one.install(|| run_level(&s, model, 0, &|_| {}));
+        assert_eq!(r.sorted, b.sorted);
+    }
 }
 
 /// The quantiles every summary reports.
@@ -414,7 +519,8 @@ impl LevelResult {
             model: self.model.clone(),
             trials: self.trials,
             failures: self.failures,
-            metrics: (0..METRICS.len())
+            // no successful trial: no distribution to summarise (and no mean to print)
+            metrics: (0..METRICS.len() * usize::from(!self.sorted[0].is_empty()))
                 .map(|m| MetricSummary {
                     metric: METRICS[m],
                     quantiles: QUANTILES

@@ -497,8 +497,13 @@ pub fn noise_text(case: &str, rows: &[crate::derivations::noise::LevelSummary]) 
 /// The comment block `orthocheck synth` writes above the tracks: how to make them again, and
 /// the truth to compare a solve with.
 pub fn synth_header(scene: &crate::model::Scene, seed: u64, noise: Option<f64>) -> String {
+    // The edges among the first points only: a header listing all p(p−1)/2 edges of a large
+    // scene would outgrow the tracks themselves (10,000 points: 49,995,000 edges, ~1 GB).
+    const LISTED_POINTS: usize = 10;
     let b = &scene.body;
-    let truth: Vec<String> = crate::derivations::solver::edges(b.points.len())
+    let p = b.points.len();
+    let shown = p.min(LISTED_POINTS);
+    let truth: Vec<String> = crate::derivations::solver::edges(shown)
         .iter()
         .map(|&(i, j)| {
             format!(
@@ -509,9 +514,17 @@ pub fn synth_header(scene: &crate::model::Scene, seed: u64, noise: Option<f64>) 
             )
         })
         .collect();
+    let label = if shown == p {
+        "true squared edges".to_string()
+    } else {
+        format!(
+            "true squared edges among the first {shown} points ({} of {}; the same seed gives the rest)",
+            truth.len(),
+            p * (p - 1) / 2
+        )
+    };
     format!(
-        "# orthocheck synth --points {} --frames {} --seed {seed}{}\n# true squared edges: {}\n",
-        b.points.len(),
+        "# orthocheck synth --points {p} --frames {} --seed {seed}{}\n# {label}: {}\n",
         scene.motions.len(),
         noise.map_or(String::new(), |e| format!(" --noise {e}")),
         truth.join(" ")

@@ -304,6 +304,7 @@ mod tests {
             sorted: std::array::from_fn(|_| v.clone()),
             ratios: Vec::new(),
             edges: 3,
+            sums: None,
         }
     }
 
