@@ -107,7 +107,7 @@ fn figure(b: &ResultBuilder, case: &DofIdentifiabilityCase, grid: &[Identifiabil
         claim: case.formula.claim.claim.clone(),
         title: "§2.1: the count against the Jacobian rank".into(),
         caption: format!(
-            "Every p and k of the grid (p = 1..{}, k = 1..{}, seed {}): what the paper's count says, and what the exact rank of the Jacobian decides.",
+            "Every p and k of the grid (p = 1..{}, k = 1..{}, seed {}): what the paper's count says, and what the exact rank of the Jacobian decides. A single point has no shape: its full rank says nothing about structure or motion.",
             case.max_points, case.max_frames, case.seed
         ),
         panels: vec![Plot {
@@ -119,12 +119,13 @@ fn figure(b: &ResultBuilder, case: &DofIdentifiabilityCase, grid: &[Identifiabil
             layers: vec![
                 Layer::new("count: too few", Shape::Points, Style::Other, cat(&|r| r.count.balance < 0)),
                 Layer::new("count: enough, rank: ambiguous", Shape::Points, Style::Mark, cat(&|r| r.count.balance >= 0 && r.deficiency > 0)),
-                Layer::new("count: enough, rank: identifiable", Shape::Points, Style::Computed, cat(&|r| r.count.balance >= 0 && r.deficiency == 0)),
+                Layer::new("count: enough, rank: identifiable", Shape::Points, Style::Computed, cat(&|r| r.count.balance >= 0 && r.deficiency == 0 && r.count.points >= SHAPE_POINTS)),
+                // a single point has no shape: its full rank identifies nothing but its image
+                Layer::new("a single point: no shape to identify", Shape::Points, Style::Third, cat(&|r| r.count.balance >= 0 && r.count.points < SHAPE_POINTS)),
             ],
-            // room below the grid for the legend
             window: Some((
                 [0.5, case.max_points as f64 + 0.5],
-                [-2.5, case.max_frames as f64 + 0.5],
+                [0.5, case.max_frames as f64 + 0.5],
             )),
         }],
     });

@@ -1,7 +1,6 @@
 //! Claims of the noise studies (§2, §3, §4): the paper's words about its noisy runs, judged
 //! against seeded distributions by the rule of `docs/verdicts.md` ("Statistical claims").
 
-use super::figure::{ecdf, Figure, Layer, Plot, Shape, Style};
 use super::{
     ClaimResult, Evidence, Power, ResultBuilder, Tolerance, ToleranceSource, Value, Verdict,
 };
@@ -10,13 +9,12 @@ use crate::derivations::noise::{LevelResult, Study, METRICS, QUANTILES};
 use crate::derivations::solver::default_edge_names;
 use crate::error::Result;
 use crate::model::Body;
-use crate::studies::noise::{
-    edge_medians, run_both, run_errors, run_study, RunErrors, SymbolDistances,
-};
+use crate::studies::noise::{edge_medians, run_both, run_errors, run_study, SymbolDistances};
 use judge::{
     claim_of, decide, judge_bound, margin, metric_of, metric_phrase, power, Claim, Decision, Facts,
     TYPICAL_BAND,
 };
+mod figure;
 mod judge;
 
 pub(super) fn check(b: &ResultBuilder, case: &NoiseStudyCase) -> Result<Vec<ClaimResult>> {
@@ -166,7 +164,13 @@ impl Context<'_> {
             dists: res,
         };
         let result = self.main_result(b, lv, suffix(None), read_as, &facts, neighbour);
-        b.figure(self.figure(&result.id, lv, res, run.as_ref()));
+        b.figure(figure::figure(
+            &result.id,
+            lv,
+            res,
+            run.as_ref(),
+            (self.trials, self.seed),
+        ));
         out.push(result);
         out
     }
@@ -448,58 +452,6 @@ impl Context<'_> {
                 );
         }
         ev
-    }
-
-    /// The distributions of the worst edge's error, with the printed run marked.
-    fn figure(
-        &self,
-        id: &str,
-        lv: &NoiseLevel,
-        res: &[LevelResult],
-        run: Option<&RunErrors>,
-    ) -> Figure {
-        let panel = |m: usize, what: &str| {
-            let mut layers: Vec<Layer> = res
-                .iter()
-                .enumerate()
-                .map(|(k, r)| {
-                    let style = if k == 0 {
-                        Style::Computed
-                    } else {
-                        Style::Other
-                    };
-                    let name = format!("{} model", r.model);
-                    Layer::new(&name, Shape::Line, style, ecdf(&r.sorted[m], 200))
-                })
-                .collect();
-            if let Some(e) = run {
-                layers.push(Layer::new(
-                    "the paper's run",
-                    Shape::Verticals,
-                    Style::Mark,
-                    vec![[e.metrics[m], 0.5]],
-                ));
-            }
-            Plot {
-                title: format!("largest relative error in {what}"),
-                x_label: format!("relative error in {what} (log)"),
-                y_label: "fraction of trials".into(),
-                equal_aspect: false,
-                log_x: true,
-                layers,
-                window: None,
-            }
-        };
-        Figure {
-            id: format!("fig-{}", id.replace('/', "-")),
-            claim: id.to_string(),
-            title: format!("Noise {}: error distributions", lv.level.text),
-            caption: format!(
-                "Empirical distributions of the worst edge's relative error over {} seeded trials per model (seed {}), and the paper's printed run.",
-                self.trials, self.seed
-            ),
-            panels: vec![panel(0, "squares"), panel(2, "lengths")],
-        }
     }
 }
 

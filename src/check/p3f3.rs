@@ -389,7 +389,8 @@ fn figures(
                 Style::Printed,
                 frame_points(&bx.center, i),
             )
-            .labelled(&["P", "Q", "R"])];
+            .labelled(&["P", "Q", "R"])
+            .beneath()];
             if let Some(w) = &s.body_fit {
                 layers.push(Layer::new(
                     "exact view inside the rounding box",
@@ -414,6 +415,9 @@ fn figures(
     rounding_figure(b, case, s, targets);
 }
 
+/// Points of the cloud drawn per root: enough to show its shape, few enough for a page.
+const DRAWN_PER_ROOT: usize = 1500;
+
 fn rounding_figure(b: &ResultBuilder, case: &P3f3ExampleCase, s: &Study, targets: &[[f64; 3]]) {
     let root = |k: usize| {
         thin(
@@ -421,26 +425,22 @@ fn rounding_figure(b: &ResultBuilder, case: &P3f3ExampleCase, s: &Study, targets
                 .iter()
                 .map(|m| [m[k][0], m[k][2]])
                 .collect::<Vec<_>>(),
-            1500,
+            DRAWN_PER_ROOT,
         )
     };
     let mut layers: Vec<Layer> = (0..targets.len())
         .map(|k| {
-            let style = if k == 0 {
-                Style::Computed
-            } else {
-                Style::Other
-            };
             Layer::new(
                 &format!("root near printed solution {}", k + 1),
                 Shape::Points,
-                style,
+                Style::series(k),
                 root(k),
             )
         })
         .collect();
+    let thinned: usize = layers.iter().map(|l| l.points.len()).sum();
     layers.push(Layer::new(
-        "at the printed coordinates",
+        "root at the printed coordinates",
         Shape::Points,
         Style::Printed,
         s.at_printed.iter().map(|r| [r[0], r[2]]).collect(),
@@ -454,28 +454,35 @@ fn rounding_figure(b: &ResultBuilder, case: &P3f3ExampleCase, s: &Study, targets
     let window = central_window(
         &layers
             .iter()
-            .take(2)
+            .take(targets.len())
             .flat_map(|l| l.points.iter().copied())
             .collect::<Vec<_>>(),
         0.02,
     );
+    let mut plot = Plot {
+        title: "roots over the rounding box".into(),
+        x_label: "a²".into(),
+        y_label: "c²".into(),
+        equal_aspect: false,
+        log_x: false,
+        window,
+        layers,
+    };
+    let dropped = plot.keep_inside();
     b.figure(Figure {
         id: "fig-ex2-rounding".into(),
         claim: case.solutions.claim.claim.clone(),
         title: "§2: where the roots go within the rounding of the figure".into(),
         caption: format!(
-            "(a², c²) of both real roots for {} seeded points of the box of half a unit around the printed coordinates (seed {}), the roots at the printed coordinates, and the paper's solutions.",
-            case.rounding_trials, case.seed
+            "(a², c²) of both real roots over the box of half a unit around the printed coordinates. Of {} seeded points of the box (seed {}), {} give two real roots; {} of these, evenly spaced, are drawn for each root. The window holds the central 96 % of each coordinate (widened by a tenth): {} points lie outside it and are left out, {} are drawn. Also drawn: the roots at the printed coordinates, and the paper's solutions.",
+            case.rounding_trials,
+            case.seed,
+            s.cloud.len(),
+            DRAWN_PER_ROOT.min(s.cloud.len()),
+            dropped,
+            thinned - dropped
         ),
-        panels: vec![Plot {
-            title: "roots over the rounding box".into(),
-            x_label: "a²".into(),
-            y_label: "c²".into(),
-            equal_aspect: false,
-            log_x: false,
-            window,
-            layers,
-        }],
+        panels: vec![plot],
     });
 }
 

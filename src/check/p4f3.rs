@@ -195,7 +195,11 @@ fn figure(b: &ResultBuilder, case: &P4f3ExampleCase, bx: &RoundingBox, fit: &Fig
     };
     let panels = (0..case.figure.frames.len())
         .map(|i| {
-            let mut layers = tetra(&unflat(&bx.center, i), "printed", Style::Printed);
+            // the printed views beneath, wide: the exact views drawn on them leave both visible
+            let mut layers: Vec<Layer> = tetra(&unflat(&bx.center, i), "printed", Style::Printed)
+                .into_iter()
+                .map(Layer::beneath)
+                .collect();
             if let Some(w) = &fit.witness {
                 layers.extend(tetra(
                     &unflat(&w.point, i),

@@ -52,28 +52,30 @@ fn figure(b: &ResultBuilder, case: &TwoFramesCase, pts: &[Vector3<f64>; 5], c: &
     let v1 = (view(&first, &c.u1), view(&second, &c.u1));
     let v2 = view(&first, &c.u2);
     let v2p = align(&v2, &view(&second, &c.u2_prime));
+    // PQR wide beneath, PQ′R′ drawn on it: where the images coincide both stay visible
     let layer = |name: &str, style: Style, pts: Vec<[f64; 2]>, primed: bool| {
-        Layer::new(name, Shape::Polygon, style, pts).labelled(if primed {
-            &["P", "Q′", "R′"]
+        let l = Layer::new(name, Shape::Polygon, style, pts);
+        if primed {
+            l.labelled(&["P", "Q′", "R′"])
         } else {
-            &["P", "Q", "R"]
-        })
+            l.labelled(&["P", "Q", "R"]).beneath()
+        }
     };
     b.figure(Figure {
             id: "fig-two-frames".into(),
             claim: case.counterexample.claim.claim.clone(),
             title: "§5.1: two triangles, the same two views".into(),
-            caption: "PQR and PQ′R′ (the printed coordinates) seen along u₁ (Q′ − Q), and PQR along u₂ with PQ′R′ along u₂′ (moved onto it by a rotation in the image plane): congruent images of triangles that are not congruent.".into(),
+            caption: "PQR and PQ′R′ (the printed coordinates) seen along u₁ (Q′ − Q), and PQR along u₂ with PQ′R′ along u₂′ (moved onto it by a rotation in the image plane): congruent images of triangles that are not congruent. PQR is drawn wide and pale beneath, PQ′R′ dashed on it; where they coincide, both names label the point.".into(),
             panels: vec![
                 Plot::image(
                     "view 1 (u₁)",
                     vec![layer("PQR", Style::Computed, v1.0, false), layer("PQ′R′", Style::Other, v1.1, true)],
                 ),
                 Plot::image(
-                    "view 2 (u₂ and u₂′)",
+                    "view 2 (PQR along u₂, PQ′R′ along u₂′)",
                     vec![
-                        layer("PQR along u₂", Style::Computed, v2, false),
-                        layer("PQ′R′ along u₂′", Style::Other, v2p, true),
+                        layer("PQR", Style::Computed, v2, false),
+                        layer("PQ′R′", Style::Other, v2p, true),
                     ],
                 ),
             ],

@@ -19,7 +19,8 @@ pub struct Args {
     cases: PathBuf,
 }
 
-/// Run every case, write report.md, report.json and report.html, print the verdict counts.
+/// Run every case, write report.md, report.json, report.html and one SVG file per figure,
+/// print the verdict counts.
 pub fn run(args: Args) -> Result<(), Error> {
     let all = cases::load_all(&args.cases)?;
     let paper = cases::load_paper(&args.cases)?;
@@ -41,12 +42,13 @@ pub fn run(args: Args) -> Result<(), Error> {
     r.write(&args.out)?;
     let dir = &args.out;
     out(&format!(
-        "wrote {}, {} and {} ({} claims, {} figures)\n",
+        "wrote {}, {} and {} ({} claims), and {} figures as {}\n",
         dir.join("report.md").display(),
         dir.join("report.json").display(),
         dir.join("report.html").display(),
         r.claims.len(),
-        r.figures.len()
+        r.figures.len(),
+        dir.join("<figure id>.svg").display()
     ))?;
     for (verdict, n) in &r.summary {
         if *n > 0 {

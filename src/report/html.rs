@@ -5,7 +5,7 @@ use std::collections::BTreeMap;
 use std::fmt::Write as _;
 
 use super::values::{computed_text, power_text, printed_text, tolerance_text, value_text};
-use super::{plot_svg, Report};
+use super::Report;
 use crate::check::figure::Figure;
 use crate::check::{ClaimResult, Verdict};
 
@@ -80,9 +80,7 @@ fn badge(v: Verdict) -> String {
 
 fn figure_html(f: &Figure) -> String {
     let mut s = format!("<figure id=\"{}\"><div class=\"panels\">", escape(&f.id));
-    for p in &f.panels {
-        s.push_str(&plot_svg(p));
-    }
+    s.push_str(&super::svg::figure_svg(f, false));
     // the key: every layer name once, in its colour
     let mut key: Vec<(String, crate::check::figure::Style)> = Vec::new();
     for l in f.panels.iter().flat_map(|p| &p.layers) {

@@ -4,7 +4,7 @@ pub mod html;
 pub mod svg;
 pub mod values;
 
-pub use svg::plot_svg;
+pub use svg::{figure_svg, plot_svg};
 
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
@@ -166,17 +166,19 @@ impl Report {
         s
     }
 
-    /// Write `report.md`, `report.json` and `report.html` into `dir` (created if missing).
-    /// Each file is written to a temporary name in `dir` first and renamed once all three
-    /// are complete, so a failure leaves the old report whole; a name in `dir` that is a
-    /// symbolic link is refused rather than followed.
+    /// Write `report.md`, `report.json`, `report.html` and every figure as
+    /// `<figure id>.svg` into `dir` (created if missing). Each file is written to a temporary
+    /// name in `dir` first and renamed once all are complete, so a failure leaves the old
+    /// report whole; a name in `dir` that is a symbolic link is refused rather than followed.
     pub fn write(&self, dir: &Path) -> Result<()> {
         prepare_output_dir(dir)?;
-        let files = [
+        let svgs = svg::figure_files(&self.figures)?;
+        let mut files = vec![
             ("report.md", self.to_markdown()),
             ("report.json", self.to_json()),
             ("report.html", html::render(self)),
         ];
+        files.extend(svgs.iter().map(|(n, t)| (n.as_str(), t.clone())));
         write_all_atomic(dir, &files)
     }
 }

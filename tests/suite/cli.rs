@@ -118,6 +118,14 @@ fn report_writes_both_files_deterministically() {
         "report.html differs from the in-process run"
     );
     check_html(&html, &v);
+    // every figure beside the report as <figure id>.svg, the same as the in-process one
+    let files = orthocheck::report::svg::figure_files(&same.figures).unwrap();
+    assert_eq!(files.len(), same.figures.len());
+    for (name, text) in &files {
+        let written = std::fs::read_to_string(dir.path().join(name)).unwrap();
+        assert!(written == *text, "{name} differs from the in-process run");
+        roxmltree::Document::parse(&written).expect("a figure file is well-formed SVG");
+    }
     assert!(
         std::fs::read_to_string(dir.path().join("report.md")).unwrap() == same.to_markdown(),
         "report.md differs from the in-process run"
@@ -499,13 +507,8 @@ fn check_html(html: &str, report: &serde_json::Value) {
         svgs += 1;
         rest = &rest[end..];
     }
-    let panels: usize = report["figures"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .map(|f| f["panels"].as_array().unwrap().len())
-        .sum();
-    assert_eq!(svgs, panels, "one SVG per panel of report.json");
+    let figures = report["figures"].as_array().unwrap().len();
+    assert_eq!(svgs, figures, "one SVG per figure of report.json");
     assert!(svgs >= 10, "{svgs} figures");
     for external in ["http://", "https://", "src=", "@import", "url("] {
         assert!(!html.contains(external), "the page refers to {external}");
@@ -534,6 +537,39 @@ fn report_refuses_a_symlinked_output_file() {
         !out.join("report.md").exists(),
         "nothing is written when one name is refused"
     );
+    // the same for a figure's file
+    std::fs::remove_file(out.join("report.html")).unwrap();
+    std::os::unix::fs::symlink(&outside, out.join("fig-one.svg")).unwrap();
+    let figure = orthocheck::check::figure::Figure {
+        id: "fig-one".into(),
+        claim: "c".into(),
+        title: "t".into(),
+        caption: "c".into(),
+        panels: Vec::new(),
+    };
+    let r = orthocheck::report::Report::with(Vec::new(), vec![figure], Default::default());
+    let e = r.write(&out).unwrap_err().to_string();
+    assert!(e.contains("symbolic link"), "{e}");
+    assert_eq!(std::fs::read_to_string(&outside).unwrap(), "keep me");
+    assert!(!out.join("report.md").exists());
+}
+
+/// A figure whose id is not a plain file name is refused, never written outside the folder.
+#[test]
+fn report_refuses_a_figure_id_that_is_a_path() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("out");
+    let figure = orthocheck::check::figure::Figure {
+        id: "../escaped".into(),
+        claim: "c".into(),
+        title: "t".into(),
+        caption: "c".into(),
+        panels: Vec::new(),
+    };
+    let r = orthocheck::report::Report::with(Vec::new(), vec![figure], Default::default());
+    assert!(r.write(&out).is_err());
+    assert!(!dir.path().join("escaped.svg").exists());
+    assert!(!out.join("report.md").exists());
 }
 
 /// A reader that stops reading ends the command quietly (exit 0, as Unix tools do); a full

@@ -9,6 +9,9 @@ mod cli;
 mod common;
 /// docs/errata.md is what `orthocheck audit --all --markdown` prints.
 mod errata;
+/// Every figure of the paper run, drawn: data inside the axes, keys outside, one colour per
+/// series, equal scales where claimed, captions without LaTeX.
+mod figures;
 /// The paper cases cover the claims this tool must decide.
 mod inventory;
 /// The Markdown and HTML renderers on fixed claims.

@@ -154,16 +154,19 @@ fn figure(
                 Layer::new(
                     "tested point (printed)",
                     Shape::Points,
-                    Style::Mark,
+                    Style::Third,
                     vec![pts[0]],
                 )
                 .labelled(&["T"]),
+                // wide beneath the recomputed line, which would otherwise hide it
                 Layer::new(
                     "segment (printed)",
                     Shape::Line,
-                    Style::Printed,
+                    Style::Other,
                     p.segment.iter().map(xy).collect(),
-                ),
+                )
+                .with_vertices()
+                .beneath(),
             ];
             let mut title = format!("line {}", p.line);
             if let Some(f) = fit {
@@ -179,6 +182,18 @@ fn figure(
                         Shape::Line,
                         Style::Computed,
                         c.to_vec(),
+                    ));
+                }
+                let off: Vec<[f64; 2]> = (0..2)
+                    .filter(|&e| f.endpoint_distance[e] > f.endpoint_bound[e])
+                    .filter_map(|e| p.segment.get(e).map(xy))
+                    .collect();
+                if !off.is_empty() {
+                    layers.push(Layer::new(
+                        "endpoint off the line beyond rounding",
+                        Shape::Points,
+                        Style::Mark,
+                        off,
                     ));
                 }
                 let sign = if f.version < 0 { "b −" } else { "b +" };
@@ -199,7 +214,7 @@ fn figure(
         id: "fig-ex5-panels".into(),
         claim: case.panels.claim.claim.clone(),
         title: "§5.2: the panels, redrawn".into(),
-        caption: "Every \\DreieckMitGerade panel: frame 2 re-centred at the assigned R, the tested point, the segment the paper draws, and the line T₂ₐT₂_b recomputed at the printed d0 (clipped to the panel's box).".into(),
+        caption: "Every panel of the §5.2 figure (a triangle with a line): frame 2 re-centred at the assigned R, the tested point, the segment the paper draws (wide, beneath), and the line T₂ₐT₂_b recomputed at the printed d0 (dashed, clipped to the panel's box); a ring marks a segment endpoint farther from the line of its printed block than the rounding allows.".into(),
         panels: plots,
     });
 }
