@@ -159,6 +159,15 @@ pub struct DebugBlocks {
     /// The program's labels of the twelve numbers of a block that are recomputed, in order:
     /// b², PaK (x, y, z), PbK (x, y, z), Pa (x, y), Pb (x, y), the (Linie) difference.
     pub quantities: Vec<String>,
+    /// The program's labels of every number a block prints besides its flags and version,
+    /// in print order: b, b0, d, d0, T1 (x, y), Q1, T2, Q2, PaK (x, y, z), PbK, Pa, Pb, P2
+    /// (x, y), P1, and the (Linie) left side, right side and difference (31).
+    pub printed_labels: Vec<String>,
+    /// The factors d0 is multiplied by to see whether a block's distance depends on d.
+    pub d_factors: Vec<f64>,
+    /// Seeded draws of the frames inside their rounding box for the floating-point sign of
+    /// Δ_b at its exact double root.
+    pub rounding_draws: usize,
     /// The mutant of every printed number: moved by this many half units.
     pub mutant_half_units: f64,
     /// One block per attempt.

@@ -24,6 +24,9 @@ pub struct Restatement {
     /// outside the paper's scope.
     #[serde(default)]
     pub restates: Vec<String>,
+    /// Result ids of those claims the statement does not rest on (the reason in the case).
+    #[serde(default)]
+    pub except: Vec<String>,
     /// Why it is outside the scope, when `restates` is empty.
     #[serde(default)]
     pub out_of_scope: Option<String>,

@@ -277,6 +277,18 @@ fn identity_example(c: &IdentityExampleCase, v: &Validator) -> Result<()> {
             "needs the 12 labels of a block's recomputed numbers and a mutant of more than one half unit".into(),
         );
     }
+    if c.debug.printed_labels.len() != 31
+        || c.debug
+            .d_factors
+            .iter()
+            .any(|k| !(k.is_finite() && *k > 0.0))
+    {
+        return v.err(
+            "check.identity_example.debug.printed_labels",
+            "needs the 31 labels of a block's printed numbers, and positive finite d factors"
+                .into(),
+        );
+    }
     if c.census_c_factor.is_nan() || c.census_c_factor < 1.0 {
         return v.err(
             "check.identity_example.census_c_factor",
@@ -295,6 +307,18 @@ fn restatements(c: &RestatementsCase, v: &Validator) -> Result<()> {
         return v.err(
             &format!("check.restatements.items[{i}].restates"),
             "give either the claims it restates or why it is out of scope".into(),
+        );
+    }
+    // an exception names a result of a restated claim: `claim` or `claim/suffix`
+    if let Some(i) = c.items.iter().position(|r| {
+        r.except.iter().any(|e| {
+            let claim = e.split('/').next().unwrap_or(e);
+            !r.restates.iter().any(|x| x == claim)
+        })
+    }) {
+        return v.err(
+            &format!("check.restatements.items[{i}].except"),
+            "an exception must be a result of a claim the item restates".into(),
         );
     }
     Ok(())

@@ -13,8 +13,11 @@ use crate::derivations::p4f3::{edge_index, realize};
 use crate::error::{Error, Result};
 use crate::studies::author_program::{matching_assignments, Example, Num};
 
+mod choice;
+mod correct;
 mod debug;
 mod panels;
+mod program;
 
 /// A printed number for the studies. `%g` prints an exact zero as "0" (anything else shows
 /// its digits), so a printed zero has no rounding; other numbers carry half a unit in the
@@ -80,7 +83,7 @@ pub(super) fn check(b: &ResultBuilder, case: &IdentityExampleCase) -> Result<Vec
     out.push(table_result(b, case, &fit));
     let blocks = debug::blocks(case, &ex, &fit.perm);
     out.extend(debug::results(b, case, &ex, &fit.perm, &blocks));
-    out.extend(debug::correct(b, case, &ex, &fit.perm, &blocks));
+    out.extend(correct::results(b, case, &ex, &fit.perm, &blocks));
     out.extend(panels::results(b, case, &ex, &fit.perm, &blocks));
     Ok(out)
 }

@@ -282,7 +282,7 @@ fn restatement(
     }
     let mapped: Vec<&ClaimResult> = results
         .iter()
-        .filter(|r| item.restates.contains(&r.claim))
+        .filter(|r| item.restates.contains(&r.claim) && !item.except.contains(&r.id))
         .collect();
     let missing = item
         .restates

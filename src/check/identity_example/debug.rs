@@ -6,10 +6,10 @@ use super::{
     Verdict,
 };
 use crate::cases::{DebugAttempt, IdentityExampleCase, Printed};
+use crate::studies::author_program::program::Bounded;
 use crate::studies::author_program::{
-    delta_at_bound, recompute, DeltaAtBound, Example, Recomputed,
+    delta_at_bound, float_sign_at_bound, recompute, DeltaAtBound, Example, Recomputed,
 };
-use crate::studies::identity_census::{both_signs_generic, rank_example};
 
 /// One printed block with what the study made of it.
 pub(super) struct Block<'a> {
@@ -17,6 +17,8 @@ pub(super) struct Block<'a> {
     /// The assignments whose re-centred frame 2 matches the printed T₂, Q₂, P₂.
     pub matches: Vec<[usize; 4]>,
     pub recomputed: Option<Recomputed>,
+    /// The block through the author's program as its printouts pin it down.
+    pub program: Option<Bounded>,
 }
 
 impl Block<'_> {
@@ -48,10 +50,14 @@ pub(super) fn blocks<'a>(
                     pb,
                 )
             });
+            let program = (matches.len() == 1)
+                .then(|| super::program::run_block(ex, frame1, &matches[0], a, d))
+                .flatten();
             Block {
                 attempt: a,
                 matches,
                 recomputed: recomputed.flatten(),
+                program,
             }
         })
         .collect()
@@ -156,14 +162,15 @@ pub(super) fn results(
     frame1: &[usize; 4],
     blocks: &[Block],
 ) -> Vec<ClaimResult> {
-    vec![
+    let mut out = vec![
         debug_result(b, case, blocks),
         undetermined_result(b, case, ex, frame1, blocks),
-        depths_result(b, case, blocks),
-        choice_result(b, case, blocks),
-        errors_result(b, case, ex, frame1, blocks),
-        deltab_result(b, case, ex, frame1, blocks),
-    ]
+    ];
+    out.extend(super::program::results(b, case, blocks));
+    out.push(super::choice::result(b, case, ex, frame1, blocks));
+    out.push(errors_result(b, case, ex, frame1, blocks));
+    out.extend(deltab_results(b, case, ex, frame1, blocks));
+    out
 }
 
 /// The debug numbers: reproduced within rounding when every number agrees and every mutant
@@ -204,66 +211,6 @@ fn debug_result(b: &ResultBuilder, case: &IdentityExampleCase, blocks: &[Block])
             );
     }
     c.verdict(judge_debug(agree, total, unmatched))
-}
-
-fn depths_result(b: &ResultBuilder, case: &IdentityExampleCase, blocks: &[Block]) -> ClaimResult {
-    let d = case.debug.significant_digits;
-    let (mut by_r, mut by_p, mut n, mut miss) = (0, 0, 0, 0.0_f64);
-    for bl in blocks {
-        let Some(r) = &bl.recomputed else { continue };
-        for (k, p) in [&bl.attempt.pa[2], &bl.attempt.pb[2]]
-            .into_iter()
-            .enumerate()
-        {
-            let x = num_g(p, d);
-            let tol = r.depths_r_bound[k] + x.half + r.float_bound;
-            n += 1;
-            let off = (x.value - r.depths_r[k]).abs();
-            if off <= tol {
-                by_r += 1;
-            } else {
-                miss = miss.max(off / tol);
-            }
-            by_p += usize::from((x.value - r.depths_p[k]).abs() <= tol);
-        }
-    }
-    b.claim(&case.debug.claim)
-        .suffix("depths-and-line-split")
-        .printed("third coordinates of Pa and Pb", Value::count(n))
-        .computed("hypothesis R at depth 0 in frame 2: reproduced", Value::count_of(by_r, n))
-        .computed("hypothesis R at depth 0: largest miss (tolerances)", Value::real(miss))
-        .computed("hypothesis P at depth 0 in frame 2: reproduced", Value::count_of(by_p, n))
-        .power(Power::none("not reproducible: the program's depth convention for the rest, and how it splits (Linie) into two sides, are not in the paper (only the difference is checked, in ex5-debug)"))
-        .method("the printed depths against ours under each hypothesis, with the propagated bound")
-        .verdict(Verdict::NotReproducible)
-}
-
-fn choice_result(b: &ResultBuilder, case: &IdentityExampleCase, blocks: &[Block]) -> ClaimResult {
-    let proj: Vec<f64> = blocks
-        .iter()
-        .filter_map(|x| x.recomputed.as_ref().map(|r| r.d_over_projection))
-        .collect();
-    let small: Vec<f64> = blocks
-        .iter()
-        .filter_map(|x| x.recomputed.as_ref().and_then(|r| r.d_over_smallest))
-        .collect();
-    let span = |v: &[f64]| {
-        v.iter()
-            .fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), x| {
-                (l.min(*x), h.max(*x))
-            })
-    };
-    let ((pl, ph), (sl, sh)) = (span(&proj), span(&small));
-    b.claim(&case.debug.claim)
-        .suffix("choice-of-d")
-        .printed("d0 per block", Value::count(blocks.len()))
-        .computed("hypothesis d0 = k × longest projection of RP: k ranges over", Value::interval(pl, ph))
-        .computed("hypothesis d0 = k × smallest admissible c: k ranges over", Value::interval(sl, sh))
-        .power(Power::none("not reproducible: the paper gives no rule for \"the a priori selected value for c\"; no constant factor fits"))
-        .method("d0 of every block against the longest projection of its edge and the smallest c the paper allows")
-        .detail("d0 / longest projection", Value::reals(&proj))
-        .detail("d0 / smallest admissible c", Value::reals(&small))
-        .verdict(Verdict::NotReproducible)
 }
 
 /// The assignments no block shows.
@@ -356,6 +303,18 @@ fn errors_result(
     let never_skipped = r.cand.iter().all(|x| r.skip.contains(&x.2));
     let ok = r.per.iter().all(|x| x.1.is_some()) && hit.len() == r.cand.len() && never_skipped;
     let float_negative = r.all.iter().filter(|x| x.float_at_bound < 0.0).count();
+    let kappa_negative: Vec<[usize; 4]> = r
+        .all
+        .iter()
+        .filter(|x| x.kappa < 0.0)
+        .map(|x| x.assignment)
+        .collect();
+    let never: Vec<[usize; 4]> = r
+        .all
+        .iter()
+        .filter(|x| x.never_real)
+        .map(|x| x.assignment)
+        .collect();
     b.claim(&case.debug.claim)
         .suffix("errors")
         .printed("\"ERROR: Fdg_dg / Fdg_g2\" lines", Value::count(r.per.len()))
@@ -365,6 +324,10 @@ fn errors_result(
         .computed("all of them without a block", Value::flag(never_skipped))
         .computed("printed ratios equal to f_cb / f_b² of exactly one of them", Value::count_of(r.per.iter().filter(|x| x.1.is_some()).count(), r.per.len()))
         .computed("those assignments matched", Value::count_of(hit.len(), r.cand.len()))
+        .computed("the ratio printed: f_cb / f_b² (Appendix A: coefficient of c²b² over that of b⁴)", Value::flag(ok))
+        .computed("Δ_b = κ (c² − c₁²)(c² − c₂²), κ = f_cb² − 4 f_b² f_c²: zero at both frames' squared projections of RP (exact)", Value::count_of(r.all.iter().filter(|x| x.zero_at_both).count(), r.all.len()))
+        .computed("assignments with κ < 0: exactly the never-real ones (so Δ_b < 0 for every c above the bound)", Value::flag(kappa_negative == never))
+        .computed("κ of the never-real assignments", Value::reals(&r.all.iter().filter(|x| x.never_real).map(|x| x.kappa).collect::<Vec<_>>()))
         .tolerance(Tolerance::bound(0.0, ToleranceSource::Propagated, "half a unit in the sixth significant digit + the first-order effect of the frames' rounding on f_cb / f_b² + 64ε of it"))
         .power(Power::mutant(!determined.is_empty(), "every printed ratio whose digits the frames determine, moved by the mutant's half units either way, matches no assignment (the rest: ex5-debug/undetermined)"))
         .method("\"Fdg_dg / Fdg_g2\" read as f_cb / f_b² of the Appendix A quadratic; Δ_b evaluated exactly over ℚ at the printed frames: it is exactly 0 at the lower bound c² = the longest squared projection of RP for every assignment, so its floating-point sign there is noise; the sign just above the bound and the leading coefficient decide, exactly")
@@ -413,13 +376,19 @@ fn undetermined_result(
         .verdict(Verdict::Inconclusive)
 }
 
-fn deltab_result(
+/// The assignments the printout skips although b is real above the bound: by elimination,
+/// those of the "Root of deltab negative" lines (each printed once per version).
+fn judge_deltab(rest: usize, lines: usize, positive_above: usize) -> Verdict {
+    Verdict::holds(rest > 0 && 2 * rest == lines && positive_above == rest)
+}
+
+fn deltab_results(
     b: &ResultBuilder,
     case: &IdentityExampleCase,
     ex: &Example,
     frame1: &[usize; 4],
     blocks: &[Block],
-) -> ClaimResult {
+) -> Vec<ClaimResult> {
     let all = delta_at_bound(ex, frame1);
     let skip = skipped(blocks);
     let rest: Vec<&DeltaAtBound> = all
@@ -427,75 +396,57 @@ fn deltab_result(
         .filter(|x| skip.contains(&x.assignment) && !x.never_real)
         .collect();
     let negative: usize = case.debug.errors.iter().map(|e| e.delta_b_negative).sum();
-    b.claim(&case.debug.claim)
+    let above = rest
+        .iter()
+        .filter(|x| x.sign_above > 0 && x.kappa > 0.0)
+        .count();
+    let between = rest.iter().filter(|x| x.sign_between < 0).count();
+    let at_bound = rest.iter().filter(|x| x.zero_at_bound).count();
+    let names = format!(
+        "{:?}",
+        rest.iter().map(|x| x.assignment).collect::<Vec<_>>()
+    );
+    let draws = case.debug.rounding_draws;
+    let signs: Vec<(usize, usize)> = rest
+        .iter()
+        .map(|x| float_sign_at_bound(ex, frame1, &x.assignment, draws, case.seed))
+        .collect();
+    let which = b
+        .claim(&case.debug.claim)
         .suffix("errors-deltab")
         .printed("\"ERROR: Root of deltab negative\" lines", Value::count(negative))
-        .computed("assignments without a block and with real b above the bound", Value::count(rest.len()))
-        .computed("hypothesis Δ_b < 0 just above the bound: assignments where it holds", Value::count_of(rest.iter().filter(|x| x.sign_above < 0).count(), rest.len()))
-        .computed("hypothesis Δ_b < 0 at the smaller frame's projection of RP (c below the bound): holds", Value::count_of(rest.iter().filter(|x| x.sign_at_smaller < 0).count(), rest.len()))
-        .power(Power::none("not reproducible: the c the program used for these assignments is not printed, and Δ_b of the paper's quadratic is positive for every c above the bound"))
-        .method("the assignments the printout skips without an Fdg line, through the exact Δ_b")
-        .detail("assignments", Value::label(format!("{:?}", rest.iter().map(|x| x.assignment).collect::<Vec<_>>())))
-        .verdict(Verdict::NotReproducible)
-}
-
-pub(super) fn correct(
-    b: &ResultBuilder,
-    case: &IdentityExampleCase,
-    ex: &Example,
-    truth: &[usize; 4],
-    blocks: &[Block],
-) -> Vec<ClaimResult> {
-    let r = rank_example(ex, truth, case.census_c_factor);
-    let first_two = blocks.len() >= 2
-        && blocks[0].assignment() == Some(*truth)
-        && blocks[1].assignment() == Some(*truth)
-        && blocks[0].attempt.version != blocks[1].attempt.version;
-    let on_line =
-        !r.true_distances.is_empty() && r.true_distances.iter().all(|d| *d <= r.true_bound);
-    let runner_up = r
-        .by_paper
+        .computed("assignments without a block and with κ > 0 (not Fdg ones)", Value::count(rest.len()))
+        .computed("… each once per version", Value::count(2 * rest.len()))
+        .computed("of them: Δ_b > 0 for every c above the bound (exact: κ > 0, positive just above)", Value::count_of(above, rest.len()))
+        .tolerance(Tolerance::exact("counts and signs over ℚ"))
+        .power(Power::exact_value("any other number of lines, or a skipped assignment with Δ_b < 0 above the bound, is rejected"))
+        .method("by elimination: 24 assignments − those with a block − those with an Fdg line (κ < 0) leave these; Δ_b = κ (c² − c₁²)(c² − c₂²) exactly (ex5-debug/errors), so with κ > 0 it is negative only for c² strictly between the two frames' squared projections of RP, and zero at both")
+        .detail("assignments", Value::label(names))
+        .verdict(judge_deltab(rest.len(), negative, above));
+    let negs: Vec<f64> = signs
         .iter()
-        .find(|x| x.0 != *truth)
-        .map_or(f64::INFINITY, |x| x.1);
-    let within: Vec<[usize; 4]> = r
-        .by_paper
-        .iter()
-        .filter(|x| x.1 <= r.true_bound)
-        .map(|x| x.0)
+        .map(|s| s.0 as f64 / draws.max(1) as f64)
         .collect();
-    let (both, scenes) = both_signs_generic(case.census_trials, case.seed, case.census_c_factor);
-    let tol = Tolerance::bound(
-        r.true_bound,
-        ToleranceSource::Propagated,
-        "first-order effect of the frames' rounding on the distance, plus 3√(64ε) × the image size",
-    );
-    let first = b
-        .claim(&case.correct)
-        .printed("attempts called correct", Value::count(2))
-        .computed("first two blocks: the true assignment, opposite signs of b", Value::flag(first_two))
-        .computed("distances of T₂ from its line, true assignment", Value::reals(&r.true_distances))
-        .computed("generic scenes where both signs of b put T₂ on its line", Value::count_of(both, scenes))
-        .tolerance(tol.clone())
-        .power(Power::mutant(runner_up > r.true_bound, "the best wrong assignment, through the same distance test, is rejected"))
-        .method("the procedure at c = census_c_factor × the smallest admissible c for the true assignment; seeded generic scenes (both values of b are members of the two-view family, not a right and a wrong one)")
-        .detail("best wrong assignment's distance", Value::real(runner_up))
-        .detail("generic scenes: seed", Value::exact(case.seed))
-        .verdict(Verdict::holds(first_two && on_line));
-    let epi_first = r.by_epipolar.first().map(|x| x.0);
-    let ranking = b
-        .claim(&case.correct)
-        .suffix("ranking")
-        .printed("the assignment that puts T₂ on its line", Value::label(format!("{truth:?}")))
-        .computed("assignments within the bound by the paper's distance", Value::label(format!("{within:?}")))
-        .computed("first by the equal-scale epipolar residual", Value::label(format!("{:?}", epi_first.unwrap_or([0; 4]))))
-        .tolerance(tol)
-        .power(Power::mutant(runner_up > r.true_bound, "every wrong assignment is rejected by the same bound"))
-        .method("every assignment of frame 2 (re-centred at its R) through the paper's procedure at census_c_factor × its smallest admissible c, and through the affine epipolar constraint with the coordinates' rounding (the body is planar: equal scale is met inside a two-dimensional null space)")
-        .detail("by the paper's distance", Value::reals(&r.by_paper.iter().map(|x| x.1).collect::<Vec<_>>()))
-        .detail("by the epipolar residual", Value::reals(&r.by_epipolar.iter().map(|x| x.1).collect::<Vec<_>>()))
-        .verdict(if within == [*truth] && epi_first == Some(*truth) { Verdict::Reproduced } else { Verdict::Contradicted });
-    vec![first, ranking]
+    let zeros: Vec<f64> = signs
+        .iter()
+        .map(|s| s.1 as f64 / draws.max(1) as f64)
+        .collect();
+    let cause = b
+        .claim(&case.debug.claim)
+        .suffix("errors-deltab/cause")
+        .printed("\"ERROR: Root of deltab negative\" lines", Value::count(negative))
+        .computed("hypothesis c² above the longest projection: Δ_b < 0 there (exact)", Value::count_of(rest.len() - above, rest.len()))
+        .computed("hypothesis c² strictly between the two projections (below the text's minimum): Δ_b < 0 (exact)", Value::count_of(between, rest.len()))
+        .computed("hypothesis c² = the longest projection: Δ_b = 0 exactly (a double root)", Value::count_of(at_bound, rest.len()))
+        .computed("… its floating-point value at the printed frames", Value::reals(&rest.iter().map(|x| x.float_at_bound).collect::<Vec<_>>()))
+        .computed("… fraction negative over draws inside the frames' rounding box", Value::reals(&negs))
+        .computed("… fraction exactly zero", Value::reals(&zeros))
+        .power(Power::none("not reproducible: the d the program used for these two assignments is not printed; c² between the projections and c² at the longest projection (negative by rounding) both give the message, c² above it cannot"))
+        .method("Δ_b's sign over ℚ in each range of c², and in floating point at its double root over seeded draws of the frames within ±half a unit (standing in for the author's unrounded data)")
+        .detail("draws", Value::count(draws))
+        .detail("seed", Value::exact(case.seed))
+        .verdict(Verdict::NotReproducible);
+    vec![which, cause]
 }
 
 #[cfg(test)]
@@ -527,5 +478,13 @@ mod tests {
         let cand = [(-2.46802, 1e-6), (-1.23456, 1e-6)];
         assert_eq!(match_ratio(-2.46802, 5e-6, &cand), Some(0));
         assert_eq!(match_ratio(-2.4685, 5e-6, &cand), None);
+    }
+
+    #[test]
+    fn deltab_judge_both_sides() {
+        assert_eq!(judge_deltab(2, 4, 2), Verdict::Reproduced);
+        assert_eq!(judge_deltab(2, 3, 2), Verdict::Contradicted);
+        assert_eq!(judge_deltab(2, 4, 1), Verdict::Contradicted);
+        assert_eq!(judge_deltab(0, 0, 0), Verdict::Contradicted);
     }
 }

@@ -217,6 +217,23 @@ pub struct DeltaAtBound {
     pub float_at_bound: f64,
     /// The first-order bound of f_cb / f_{b²} over the frames' rounding box.
     pub ratio_bound: f64,
+    /// κ = f_cb² − 4 f_{b²} f_{c²}, the leading coefficient of Δ_b in c² (exact, as a float).
+    pub kappa: f64,
+    /// Δ_b vanishes exactly at both frames' squared projections of RP: with κ it is then
+    /// κ (c² − c₁²)(c² − c₂²).
+    pub zero_at_both: bool,
+    /// The sign of Δ_b midway between the two squared projections (exact).
+    pub sign_between: i8,
+}
+
+fn sign_of(x: &BigRational) -> i8 {
+    if num_traits::Zero::is_zero(x) {
+        0
+    } else if num_traits::Signed::is_positive(x) {
+        1
+    } else {
+        -1
+    }
 }
 
 fn float_ratio(x: &[f64]) -> Option<Vec<f64>> {
@@ -253,6 +270,8 @@ pub fn delta_at_bound(ex: &Example, frame1: &[usize; 4]) -> Vec<DeltaAtBound> {
                 (&s2[2], &s1[2])
             };
             let at_smaller = d.eval(smaller);
+            let mid = (bound + smaller) / BigRational::from_integer(2.into());
+            let kappa = num_traits::ToPrimitive::to_f64(&d.coefficients[2]).unwrap_or(f64::NAN);
             let g2 = ex.frame2_recentred(&asg);
             let x = flat(&g1, &g2, 0.0);
             let half = vec![ex.coord_half; 16];
@@ -265,13 +284,11 @@ pub fn delta_at_bound(ex: &Example, frame1: &[usize; 4]) -> Vec<DeltaAtBound> {
                 zero_at_bound: num_traits::Zero::is_zero(&d.eval(bound)),
                 sign_above: d.sign_above(bound),
                 never_real: d.negative_beyond(bound),
-                sign_at_smaller: if num_traits::Zero::is_zero(&at_smaller) {
-                    0
-                } else if num_traits::Signed::is_positive(&at_smaller) {
-                    1
-                } else {
-                    -1
-                },
+                sign_at_smaller: sign_of(&at_smaller),
+                kappa,
+                zero_at_both: num_traits::Zero::is_zero(&d.eval(bound))
+                    && num_traits::Zero::is_zero(&at_smaller),
+                sign_between: sign_of(&d.eval(&mid)),
                 ratio: d
                     .f_cb_over_f_b2
                     .as_ref()
@@ -282,3 +299,40 @@ pub fn delta_at_bound(ex: &Example, frame1: &[usize; 4]) -> Vec<DeltaAtBound> {
         })
         .collect()
 }
+
+/// The floating-point sign of Δ_b at the bound c² = the longest squared projection of RP,
+/// over `trials` seeded draws of the frames inside their rounding box (each coordinate
+/// uniform within ±`coord_half`): (negative, zero) counts. Δ_b is exactly zero there, so
+/// the sign a program sees is the sign of its rounding.
+pub fn float_sign_at_bound(
+    ex: &Example,
+    frame1: &[usize; 4],
+    asg: &[usize; 4],
+    trials: usize,
+    seed: u64,
+) -> (usize, usize) {
+    use rand::Rng;
+    let mut g = crate::model::rng(seed);
+    let (g1, g2) = (ex.paper_order(&ex.frame1, frame1), ex.frame2_recentred(asg));
+    let (mut neg, mut zero) = (0, 0);
+    for _ in 0..trials {
+        let mut jitter = |f: &[Vector2<f64>; 4]| {
+            f.map(|p| {
+                let h = ex.coord_half;
+                p + Vector2::new(g.random_range(-h..=h), g.random_range(-h..=h))
+            })
+        };
+        let (a, b) = (jitter(&g1), jitter(&g2));
+        let lo = (a[2] - a[0])
+            .norm_squared()
+            .max((b[2] - b[0]).norm_squared());
+        let v = crate::derivations::identity::float_delta_b(&a, &b, lo);
+        neg += usize::from(v < 0.0);
+        zero += usize::from(v == 0.0);
+    }
+    (neg, zero)
+}
+
+pub mod choice_d;
+pub mod convention;
+pub mod program;
