@@ -162,7 +162,10 @@ pub struct JointFit {
 
 /// Parameters: 6 edge offsets (in half-widths of their intervals), then per camera a
 /// rotation vector and a 2-D translation.
-fn unpack(inp: &JointInput, p: &[f64]) -> Option<(Vec<f64>, Vec<Vec<[f64; 2]>>, Vec<[f64; 3]>)> {
+/// A configuration unpacked: squared edges, the three frames' image points, the views.
+type Unpacked = (Vec<f64>, Vec<Vec<[f64; 2]>>, Vec<[f64; 3]>);
+
+fn unpack(inp: &JointInput, p: &[f64]) -> Option<Unpacked> {
     let squares: Vec<f64> = inp
         .edges
         .iter()
