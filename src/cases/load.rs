@@ -12,6 +12,10 @@ pub fn load_case(path: &Path) -> Result<Case> {
         source,
     })?;
     let mut case = parse_case(&text, path)?;
+    if let super::CaseCheck::SourceErrata(c) = &mut case.check {
+        // the quotes are verified against the source as it is read
+        super::errata::attach_source(c, &text, path)?;
+    }
     case.file = Some(path.to_path_buf());
     Ok(case)
 }

@@ -8,6 +8,7 @@ pub mod census;
 pub mod ex2;
 pub mod ex4;
 pub mod family_samples;
+pub mod figure_labels;
 pub mod identity_census;
 pub mod noise;
 pub mod noise_request;
