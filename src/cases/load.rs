@@ -9,6 +9,10 @@ use crate::error::{Error, InputLocation, Result};
 pub fn load_case(path: &Path) -> Result<Case> {
     let text = read_case_text(path)?;
     let mut case = parse_case(&text, path)?;
+    if let super::CaseCheck::SourceErrata(c) = &mut case.check {
+        // the quotes are verified against the source as it is read
+        super::errata::attach_source(c, &text, path)?;
+    }
     case.file = Some(path.to_path_buf());
     Ok(case)
 }

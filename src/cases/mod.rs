@@ -4,6 +4,7 @@
 //! both its exact value and its precision.
 
 mod audit;
+mod errata;
 mod examples;
 mod formula_size;
 mod identity;
@@ -17,6 +18,10 @@ mod source;
 mod validate;
 
 pub use audit::*;
+pub use errata::{
+    parse_lines, quote_at, quote_within, Balance, Configuration, Decision, Finding, FindingKind,
+    LabelPicture, NamedPoint, Place as SourcePlace, PrintedLabel, SourceErrataCase, SourceText,
+};
 pub use examples::*;
 pub use identity::*;
 pub(crate) use load::line_of;
@@ -83,6 +88,8 @@ pub enum CaseCheck {
     Restatements(RestatementsCase),
     /// A noise study (§2, §3).
     NoiseStudy(NoiseStudyCase),
+    /// Errata of the text, each quoted at its lines of the LaTeX source.
+    SourceErrata(SourceErrataCase),
 }
 
 impl Case {
@@ -102,7 +109,9 @@ impl Case {
             CaseCheck::IdentityCensus(c) => vec![c.seed],
             CaseCheck::IdentityExample(c) => vec![c.seed],
             CaseCheck::NoiseStudy(c) => vec![c.seed],
-            CaseCheck::NotReproducible(_) | CaseCheck::Restatements(_) => Vec::new(),
+            CaseCheck::NotReproducible(_)
+            | CaseCheck::Restatements(_)
+            | CaseCheck::SourceErrata(_) => Vec::new(),
         }
     }
 }

@@ -102,6 +102,7 @@ pub(super) fn validate(case: &Case, text: &str, path: &Path) -> Result<()> {
         CaseCheck::FormulaAudit(c) => formula_audit(c, v),
         CaseCheck::NotReproducible(c) => not_reproducible(c, v),
         CaseCheck::P3f3Example(c) => p3f3_example(c, v),
+        CaseCheck::SourceErrata(c) => source_errata(c, v),
     }
 }
 
@@ -477,6 +478,89 @@ fn not_reproducible(c: &NotReproducibleCase, v: &Validator) -> Result<()> {
             &format!("check.not_reproducible.claims[{i}].missing"),
             "say what is missing".into(),
         );
+    }
+    Ok(())
+}
+
+/// Result ids unique, line ranges that parse, a correction and a reading for each finding.
+fn source_errata(c: &SourceErrataCase, v: &Validator) -> Result<()> {
+    let base = "check.source_errata.findings";
+    let mut seen = std::collections::BTreeSet::new();
+    for (i, f) in c.findings.iter().enumerate() {
+        if !seen.insert((f.claim.claim.as_str(), f.id.as_str())) {
+            return v.err(
+                &format!("{base}[{i}].id"),
+                format!("{}/{} appears twice", f.claim.claim, f.id),
+            );
+        }
+        let ranges = std::iter::once(&f.claim.lines).chain(f.also.iter().map(|p| &p.lines));
+        if let Some(bad) = ranges.clone().find(|l| parse_lines(l).is_none()) {
+            return v.err(
+                &format!("{base}[{i}].claim.lines"),
+                format!("`{bad}` is not a line range a-b"),
+            );
+        }
+        if f.corrected.trim().is_empty() || f.defect.trim().is_empty() {
+            return v.err(
+                &format!("{base}[{i}].corrected"),
+                "say the defect and the correction".into(),
+            );
+        }
+        match &f.decide {
+            Some(Decision::DofCount {
+                printed, corrected, ..
+            }) if corrected.is_empty() || printed == corrected => {
+                return v.err(
+                    &format!("{base}[{i}].decide"),
+                    "the corrected reading must name configurations, other than the printed".into(),
+                );
+            }
+            Some(Decision::FigureLabels {
+                origin,
+                points,
+                pictures,
+                ..
+            }) => {
+                figure_labels(origin, points, pictures, v, &format!("{base}[{i}].decide"))?;
+            }
+            _ => {}
+        }
+    }
+    Ok(())
+}
+
+/// Coordinates of the right lengths; every label (as printed and as renamed) names a point.
+fn figure_labels(
+    origin: &str,
+    points: &[NamedPoint],
+    pictures: &[LabelPicture],
+    v: &Validator,
+    field: &str,
+) -> Result<()> {
+    let known = |n: &str| points.iter().any(|p| p.name == n);
+    if !known(origin) || points.iter().any(|p| p.at.len() != 3) {
+        return v.err(
+            field,
+            "the points need three coordinates each, the origin among them".into(),
+        );
+    }
+    for (j, p) in pictures.iter().enumerate() {
+        let shapes = p.corner.len() == 2
+            && p.ends.len() == 3
+            && p.ends.iter().all(|e| e.len() == 2)
+            && p.labels.iter().all(|l| l.at.len() == 2);
+        let named = p.labels.iter().all(|l| known(&l.name))
+            && p.rename.values().all(|n| known(n))
+            && p.rename
+                .keys()
+                .all(|k| p.labels.iter().any(|l| &l.name == k))
+            && p.labels.iter().any(|l| l.name == origin);
+        if !shapes || !named {
+            return v.err(
+                &format!("{field}.figure_labels.pictures[{j}]"),
+                "a picture needs a corner, three edge ends, labels of known points (the origin's among them)".into(),
+            );
+        }
     }
     Ok(())
 }

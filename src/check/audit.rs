@@ -316,7 +316,8 @@ fn item(r: &ClaimResult, s: Shown) -> AuditItem {
     }
 }
 
-/// Every audit item of the given cases: the formula audit's items and eq. p3f3sqr.
+/// Every audit item of the given cases: the formula audit's items, eq. p3f3sqr and the errata
+/// of the text.
 pub fn audit_all(cases: &[Case]) -> Result<Vec<AuditItem>> {
     let mut out = Vec::new();
     for case in cases {
@@ -342,6 +343,22 @@ pub fn audit_all(cases: &[Case]) -> Result<Vec<AuditItem>> {
                     ),
                 };
                 out.push(item(&r, shown));
+            }
+            CaseCheck::SourceErrata(c) => {
+                let results = super::errata::check(&b, c)?;
+                out.extend(c.findings.iter().zip(&results).map(|(f, r)| {
+                    let shown = Shown {
+                        place: Place {
+                            section: r.section.clone(),
+                            label: None,
+                            macros: Vec::new(),
+                        },
+                        printed: f.claim.quote.clone(),
+                        defect: Some(f.defect.clone()),
+                        should_be: f.corrected.clone(),
+                    };
+                    item(r, shown)
+                }));
             }
             _ => {}
         }

@@ -3,6 +3,7 @@
 
 mod audit;
 mod dof;
+mod errata;
 pub mod figure;
 mod identity;
 mod identity_example;
@@ -198,6 +199,7 @@ fn dispatch(b: &ResultBuilder, case: &Case) -> Result<Vec<ClaimResult>> {
         CaseCheck::TwoFrames(c) => two_frames::check(b, c),
         CaseCheck::IdentityCensus(c) => identity::check(b, c),
         CaseCheck::IdentityExample(c) => identity_example::check(b, c),
+        CaseCheck::SourceErrata(c) => errata::check(b, c),
         CaseCheck::Restatements(_) => Err(crate::error::Error::InvalidInput(format!(
             "case {}: restatements are decided from the other cases' results (run_all)",
             case.id

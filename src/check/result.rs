@@ -22,6 +22,9 @@ pub enum Verdict {
     StatisticalFails,
     /// The printed formula or number is wrong; the corrected form is stated and verified.
     Erratum,
+    /// A defect of the text that changes no meaning (its intended reading is unique); the
+    /// reading is stated and the quote verified at its lines.
+    Note,
     /// The check cannot discriminate: it would accept values the paper would call wrong.
     Inconclusive,
     /// The paper lacks the data; the evidence lists what is missing and what was tried.
@@ -32,7 +35,7 @@ pub enum Verdict {
 
 impl Verdict {
     /// All verdicts, in report order.
-    pub const ALL: [Verdict; 10] = [
+    pub const ALL: [Verdict; 11] = [
         Verdict::Reproduced,
         Verdict::ReproducedWithinRounding,
         Verdict::IdentityVerified,
@@ -40,6 +43,7 @@ impl Verdict {
         Verdict::StatisticalHolds,
         Verdict::StatisticalFails,
         Verdict::Erratum,
+        Verdict::Note,
         Verdict::Inconclusive,
         Verdict::NotReproducible,
         Verdict::Contradicted,
@@ -85,6 +89,7 @@ impl Verdict {
             Verdict::StatisticalHolds => "statistical-holds",
             Verdict::StatisticalFails => "statistical-fails",
             Verdict::Erratum => "erratum",
+            Verdict::Note => "note",
             Verdict::Inconclusive => "inconclusive",
             Verdict::NotReproducible => "not-reproducible",
             Verdict::Contradicted => "contradicted",

@@ -67,7 +67,7 @@ blockquote { margin: .3rem 0; padding-left: .8rem; border-left: 3px solid #bbb; 
 .badge { display: inline-block; padding: .05rem .5rem; border-radius: 1rem; font-size: .8rem; font-family: system-ui, sans-serif; color: #fff; vertical-align: middle; }
 .v-reproduced { background: #2e7d32; } .v-reproduced-within-rounding { background: #33691e; } .v-identity-verified { background: #1565c0; }
 .v-holds-generically { background: #00695c; } .v-statistical-holds { background: #4a148c; } .v-statistical-fails { background: #ad1457; }
-.v-erratum { background: #a84300; } .v-inconclusive { background: #5d4037; } .v-not-reproducible { background: #616161; } .v-contradicted { background: #c62828; }
+.v-erratum { background: #a84300; } .v-note { background: #455a64; } .v-inconclusive { background: #5d4037; } .v-not-reproducible { background: #616161; } .v-contradicted { background: #c62828; }
 dl { display: grid; grid-template-columns: 9rem 1fr; gap: .15rem .8rem; margin: .3rem 0; } dt { color: #666; } dd { margin: 0; }
 details { margin-top: .4rem; } summary { cursor: pointer; color: #1565c0; }
 figure { margin: .8rem 0; } figcaption { color: #555; font-size: .88rem; margin-top: .2rem; }

@@ -11,6 +11,7 @@ pub mod ex2_restricted;
 pub mod ex4;
 pub mod ex4_joint;
 pub mod family_samples;
+pub mod figure_labels;
 pub mod identity_census;
 pub mod noise;
 pub mod noise_request;

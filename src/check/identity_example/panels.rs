@@ -6,6 +6,7 @@ use super::{
 };
 use crate::cases::{IdentityExampleCase, Printed};
 use crate::check::figure::{clip_line, Figure, Layer, Plot, Shape, Style};
+use crate::check::ClaimBuilder;
 use crate::studies::author_program::{Example, Num};
 use crate::studies::panels::{fit_panel, BlockLine, PanelFit};
 
@@ -39,12 +40,27 @@ fn fits(case: &IdentityExampleCase, ex: &Example, blocks: &[Block]) -> Vec<Optio
 }
 
 /// Segments on their lines: reproduced within rounding when every endpoint is within its
-/// rounding bound of the line of a block with the panel's assignment.
-pub(super) fn judge_on_line(on: usize, endpoints: usize, unfit: usize) -> Verdict {
-    if on == endpoints && unfit == 0 {
-        Verdict::ReproducedWithinRounding
-    } else {
+/// rounding bound of the line of a block with the panel's assignment. An endpoint off its
+/// line is a drawing detail, not a contradiction of what the panels illustrate: a `note` when
+/// every such endpoint is nearer the line than `distant`, the smallest distance the figure
+/// itself shows as "distant from the line" (a wrong panel's tested point), so that at the
+/// figure's own scale the panel shows the same; an `erratum` of the drawing otherwise. A panel
+/// that is no assignment at all contradicts the claim that the panels are the attempts.
+pub(super) fn judge_on_line(
+    on: usize,
+    endpoints: usize,
+    unfit: usize,
+    worst_off: f64,
+    distant: f64,
+) -> Verdict {
+    if unfit > 0 {
         Verdict::Contradicted
+    } else if on == endpoints {
+        Verdict::ReproducedWithinRounding
+    } else if worst_off < distant {
+        Verdict::Note
+    } else {
+        Verdict::Erratum
     }
 }
 
@@ -94,6 +110,15 @@ pub(super) fn results(
         })
     });
     let off: Vec<f64> = fitted.iter().flat_map(|p| p.endpoint_distance).collect();
+    let split = |c: bool| -> Vec<(f64, f64)> {
+        fitted
+            .iter()
+            .filter(|p| (p.assignment == *truth) == c)
+            .map(|p| (p.tested_distance, p.tested_bound))
+            .collect()
+    };
+    let (good, bad) = (split(true), split(false));
+    let distant = bad.iter().map(|x| x.0).fold(f64::INFINITY, f64::min);
     let first = b
         .claim(&case.panels.claim)
         .printed("panels", Value::count(case.panels.items.len()))
@@ -103,16 +128,22 @@ pub(super) fn results(
         .tolerance(Tolerance::bound(0.0, ToleranceSource::Propagated, "per endpoint: |1 − t|·√2·h(Pa) + |t|·√2·h(Pb) + √2·h(endpoint), h the half units (Pa, Pb to six significant digits, the panel to six decimals)"))
         .power(Power::mutant(seg_rejected, "every endpoint moved across its line by the mutant's half units is off it"))
         .method("each panel's four points matched to an assignment of frame 2 (re-centred at its R); its segment against the lines through the printed Pa, Pb of the blocks with that assignment")
-        .detail("endpoint distances from the line", Value::reals(&off))
-        .verdict(judge_on_line(on, 2 * fitted.len(), unfit));
-    let split = |c: bool| -> Vec<(f64, f64)> {
-        fitted
-            .iter()
-            .filter(|p| (p.assignment == *truth) == c)
-            .map(|p| (p.tested_distance, p.tested_bound))
-            .collect()
+        .detail("endpoint distances from the line", Value::reals(&off));
+    let (first, worst_off) = off_endpoints(first, case, &f);
+    let first = if on < 2 * fitted.len() {
+        first
+            .computed("smallest distance the figure shows as distant (a wrong panel's tested point)", Value::real(distant))
+            .correction("draw those segments along the recomputed line T₂ₐT₂_b, as the other panels are drawn; what the panels show is unchanged")
+    } else {
+        first
     };
-    let (good, bad) = (split(true), split(false));
+    let first = first.verdict(judge_on_line(
+        on,
+        2 * fitted.len(),
+        unfit,
+        worst_off,
+        distant,
+    ));
     let moved_rejected = good.iter().all(|(d, bd)| d + k * half > *bd);
     let second = b
         .claim(&case.panels.claim)
@@ -125,6 +156,32 @@ pub(super) fn results(
         .method("distance of each panel's tested point (#1) from the line of its printed block")
         .verdict(judge_distance(&good, &bad));
     vec![first, second]
+}
+
+/// Each endpoint off its line, named by its panel's line, and the largest such distance.
+fn off_endpoints<'b>(
+    mut r: ClaimBuilder<'b>,
+    case: &IdentityExampleCase,
+    fits: &[Option<PanelFit>],
+) -> (ClaimBuilder<'b>, f64) {
+    let mut worst: f64 = 0.0;
+    for (item, fit) in case.panels.items.iter().zip(fits) {
+        let Some(p) = fit else { continue };
+        for e in 0..2 {
+            if p.endpoint_distance[e] > p.endpoint_bound[e] {
+                worst = worst.max(p.endpoint_distance[e]);
+                r = r.computed(
+                    &format!(
+                        "panel at line {}, endpoint {}: distance off the line",
+                        item.line,
+                        e + 1
+                    ),
+                    Value::real(p.endpoint_distance[e]),
+                );
+            }
+        }
+    }
+    (r, worst)
 }
 
 fn figure(
@@ -225,8 +282,14 @@ mod tests {
 
     #[test]
     fn panel_judges_both_sides() {
-        assert_eq!(judge_on_line(48, 48, 0), Verdict::ReproducedWithinRounding);
-        assert_eq!(judge_on_line(46, 48, 0), Verdict::Contradicted);
+        assert_eq!(
+            judge_on_line(48, 48, 0, 0.0, 0.25),
+            Verdict::ReproducedWithinRounding
+        );
+        // endpoints off the line: nearer than what the figure calls distant, or not
+        assert_eq!(judge_on_line(46, 48, 0, 0.03, 0.25), Verdict::Note);
+        assert_eq!(judge_on_line(46, 48, 0, 0.3, 0.25), Verdict::Erratum);
+        assert_eq!(judge_on_line(48, 48, 1, 0.0, 0.25), Verdict::Contradicted);
         assert_eq!(
             judge_distance(&[(1e-6, 5e-6)], &[(0.25, 5e-6)]),
             Verdict::Reproduced
