@@ -20,7 +20,9 @@ use crate::derivations::twofold::{frame_equation, relation_squared};
 use crate::error::{Error, Result};
 
 mod expanded;
+mod export;
 pub use expanded::{expanded, ExpandedFinding, Screened};
+pub use export::{sympy_scripts, Script};
 
 /// Which form of a formula was accepted.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

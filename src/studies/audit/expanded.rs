@@ -61,10 +61,10 @@ pub struct ExpandedFinding {
 
 /// The names a macro-level formula may leave free, each with its own derivation expanded:
 /// the paper's macros from the frame equations, the others from [`derived`].
-struct Expansions(BTreeMap<String, RatFn>);
+pub(super) struct Expansions(BTreeMap<String, RatFn>);
 
 impl Expansions {
-    fn new(case: &FormulaAuditCase) -> Expansions {
+    pub(super) fn new(case: &FormulaAuditCase) -> Expansions {
         let mut names: Vec<String> = case.definitions.iter().map(|d| d.name.clone()).collect();
         for f in &case.formulas {
             names.extend(f.symbols.iter().cloned());
@@ -102,7 +102,7 @@ impl Expansions {
         out
     }
 
-    fn expand(&self, f: &RatFn) -> RatFn {
+    pub(super) fn expand(&self, f: &RatFn) -> RatFn {
         f.substitute_all(&self.0)
     }
 }
