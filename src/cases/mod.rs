@@ -27,7 +27,7 @@ pub use identity::*;
 pub(crate) use load::line_of;
 pub use load::{case_files, load_all, load_case, parse_case, parse_yaml, parse_yaml_limited};
 pub use noise::*;
-pub use paper::{load_paper, parse_paper, Paper, PAPER_FILE};
+pub use paper::{load_paper, parse_paper, Paper, SectionTitle, PAPER_FILE};
 pub use printed::Printed;
 pub use restate::*;
 pub use source::{ClaimRef, Source};

@@ -21,6 +21,36 @@ pub struct Paper {
     pub title: String,
     /// Author.
     pub author: String,
+    /// The paper's sections in reading order, with their titles (the report's table of
+    /// contents).
+    #[serde(default)]
+    pub sections: Vec<SectionTitle>,
+    /// The paper's own `\newcommand` definitions, verbatim (the report expands them to show
+    /// printed formulas readably).
+    #[serde(default, skip_serializing_if = "String::is_empty")]
+    pub macros: String,
+}
+
+/// One section of the paper as its `\section` command titles it.
+#[derive(Clone, Debug, Deserialize, Serialize, PartialEq, Eq)]
+#[serde(deny_unknown_fields)]
+pub struct SectionTitle {
+    /// The number as the cases write it ("2.1", "A").
+    pub number: String,
+    /// The title as printed.
+    pub title: String,
+    /// The line of the sectioning command in the LaTeX source.
+    pub line: u32,
+}
+
+impl Paper {
+    /// The title of section `number`, when the paper file names it.
+    pub fn section_title(&self, number: &str) -> Option<&str> {
+        self.sections
+            .iter()
+            .find(|s| s.number == number)
+            .map(|s| s.title.as_str())
+    }
 }
 
 /// Read [`PAPER_FILE`] of the cases folder `dir`.

@@ -1,13 +1,19 @@
-//! The report as one self-contained HTML page (inline CSS and SVG, nothing fetched), drawn
-//! from the same claim results and figure data as `report.json`.
+//! The report as one self-contained HTML page (inline CSS, SVG and one small script; nothing
+//! fetched), drawn from the same claim results and figure data as `report.json`: a verdict
+//! strip, the contents in the paper's order, the claims at a glance, a filter by verdict that
+//! works without JavaScript (`:target`), then every claim with its evidence and figures.
 
-use std::collections::BTreeMap;
+use std::collections::BTreeSet;
 use std::fmt::Write as _;
 
-use super::values::{computed_text, power_text, printed_text, tolerance_text, value_text};
+use super::layout::{self, section_anchor, verdict_anchor, Section, GROUPS};
+use super::math::{math_html, Macros};
+use super::values::{power_phrase, quantities_shown, tolerance_text, trials_of};
 use super::Report;
 use crate::check::figure::Figure;
-use crate::check::{ClaimResult, Verdict};
+use crate::check::{ClaimResult, Quantity, Value, Verdict};
+
+pub use super::layout::anchor;
 
 /// HTML-escape text.
 pub fn escape(s: &str) -> String {
@@ -25,172 +31,164 @@ pub fn escape(s: &str) -> String {
     out
 }
 
-/// An anchor id from a result id (`appA-coefficients/f_cb` → `claim-appA-coefficients-f_cb`).
-pub fn anchor(id: &str) -> String {
-    let clean: String = id
-        .chars()
-        .map(|c| {
-            if c.is_ascii_alphanumeric() || c == '-' || c == '_' || c == '.' {
-                c
-            } else {
-                '-'
+/// What every part of the page needs: the claims in order, the ids a text may link, the
+/// paper's macros.
+pub(crate) struct Page<'a> {
+    pub(crate) report: &'a Report,
+    pub(crate) ordered: Vec<&'a ClaimResult>,
+    ids: BTreeSet<String>,
+    pub(crate) macros: Macros,
+}
+
+impl<'a> Page<'a> {
+    fn new(report: &'a Report) -> Page<'a> {
+        Page {
+            report,
+            ordered: layout::ordered(report),
+            ids: layout::linkable_ids(report),
+            macros: Macros::parse(report.paper.as_ref().map_or("", |p| p.macros.as_str())),
+        }
+    }
+
+    /// Escaped text with every claim id it mentions turned into a link.
+    pub(crate) fn linked(&self, text: &str) -> String {
+        let mut s = String::new();
+        for (part, is_id) in layout::split_ids(text, &self.ids) {
+            match layout::target_of(&self.ordered, part) {
+                Some(c) if is_id => {
+                    let _ = write!(
+                        s,
+                        "<a href=\"#{}\"><code>{}</code></a>",
+                        anchor(&c.id),
+                        escape(part)
+                    );
+                }
+                _ => s.push_str(&plain_label(part)),
             }
-        })
-        .collect();
-    format!("claim-{clean}")
-}
+        }
+        s
+    }
 
-fn section_anchor(s: &str) -> String {
-    format!("section-{}", s.replace('.', "-"))
-}
+    /// A value as HTML: formulas as mathematics, labels with their ids linked.
+    pub(crate) fn value(&self, name: &str, v: &Value, trials: Option<u64>) -> String {
+        match v {
+            Value::Formula { text } => format!(
+                "<span class=\"math\">{}</span>",
+                math_html(text, &self.macros, true)
+            ),
+            Value::Label { text } => self.linked(text),
+            v => escape(&super::values::shown_text(name, v, trials)),
+        }
+    }
 
-/// Paper sections in reading order: numbers numerically, then the appendix.
-fn section_key(s: &str) -> (u32, Vec<u32>) {
-    if s.chars().next().is_some_and(|c| c.is_ascii_digit()) {
-        (
-            0,
-            s.split(['.', '-']).filter_map(|p| p.parse().ok()).collect(),
-        )
-    } else {
-        (1, Vec::new())
+    /// Named values on one line.
+    pub(crate) fn quantities(&self, qs: &[Quantity], trials: Option<u64>) -> String {
+        if qs
+            .iter()
+            .all(|q| !matches!(q.value, Value::Formula { .. } | Value::Label { .. }))
+        {
+            return escape(&quantities_shown(qs, trials));
+        }
+        match qs {
+            [q] if q.name == "paper" || q.name == "computed" => {
+                self.value(&q.name, &q.value, trials)
+            }
+            _ => qs
+                .iter()
+                .map(|q| {
+                    format!(
+                        "{}: {}",
+                        escape(&q.name),
+                        self.value(&q.name, &q.value, trials)
+                    )
+                })
+                .collect::<Vec<_>>()
+                .join("; "),
+        }
     }
 }
 
-const CSS: &str = "
-body { font-family: system-ui, sans-serif; margin: 0 auto; max-width: 72rem; padding: 1rem 2rem; color: #222; line-height: 1.45; }
-h1 { font-size: 1.6rem; margin-bottom: .2rem; } h2 { border-bottom: 1px solid #ccc; margin-top: 2.2rem; }
-.meta { color: #555; font-size: .9rem; } .meta code, code { background: #f3f3f3; padding: 0 .25rem; border-radius: 3px; }
-table { border-collapse: collapse; margin: .6rem 0; } td, th { border: 1px solid #ddd; padding: .25rem .55rem; text-align: left; vertical-align: top; }
-article { border: 1px solid #e2e2e2; border-radius: 6px; padding: .6rem 1rem; margin: .9rem 0; }
-article h3 { font-size: 1.02rem; margin: .2rem 0 .4rem; font-family: ui-monospace, monospace; }
-blockquote { margin: .3rem 0; padding-left: .8rem; border-left: 3px solid #bbb; color: #444; font-style: italic; }
-.badge { display: inline-block; padding: .05rem .5rem; border-radius: 1rem; font-size: .8rem; font-family: system-ui, sans-serif; color: #fff; vertical-align: middle; }
-.v-reproduced { background: #2e7d32; } .v-reproduced-within-rounding { background: #33691e; } .v-identity-verified { background: #1565c0; }
-.v-holds-generically { background: #00695c; } .v-statistical-holds { background: #4a148c; } .v-statistical-fails { background: #ad1457; }
-.v-erratum { background: #a84300; } .v-note { background: #455a64; } .v-inconclusive { background: #5d4037; } .v-not-reproducible { background: #616161; } .v-contradicted { background: #c62828; }
-dl { display: grid; grid-template-columns: 9rem 1fr; gap: .15rem .8rem; margin: .3rem 0; } dt { color: #666; } dd { margin: 0; }
-details { margin-top: .4rem; } summary { cursor: pointer; color: #1565c0; }
-figure { margin: .8rem 0; } figcaption { color: #555; font-size: .88rem; margin-top: .2rem; }
-.panels { display: flex; flex-wrap: wrap; gap: .5rem; } .panels svg { border: 1px solid #eee; }
-";
+/// Escaped text in which a backslash command names a macro (`\faca` → `faca` in code), so
+/// that no raw LaTeX reaches the reader.
+fn plain_label(text: &str) -> String {
+    let mut s = String::new();
+    let mut rest = text;
+    while let Some(at) = rest.find('\\') {
+        s.push_str(&escape(&rest[..at]));
+        let after = &rest[at + 1..];
+        let n = after
+            .find(|c: char| !c.is_ascii_alphabetic())
+            .unwrap_or(after.len());
+        if n == 0 {
+            s.push('\\');
+        } else {
+            let _ = write!(s, "<code>{}</code>", &after[..n]);
+        }
+        rest = &after[n..];
+    }
+    s.push_str(&escape(rest));
+    s
+}
 
-fn badge(v: Verdict) -> String {
+/// A verdict badge.
+pub fn badge(v: Verdict) -> String {
     format!("<span class=\"badge v-{0}\">{0}</span>", v.name())
-}
-
-fn figure_html(f: &Figure) -> String {
-    let mut s = format!("<figure id=\"{}\"><div class=\"panels\">", escape(&f.id));
-    s.push_str(&super::svg::figure_svg(f, false));
-    // the key: every layer name once, in its colour
-    let mut key: Vec<(String, crate::check::figure::Style)> = Vec::new();
-    for l in f.panels.iter().flat_map(|p| &p.layers) {
-        if !l.name.is_empty() && !key.iter().any(|(n, _)| n == &l.name) {
-            key.push((l.name.clone(), l.style));
-        }
-    }
-    let key: Vec<String> = key
-        .iter()
-        .map(|(n, st)| {
-            format!(
-                "<span style=\"color: {}\">■ {}</span>",
-                super::svg::css_colour(*st),
-                escape(n)
-            )
-        })
-        .collect();
-    let _ = write!(
-        s,
-        "</div><figcaption><strong>{}</strong> — {}<br>{}</figcaption></figure>",
-        escape(&f.title),
-        escape(&f.caption),
-        key.join(" · ")
-    );
-    s
-}
-
-fn claim_html(c: &ClaimResult, figures: &[&Figure]) -> String {
-    let mut s = format!(
-        "<article id=\"{}\"><h3>{} {}</h3>",
-        anchor(&c.id),
-        escape(&c.id),
-        badge(c.verdict)
-    );
-    let _ = write!(
-        s,
-        "<blockquote>{} <span class=\"meta\">(lines {})</span></blockquote>",
-        escape(&c.quote),
-        escape(&c.lines)
-    );
-    s.push_str("<dl>");
-    let _ = write!(s, "<dt>paper</dt><dd>{}</dd>", escape(&printed_text(c)));
-    let _ = write!(s, "<dt>computed</dt><dd>{}</dd>", escape(&computed_text(c)));
-    if let Some(t) = &c.tolerance {
-        let _ = write!(
-            s,
-            "<dt>tolerance</dt><dd>{}</dd>",
-            escape(&tolerance_text(t))
-        );
-    }
-    let _ = write!(
-        s,
-        "<dt>power</dt><dd>{}</dd>",
-        escape(&power_text(&c.power))
-    );
-    if let Some(corr) = &c.correction {
-        let _ = write!(s, "<dt>corrected</dt><dd>{}</dd>", escape(corr));
-    }
-    s.push_str("</dl>");
-    let _ = write!(
-        s,
-        "<details><summary>evidence</summary><p><strong>method:</strong> {}</p>",
-        escape(&c.evidence.method)
-    );
-    if !c.evidence.details.is_empty() {
-        s.push_str("<table>");
-        for d in &c.evidence.details {
-            let _ = write!(
-                s,
-                "<tr><th>{}</th><td>{}</td></tr>",
-                escape(&d.name),
-                escape(&value_text(&d.value))
-            );
-        }
-        s.push_str("</table>");
-    }
-    s.push_str("</details>");
-    for f in figures {
-        s.push_str(&figure_html(f));
-    }
-    s.push_str("</article>");
-    s
 }
 
 /// The whole page.
 pub fn render(r: &Report) -> String {
-    let mut s = String::from("<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">");
+    let page = Page::new(r);
+    let mut s = String::from(
+        "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\
+         <meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">",
+    );
     push_header(&mut s, r);
-    push_seeds(&mut s, r);
-    push_summary(&mut s, r);
-    push_errata(&mut s, r);
-    push_sections(&mut s, r);
+    push_strip(&mut s, r);
+    push_contents(&mut s, &page);
+    super::glance::push_glance(&mut s, &page);
+    push_verdict_lists(&mut s, &page);
+    s.push_str("<main id=\"claims\">");
+    let sections = layout::sections(r);
+    for (i, sec) in sections.iter().enumerate() {
+        let prefix = format!("{}.", sec.number);
+        let parent = sections
+            .get(i + 1)
+            .is_some_and(|n| n.number.starts_with(&prefix));
+        push_section(&mut s, &page, sec, parent);
+    }
     push_further_figures(&mut s, r);
+    s.push_str("</main>");
+    s.push_str(SCRIPT);
     s.push_str("</body></html>\n");
     s
 }
 
-/// The page title, the stylesheet and the header with the provenance.
+/// The optional search: an input box the script adds (the page works without it); before
+/// printing it also unfolds every evidence (the print stylesheet does so too where the
+/// browser styles `::details-content`).
+const SCRIPT: &str = "<script>(function(){var m=document.getElementById('claims');if(!m)return;\
+var i=document.createElement('input');i.id='search';i.type='search';\
+i.placeholder='search claims (id, words)';i.setAttribute('aria-label','search claims');\
+m.parentNode.insertBefore(i,m);var a=m.querySelectorAll('article.claim');\
+i.addEventListener('input',function(){var q=i.value.toLowerCase();\
+for(var k=0;k<a.length;k++){a[k].style.display=(!q||a[k].textContent.toLowerCase().indexOf(q)>=0)?'':'none';}});\
+window.addEventListener('beforeprint',function(){var d=document.querySelectorAll('details');for(var k=0;k<d.length;k++)d[k].open=true;});\
+})();</script>";
+
+/// The page title, the stylesheet and the header with the provenance and the seeds.
 fn push_header(s: &mut String, r: &Report) {
     let title = r.paper.as_ref().map_or("", |p| p.title.as_str());
     let author = r.paper.as_ref().map_or("", |p| p.author.as_str());
     let _ = write!(
         s,
-        "<title>Reproducibility report — {}</title><style>{CSS}</style></head><body>",
-        escape(title)
+        "<title>Reproducibility report — {}</title><style>{}</style></head><body>",
+        escape(title),
+        super::style::css()
     );
     let p = &r.provenance;
     let _ = write!(
         s,
-        "<h1>Reproducibility report</h1><p><em>{}</em> — {}</p><p class=\"meta\">{}; revision {}; date {}; \
+        "<header><h1>Reproducibility report</h1><p><em>{}</em> — {}</p><p class=\"meta\">{}; revision {}; date {}; \
          reproduce with <code>{}</code></p>",
         escape(title),
         escape(author),
@@ -199,12 +197,8 @@ fn push_header(s: &mut String, r: &Report) {
         escape(p.date.as_deref().unwrap_or("unknown")),
         escape(&p.command)
     );
-}
-
-/// The collapsed table of the seeds of every case.
-fn push_seeds(s: &mut String, r: &Report) {
-    s.push_str("<details><summary>seeds of every case</summary><table><tr><th>case</th><th>file</th><th>seeds</th></tr>");
-    for cs in &r.provenance.seeds {
+    s.push_str("<details><summary>seeds of every case</summary><div class=\"scroll\"><table><tr><th>case</th><th>file</th><th>seeds</th></tr>");
+    for cs in &p.seeds {
         let _ = write!(
             s,
             "<tr><td>{}</td><td><code>{}</code></td><td>{}</td></tr>",
@@ -217,73 +211,272 @@ fn push_seeds(s: &mut String, r: &Report) {
                 .join(", ")
         );
     }
-    s.push_str("</table></details>");
+    s.push_str("</table></div></details></header>");
 }
 
-/// The count of claims per verdict.
-fn push_summary(s: &mut String, r: &Report) {
-    s.push_str("<h2 id=\"summary\">Summary</h2><table><tr><th>verdict</th><th>claims</th></tr>");
+fn count(r: &Report, v: Verdict) -> usize {
+    r.summary.get(v.name()).copied().unwrap_or(0)
+}
+
+/// The verdict strip: what holds, what fails, what cannot be decided, what is inconclusive;
+/// every count links to the list of its claims.
+fn push_strip(s: &mut String, r: &Report) {
+    s.push_str("<nav aria-label=\"verdicts\"><ul class=\"strip\">");
+    for (group, verdicts) in GROUPS {
+        let total: usize = verdicts.iter().map(|v| count(r, *v)).sum();
+        let _ = write!(
+            s,
+            "<li><span class=\"group\">{group}</span><span class=\"total\">{total}</span><ul>"
+        );
+        for v in verdicts {
+            let _ = write!(
+                s,
+                "<li><a href=\"#{}\">{} {}</a></li>",
+                verdict_anchor(*v),
+                badge(*v),
+                count(r, *v)
+            );
+        }
+        s.push_str("</ul></li>");
+    }
+    s.push_str("</ul></nav>");
+}
+
+/// The table of contents: the paper's sections in order with their titles, each with its
+/// claims in line order (folded).
+fn push_contents(s: &mut String, page: &Page) {
+    s.push_str("<nav class=\"toc\" aria-labelledby=\"contents\"><h2 id=\"contents\">Contents</h2><ul class=\"sections\">");
+    s.push_str("<li><a href=\"#glance\">At a glance</a></li><li><a href=\"#by-verdict\">Claims by verdict</a></li>");
+    for sec in layout::sections(page.report) {
+        let _ = write!(
+            s,
+            "<li{}><a href=\"#{}\">{}</a> <span class=\"meta\">({} claim{})</span>",
+            if sec.depth > 1 { " class=\"sub\"" } else { "" },
+            sec.anchor(),
+            escape(&sec.heading()),
+            sec.claims.len(),
+            if sec.claims.len() == 1 { "" } else { "s" }
+        );
+        if !sec.claims.is_empty() {
+            s.push_str("<details><summary>claims</summary><ul>");
+            for c in &sec.claims {
+                let _ = write!(
+                    s,
+                    "<li><a href=\"#{}\"><code>{}</code></a> {} <span class=\"meta\">line {}</span></li>",
+                    anchor(&c.id),
+                    escape(&c.id),
+                    badge(c.verdict),
+                    escape(&c.lines)
+                );
+            }
+            s.push_str("</ul></details>");
+        }
+        s.push_str("</li>");
+    }
+    s.push_str("</ul></nav>");
+}
+
+/// The filter by verdict: one list per verdict, shown when the URL's fragment names it (which
+/// also hides every claim of another verdict below); no script needed.
+fn push_verdict_lists(s: &mut String, page: &Page) {
+    s.push_str("<section aria-labelledby=\"by-verdict\"><h2 id=\"by-verdict\">Claims by verdict</h2><p class=\"filter\">Show only: ");
     for v in Verdict::ALL {
         let _ = write!(
             s,
-            "<tr><td>{}</td><td>{}</td></tr>",
+            "<a href=\"#{}\">{} ({})</a>",
+            verdict_anchor(v),
+            escape(v.name()),
+            count(page.report, v)
+        );
+    }
+    s.push_str("<a href=\"#contents\">all</a></p>");
+    for v in Verdict::ALL {
+        let _ = write!(
+            s,
+            "<div class=\"vlist\" id=\"{}\"><h3>{} {} claim{}</h3><ul>",
+            verdict_anchor(v),
             badge(v),
-            r.summary.get(v.name()).copied().unwrap_or(0)
+            count(page.report, v),
+            if count(page.report, v) == 1 { "" } else { "s" }
         );
+        for c in page.ordered.iter().filter(|c| c.verdict == v) {
+            let _ = write!(
+                s,
+                "<li><a href=\"#{}\"><code>{}</code></a> <a href=\"#{}\">§{}</a>, line {}</li>",
+                anchor(&c.id),
+                escape(&c.id),
+                section_anchor(&c.section),
+                escape(&c.section),
+                escape(&c.lines)
+            );
+        }
+        s.push_str("</ul><p><a href=\"#contents\">show every verdict</a></p></div>");
     }
-    s.push_str("</table>");
+    s.push_str("</section>");
 }
 
-/// The list of errata, contradicted claims and exceptions the paper never names.
-fn push_errata(s: &mut String, r: &Report) {
-    s.push_str("<h3>Errata, contradicted claims and unnamed exceptions</h3><ul>");
-    for c in r.claims.iter().filter(|c| {
-        matches!(
-            c.verdict,
-            Verdict::Erratum | Verdict::Contradicted | Verdict::HoldsGenerically
-        )
-    }) {
-        let _ = write!(
-            s,
-            "<li>{} <a href=\"#{}\"><code>{}</code></a> (<a href=\"#{}\">§{}</a>): {}</li>",
-            badge(c.verdict),
-            anchor(&c.id),
-            escape(&c.id),
-            section_anchor(&c.section),
-            escape(&c.section),
-            escape(&computed_text(c))
-        );
+/// One section: its heading (the paper's title) and its claims.
+fn push_section(s: &mut String, page: &Page, sec: &Section, parent: bool) {
+    let h = sec.depth + 1;
+    let _ = write!(
+        s,
+        "<section aria-labelledby=\"{a}\"><h{h} id=\"{a}\">{}</h{h}>",
+        escape(&sec.heading()),
+        a = sec.anchor()
+    );
+    if sec.claims.is_empty() && !parent {
+        s.push_str("<p class=\"meta\">No claim of this section is checked.</p>");
     }
-    s.push_str("</ul>");
+    for c in &sec.claims {
+        let figs: Vec<&Figure> = page
+            .report
+            .figures
+            .iter()
+            .filter(|f| f.claim == c.id)
+            .collect();
+        s.push_str(&claim_html(page, c, &figs, h + 1));
+    }
+    s.push_str("</section>");
 }
 
-/// The claims grouped by paper section, in reading order, each with its figures.
-fn push_sections(s: &mut String, r: &Report) {
-    let mut sections: BTreeMap<(u32, Vec<u32>, String), Vec<&ClaimResult>> = BTreeMap::new();
-    for c in &r.claims {
-        let (a, b) = section_key(&c.section);
-        sections
-            .entry((a, b, c.section.clone()))
-            .or_default()
-            .push(c);
-    }
-    for ((_, _, name), claims) in &sections {
+/// One claim: a permalink heading, the quote, printed / computed / tolerance / power, the
+/// correction of an erratum side by side, the evidence (folded), the figures.
+fn claim_html(page: &Page, c: &ClaimResult, figures: &[&Figure], h: usize) -> String {
+    let trials = trials_of(c);
+    let a = anchor(&c.id);
+    let mut s = format!(
+        "<article id=\"{a}\" class=\"claim v-{}\"><h{h} class=\"h\"><a class=\"permalink\" href=\"#{a}\">{}</a> {}</h{h}>",
+        c.verdict.name(),
+        escape(&c.id),
+        badge(c.verdict)
+    );
+    let _ = write!(
+        s,
+        "<blockquote>{} <span class=\"meta\">(lines {}, <a href=\"#{}\">§{}</a>)</span></blockquote>",
+        plain_label(&c.quote),
+        escape(&c.lines),
+        section_anchor(&c.section),
+        escape(&c.section)
+    );
+    s.push_str("<dl>");
+    let _ = write!(
+        s,
+        "<dt>paper</dt><dd>{}</dd>",
+        page.quantities(&c.printed, trials)
+    );
+    let _ = write!(
+        s,
+        "<dt>computed</dt><dd>{}</dd>",
+        page.quantities(&c.computed, trials)
+    );
+    if let Some(t) = &c.tolerance {
         let _ = write!(
             s,
-            "<h2 id=\"{}\">Section {}</h2>",
-            section_anchor(name),
-            escape(name)
+            "<dt>tolerance</dt><dd>{}</dd>",
+            page.linked(&tolerance_text(t))
         );
-        for c in claims {
-            let figs: Vec<&Figure> = r.figures.iter().filter(|f| f.claim == c.id).collect();
-            s.push_str(&claim_html(c, &figs));
+    }
+    let _ = write!(
+        s,
+        "<dt>power</dt><dd><strong>{}</strong> — {}</dd>",
+        escape(&power_phrase(&c.power)),
+        page.linked(&c.power.detail)
+    );
+    s.push_str("</dl>");
+    if c.correction.is_some() {
+        s.push_str(&super::glance::fix_html(page, c));
+    }
+    s.push_str(&evidence_html(page, c, trials));
+    for f in figures {
+        s.push_str(&figure_html(f));
+    }
+    s.push_str("</article>");
+    s
+}
+
+/// The folded evidence: the method, the single details, the per-model tables.
+fn evidence_html(page: &Page, c: &ClaimResult, trials: Option<u64>) -> String {
+    let ev = super::evidence::layout(c);
+    let mut s = format!(
+        "<details class=\"evidence\"><summary>evidence</summary><p><strong>method:</strong> {}</p>",
+        page.linked(&c.evidence.method)
+    );
+    if !ev.rows.is_empty() {
+        s.push_str("<div class=\"scroll\"><table>");
+        for d in &ev.rows {
+            let _ = write!(
+                s,
+                "<tr><th scope=\"row\">{}</th><td>{}</td></tr>",
+                escape(&d.name),
+                page.value(&d.name, &d.value, trials)
+            );
+        }
+        s.push_str("</table></div>");
+    }
+    for t in &ev.tables {
+        let _ = write!(
+            s,
+            "<div class=\"scroll\"><table><caption>{}</caption><tr><th scope=\"col\">{}</th>",
+            escape(&t.caption),
+            escape(&t.corner)
+        );
+        for col in &t.columns {
+            let _ = write!(s, "<th scope=\"col\" class=\"num\">{}</th>", escape(col));
+        }
+        s.push_str("</tr>");
+        for (head, cells) in &t.rows {
+            let _ = write!(s, "<tr><th scope=\"row\">{}</th>", escape(head));
+            for cell in cells {
+                let _ = write!(s, "<td class=\"num\">{}</td>", escape(cell));
+            }
+            s.push_str("</tr>");
+        }
+        s.push_str("</table></div>");
+    }
+    if let Some(n) = trials {
+        let _ = write!(
+            s,
+            "<p class=\"meta\">Statistics of {n} trials are shown to {} significant digits (sampling error about 1/√{n}).</p>",
+            super::values::sampled_digits(n)
+        );
+    }
+    s.push_str("</details>");
+    s
+}
+
+/// A figure: its panels, its caption and the key of its series (a coloured swatch beside
+/// each name; the name itself in the text colour).
+pub fn figure_html(f: &Figure) -> String {
+    let mut s = format!("<figure id=\"{}\"><div class=\"panels\">", escape(&f.id));
+    s.push_str(&super::svg::figure_svg(f, false));
+    let mut key: Vec<(String, crate::check::figure::Style)> = Vec::new();
+    for l in f.panels.iter().flat_map(|p| &p.layers) {
+        if !l.name.is_empty() && !key.iter().any(|(n, _)| n == &l.name) {
+            key.push((l.name.clone(), l.style));
         }
     }
+    let key: Vec<String> = key
+        .iter()
+        .map(|(n, st)| {
+            format!(
+                "<span><span class=\"swatch\" style=\"color: {}\" aria-hidden=\"true\">■</span> {}</span>",
+                super::svg::css_colour(*st),
+                escape(n)
+            )
+        })
+        .collect();
+    let _ = write!(
+        s,
+        "</div><figcaption><strong>{}</strong> — {}<br>{}</figcaption></figure>",
+        plain_label(&f.title),
+        plain_label(&f.caption),
+        key.join(" · ")
+    );
+    s
 }
 
 /// Figures whose claim id has no result of its own.
 fn push_further_figures(s: &mut String, r: &Report) {
-    // figures whose claim has several results are shown with the first of them
     let shown: Vec<&str> = r.claims.iter().map(|c| c.id.as_str()).collect();
     let rest: Vec<&Figure> = r
         .figures
@@ -291,9 +484,10 @@ fn push_further_figures(s: &mut String, r: &Report) {
         .filter(|f| !shown.contains(&f.claim.as_str()))
         .collect();
     if !rest.is_empty() {
-        s.push_str("<h2 id=\"figures\">Further figures</h2>");
+        s.push_str("<section aria-labelledby=\"figures\"><h2 id=\"figures\">Further figures</h2>");
         for f in rest {
             s.push_str(&figure_html(f));
         }
+        s.push_str("</section>");
     }
 }

@@ -1,8 +1,16 @@
 //! Presentation: renderers of claim results. No computation happens here.
 
+pub mod evidence;
+pub mod glance;
 pub mod html;
+pub mod layout;
+pub mod markdown;
+pub mod math;
+pub mod style;
 pub mod svg;
 pub mod values;
+
+pub use markdown::claim_markdown;
 
 pub use svg::{figure_svg, plot_svg};
 
@@ -136,34 +144,9 @@ impl Report {
         serde_json::to_string_pretty(self).unwrap_or_else(|e| format!("{{\"error\": \"{e}\"}}"))
     }
 
-    /// Markdown: a summary table of verdict counts, then the claims grouped by section.
+    /// Markdown, in the same order as the HTML page ([`markdown::render`]).
     pub fn to_markdown(&self) -> String {
-        let mut s = String::new();
-        let _ = writeln!(s, "# Reproducibility report\n");
-        if let Some(p) = &self.paper {
-            let _ = writeln!(s, "*{}* — {}\n", p.title, p.author);
-        }
-        let _ = writeln!(s, "Produced by {}.\n", self.tool);
-        let _ = writeln!(s, "## Summary\n\n| verdict | claims |\n|---|---|");
-        for v in Verdict::ALL {
-            let _ = writeln!(
-                s,
-                "| {} | {} |",
-                v.name(),
-                self.summary.get(v.name()).copied().unwrap_or(0)
-            );
-        }
-        let mut sections: BTreeMap<&str, Vec<&ClaimResult>> = BTreeMap::new();
-        for c in &self.claims {
-            sections.entry(c.section.as_str()).or_default().push(c);
-        }
-        for (section, claims) in sections {
-            let _ = writeln!(s, "\n## Section {section}\n");
-            for c in claims {
-                s.push_str(&claim_markdown(c));
-            }
-        }
-        s
+        markdown::render(self)
     }
 
     /// Write `report.md`, `report.json`, `report.html` and every figure as
@@ -225,28 +208,6 @@ pub fn write_all_atomic(dir: &Path, files: &[(&str, String)]) -> Result<()> {
             .map_err(|e| fail(&dir.join(name), e.to_string()))?;
     }
     Ok(())
-}
-
-/// One claim as Markdown.
-pub fn claim_markdown(c: &ClaimResult) -> String {
-    let mut s = String::new();
-    let _ = writeln!(s, "### `{}` — **{}**\n", c.id, c.verdict.name());
-    let _ = writeln!(s, "> {} (lines {})\n", c.quote, c.lines);
-    let _ = writeln!(s, "- paper: {}", values::printed_text(c));
-    let _ = writeln!(s, "- computed: {}", values::computed_text(c));
-    if let Some(t) = &c.tolerance {
-        let _ = writeln!(s, "- tolerance: {}", values::tolerance_text(t));
-    }
-    let _ = writeln!(s, "- power: {}", values::power_text(&c.power));
-    if let Some(corr) = &c.correction {
-        let _ = writeln!(s, "- corrected: {corr}");
-    }
-    let _ = writeln!(s, "- method: {}", c.evidence.method);
-    for d in &c.evidence.details {
-        let _ = writeln!(s, "  - {}: {}", d.name, values::value_text(&d.value));
-    }
-    s.push('\n');
-    s
 }
 
 /// The `dof --table` grid as text: counted against the real (Jacobian) rank.

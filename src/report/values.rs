@@ -82,6 +82,116 @@ pub fn power_text(p: &Power) -> String {
     format!("{kind}{region}: {}{weak}", p.detail)
 }
 
+/// A verdict's power in a few words (the full phrase is [`power_text`]).
+pub fn power_phrase(p: &Power) -> String {
+    let head = match (p.kind, &p.accepts) {
+        (PowerKind::Interval, Some(v)) => format!("accepts only {}", value_text(v)),
+        (PowerKind::Interval, None) => "accepts only the printed value".to_string(),
+        (PowerKind::Mutant, _) => "rejects a mutant".to_string(),
+        (PowerKind::None, _) => "no negative control".to_string(),
+    };
+    if p.weak {
+        format!("{head} (weak)")
+    } else {
+        head
+    }
+}
+
+/// Significant digits a Monte Carlo estimate from `trials` trials carries. Its relative
+/// sampling error is about 1/√trials (a quantile's or a share's standard error scales so), so
+/// the digits kept are those up to and including the first uncertain one:
+/// ⌊log₁₀ √trials⌋ + 1 (100 trials: 2 digits; 10 000 trials: 3 digits; at least 1).
+pub fn sampled_digits(trials: u64) -> usize {
+    if trials < 1 {
+        return 1;
+    }
+    // ⌊log₁₀ √n⌋ = ⌊log₁₀ n / 2⌋, computed on integers so that 10 000 gives exactly 2
+    let mut magnitude = 0usize;
+    let mut n = trials;
+    while n >= 10 {
+        n /= 10;
+        magnitude += 1;
+    }
+    magnitude / 2 + 1
+}
+
+/// `x` with `digits` significant digits: plain notation for magnitudes in [1e-4, 1e6),
+/// scientific otherwise (the notation of [`crate::numfmt::sig`]); trailing zeros are kept,
+/// since they are digits the estimate carries.
+pub fn sig_digits(x: f64, digits: usize) -> String {
+    if !x.is_finite() || x == 0.0 {
+        return sig(x);
+    }
+    let digits = digits.max(1);
+    let a = x.abs();
+    if (1e-4..1e6).contains(&a) {
+        let magnitude = a.log10().floor() as i32;
+        let decimals = (digits as i32 - 1 - magnitude).max(0) as usize;
+        format!("{x:.decimals$}")
+    } else {
+        format!("{:.*e}", digits - 1, x)
+    }
+}
+
+/// A value estimated from `trials` Monte Carlo trials: its floats with
+/// [`sampled_digits`]; other values as [`value_text`].
+pub fn sampled_text(v: &Value, trials: u64) -> String {
+    let d = sampled_digits(trials);
+    match v {
+        Value::Real { value } => sig_digits(value.0, d),
+        Value::Reals { values } => format!(
+            "({})",
+            values
+                .iter()
+                .map(|r| sig_digits(r.0, d))
+                .collect::<Vec<_>>()
+                .join(", ")
+        ),
+        Value::Interval { lo, hi } => {
+            format!("[{}, {}]", sig_digits(lo.0, d), sig_digits(hi.0, d))
+        }
+        v => value_text(v),
+    }
+}
+
+/// The trial count behind a claim's numbers, when it rests on a Monte Carlo study: the
+/// tolerance's, or an evidence detail counting the trials.
+pub fn trials_of(c: &ClaimResult) -> Option<u64> {
+    if let Some(Tolerance {
+        source: ToleranceSource::MonteCarlo { trials, .. },
+        ..
+    }) = &c.tolerance
+    {
+        return Some(*trials);
+    }
+    c.evidence.details.iter().find_map(|d| match d.value {
+        Value::Count { count, of: None } if d.name.starts_with("trials") => Some(count),
+        _ => None,
+    })
+}
+
+/// A named value as shown: a model's Monte Carlo statistic (a name `model: statistic` in a
+/// claim resting on `trials` trials) with [`sampled_digits`], anything else in full. The
+/// printed run's own errors are computed from printed digits, not sampled: shown in full.
+pub fn shown_text(name: &str, v: &Value, trials: Option<u64>) -> String {
+    match trials {
+        Some(n) if name.contains(": ") && !name.starts_with("printed run") => sampled_text(v, n),
+        _ => value_text(v),
+    }
+}
+
+/// Named values as one line, like [`quantities_text`], each shown with [`shown_text`].
+pub fn quantities_shown(qs: &[Quantity], trials: Option<u64>) -> String {
+    match qs {
+        [q] if q.name == "paper" || q.name == "computed" => shown_text(&q.name, &q.value, trials),
+        _ => qs
+            .iter()
+            .map(|q| format!("{}: {}", q.name, shown_text(&q.name, &q.value, trials)))
+            .collect::<Vec<_>>()
+            .join("; "),
+    }
+}
+
 /// What the paper printed, as one line.
 pub fn printed_text(c: &ClaimResult) -> String {
     quantities_text(&c.printed)
@@ -118,5 +228,25 @@ mod tests {
             None
         );
         assert_eq!(non_finite_token(&crate::numfmt::sig(f64::NAN)), Some("NaN"));
+    }
+
+    #[test]
+    fn sampled_digits_follow_the_trial_count() {
+        assert_eq!(sampled_digits(0), 1);
+        assert_eq!(sampled_digits(99), 1);
+        assert_eq!(sampled_digits(100), 2);
+        assert_eq!(sampled_digits(9_999), 2);
+        assert_eq!(sampled_digits(10_000), 3);
+        assert_eq!(sampled_digits(1_000_000), 4);
+        assert_eq!(sig_digits(0.0226423, 3), "0.0226");
+        assert_eq!(sig_digits(0.0016, 3), "0.00160");
+        assert_eq!(sig_digits(79.1051, 3), "79.1");
+        assert_eq!(sig_digits(0.7, 3), "0.700");
+        assert_eq!(sig_digits(123456.0, 2), "120000");
+        assert_eq!(sig_digits(2.6e-9, 1), "3e-9");
+        assert_eq!(
+            sampled_text(&Value::reals(&[0.00633492, 0.683381]), 10_000),
+            "(0.00633, 0.683)"
+        );
     }
 }

@@ -2,6 +2,8 @@
 
 /// Property tests of the exact and floating algebra.
 mod algebra_props;
+/// report.html in headless Chromium: it loads, its links resolve, it is not blank.
+mod browser;
 /// The command line: exit codes, JSON shapes, determinism.
 mod cli;
 /// The paper's cases and their report, computed once for the binary.

@@ -1,10 +1,18 @@
-//! The Markdown and HTML renderers on a small fixed set of claims (not the whole report).
+//! The Markdown and HTML renderers on a small fixed set of claims, and the properties every
+//! page of the whole paper must have: links that resolve, headings in order, no raw LaTeX,
+//! colours that pass WCAG AA, the paper file true to the LaTeX source.
 
 use orthocheck::check::figure::{Figure, Layer, Plot, Shape, Style};
 use orthocheck::check::{
     ClaimResult, Evidence, Power, Quantity, Tolerance, ToleranceSource, Value, Verdict,
 };
 use orthocheck::report::{claim_markdown, html, Provenance, Report};
+
+use std::collections::BTreeSet;
+
+use orthocheck::report::style::{
+    badge_background, contrast_ratio, parse_colour, BADGE_TEXT, GRAPHIC_CONTRAST, TEXT_CONTRAST,
+};
 
 fn claims() -> Vec<ClaimResult> {
     let claim = |id: &str, section: &str, verdict: Verdict, computed: &str| ClaimResult {
@@ -47,6 +55,48 @@ fn claims() -> Vec<ClaimResult> {
             "rank 5 of 6",
         ),
     ]
+    .into_iter()
+    .map(|mut c| {
+        if c.id == "p3f3-differences/equation-1" {
+            c.lines = "208-214".into();
+            c.printed = vec![Quantity::new(
+                "as printed (LaTeX)",
+                Value::formula("\\diffCst{1} = (\\facCst{1},$$ $$-\\facCst{3})"),
+            )];
+            c.correction = Some("d_Cst1 = facCst1 - facCst3".into());
+        }
+        if c.id == "ex2-body" {
+            c.evidence = Evidence::new("contradicted by p4f3-unique/planar-body")
+                .with("trials per model", Value::count(10_000))
+                .with(
+                    "A: 5/50/95 % quantiles",
+                    Value::reals(&[0.0123456, 0.5, 1.23456]),
+                )
+                .with("A: mean over the trials", 0.2345678)
+                .with("B: 5/50/95 % quantiles", Value::reals(&[0.01, 0.6, 2.0]))
+                .with("B: mean over the trials", 0.3);
+        }
+        c
+    })
+    .collect()
+}
+
+fn paper() -> orthocheck::cases::Paper {
+    orthocheck::cases::load_paper(std::path::Path::new(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/paper_cases"
+    )))
+    .unwrap()
+}
+
+fn fixture_report() -> Report {
+    let provenance = Provenance {
+        revision: Some("0123456789ab".into()),
+        date: Some("2026-11-22".into()),
+        command: "cargo run --release -- report".into(),
+        seeds: Vec::new(),
+    };
+    Report::with(claims(), vec![fixture_figure()], provenance).with_paper(paper())
 }
 
 fn settings() -> insta::Settings {
@@ -63,9 +113,8 @@ fn markdown_renderer() {
     settings().bind(|| insta::assert_snapshot!("render__markdown", md));
 }
 
-#[test]
-fn html_renderer() {
-    let figure = Figure {
+fn fixture_figure() -> Figure {
+    Figure {
         id: "fig-fixture".into(),
         claim: "ex2-body".into(),
         title: "a triangle".into(),
@@ -88,19 +137,199 @@ fn html_renderer() {
                 ),
             ],
         )],
-    };
-    let provenance = Provenance {
-        revision: Some("0123456789ab".into()),
-        date: Some("2026-11-22".into()),
-        command: "cargo run --release -- report".into(),
-        seeds: Vec::new(),
-    };
-    let paper = orthocheck::cases::load_paper(std::path::Path::new(concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/paper_cases"
-    )))
-    .unwrap();
-    let report = Report::with(claims(), vec![figure], provenance).with_paper(paper);
-    let page = html::render(&report);
+    }
+}
+
+#[test]
+fn html_renderer() {
+    let page = html::render(&fixture_report());
     settings().bind(|| insta::assert_snapshot!("render__html", page));
+}
+
+#[test]
+fn markdown_report_renderer() {
+    let md = fixture_report().to_markdown();
+    settings().bind(|| insta::assert_snapshot!("render__markdown_report", md));
+}
+
+/// Every `attr="#x"` of `page` and whether an `id="x"` exists for it.
+fn dangling_fragments(page: &str, attr: &str, id: &str) -> Vec<String> {
+    let ids: BTreeSet<&str> = page
+        .split(id)
+        .skip(1)
+        .filter_map(|r| r.split('"').next())
+        .collect();
+    page.split(attr)
+        .skip(1)
+        .filter_map(|r| r.split(['"', ')']).next())
+        .filter(|x| !ids.contains(x))
+        .map(str::to_string)
+        .collect()
+}
+
+/// `\name` commands outside `<script>` and `<style>`.
+fn raw_latex(page: &str) -> Vec<String> {
+    let mut text = String::new();
+    let mut rest = page;
+    while let Some(at) = rest.find("<s") {
+        text.push_str(&rest[..at]);
+        let after = &rest[at..];
+        let close = if after.starts_with("<script") {
+            "</script>"
+        } else if after.starts_with("<style") {
+            "</style>"
+        } else {
+            text.push_str("<s");
+            rest = &after[2..];
+            continue;
+        };
+        rest = after.find(close).map_or("", |e| &after[e + close.len()..]);
+    }
+    text.push_str(rest);
+    orthocheck::report::math::raw_macros(&text)
+        .into_iter()
+        .map(str::to_string)
+        .collect()
+}
+
+/// Heading levels never skip one on the way down.
+fn heading_jumps(page: &str) -> Vec<(usize, usize)> {
+    let mut last = 0usize;
+    let mut jumps = Vec::new();
+    for part in page.split("<h").skip(1) {
+        let Some(level) = part.chars().next().and_then(|c| c.to_digit(10)) else {
+            continue;
+        };
+        let level = level as usize;
+        if !part[1..].starts_with([' ', '>']) {
+            continue;
+        }
+        if level > last + 1 {
+            jumps.push((last, level));
+        }
+        last = level;
+    }
+    jumps
+}
+
+#[test]
+fn the_fixture_page_links_resolve_and_shows_no_latex() {
+    let page = html::render(&fixture_report());
+    assert_eq!(
+        dangling_fragments(&page, "href=\"#", "id=\""),
+        Vec::<String>::new()
+    );
+    assert_eq!(raw_latex(&page), Vec::<String>::new());
+    assert_eq!(heading_jumps(&page), Vec::<(usize, usize)>::new());
+    // the id in the method is a link; the erratum shows both sides readably
+    assert!(page.contains(
+        "<a href=\"#claim-p4f3-unique-planar-body\"><code>p4f3-unique/planar-body</code></a>"
+    ));
+    assert!(page.contains("d<sub>Cst,1</sub> = ((a₁⁴+b₁⁴+c₁⁴"), "{page}");
+    assert!(page.contains("<meta name=\"viewport\""));
+    assert!(page.contains("@media print"));
+}
+
+/// The page of the whole paper: every in-page link lands on an id, the headings descend one
+/// level at a time, no LaTeX command is left, the sections are in the paper's order with
+/// their titles, and the Markdown links its figures' SVG files and its own anchors.
+#[test]
+fn the_paper_report_navigates() {
+    let r = crate::common::report().unwrap();
+    let r = r.clone().with_paper(paper());
+    let page = html::render(&r);
+    assert_eq!(
+        dangling_fragments(&page, "href=\"#", "id=\""),
+        Vec::<String>::new()
+    );
+    assert_eq!(raw_latex(&page), Vec::<String>::new());
+    assert_eq!(heading_jumps(&page), Vec::<(usize, usize)>::new());
+    let titles: Vec<usize> = paper()
+        .sections
+        .iter()
+        .map(|s| {
+            page.find(&format!("id=\"section-{}\"", s.number.replace('.', "-")))
+                .unwrap_or_else(|| panic!("section {} missing", s.number))
+        })
+        .collect();
+    assert!(
+        titles.windows(2).all(|w| w[0] < w[1]),
+        "sections out of order"
+    );
+    assert!(page.contains("§2.2 Structure and motion for 3 point correspondences"));
+    let md = r.to_markdown();
+    assert_eq!(
+        dangling_fragments(&md, "](#", "<a id=\""),
+        Vec::<String>::new()
+    );
+    for f in &r.figures {
+        assert!(
+            md.contains(&format!("]({}.svg)", f.id)),
+            "{} not linked",
+            f.id
+        );
+    }
+    assert!(md.contains("revision") && md.contains("Seeds of every case"));
+    assert!(md.contains("### Errata: printed → corrected"));
+    assert!(!md.contains("\\facCst") && !md.contains("\\diffCst"));
+}
+
+#[test]
+fn every_badge_and_series_colour_passes_wcag_aa() {
+    use orthocheck::check::figure::Style;
+    let white = [255, 255, 255];
+    let text = parse_colour(BADGE_TEXT).unwrap();
+    for v in Verdict::ALL {
+        let bg = parse_colour(badge_background(v)).unwrap();
+        let ratio = contrast_ratio(bg, text);
+        assert!(ratio >= TEXT_CONTRAST, "badge {}: {ratio:.2}:1", v.name());
+    }
+    // every style a figure can draw (the match fails to compile when a style is added)
+    let all = [Style::Printed, Style::Computed, Style::Other, Style::Mark];
+    for st in all {
+        match st {
+            Style::Printed | Style::Computed | Style::Other | Style::Mark => {}
+        }
+        let css = orthocheck::report::svg::css_colour(st);
+        let c = parse_colour(&css).unwrap_or_else(|| panic!("{css} does not parse"));
+        let ratio = contrast_ratio(c, white);
+        assert!(
+            ratio >= GRAPHIC_CONTRAST,
+            "series {st:?} ({css}): {ratio:.2}:1"
+        );
+    }
+}
+
+/// The section titles and macro definitions of `paper_cases/paper.yml` are the LaTeX
+/// source's own.
+#[test]
+fn the_paper_file_is_true_to_the_source() {
+    let path = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../shared/paper/000_3d77cc3ad4ea04d3.txt"
+    );
+    let Ok(source) = std::fs::read_to_string(path) else {
+        eprintln!("SKIPPED: the LaTeX source {path} is not here");
+        return;
+    };
+    let lines: Vec<&str> = source.lines().collect();
+    let p = paper();
+    assert!(p.sections.len() >= 14, "{} sections", p.sections.len());
+    for s in &p.sections {
+        let line = lines[s.line as usize - 1];
+        assert!(
+            line.contains("section") && line.contains(&s.title),
+            "line {}: {line:?} is not the section {:?}",
+            s.line,
+            s.title
+        );
+    }
+    let squash = |t: &str| t.split_whitespace().collect::<String>();
+    let source = squash(&source);
+    let macros = orthocheck::report::math::Macros::parse(&p.macros);
+    assert!(macros.len() >= 20, "{} macros", macros.len());
+    for def in p.macros.split("\\newcommand").skip(1) {
+        let def = squash(&format!("\\newcommand{def}"));
+        assert!(source.contains(&def), "not in the source: {def}");
+    }
 }

@@ -1,0 +1,250 @@
+//! A claim's evidence laid out as tables: details named `model: statistic` that several
+//! models share become one model × percentile table (quantiles) and one statistic × model
+//! table (everything else), instead of rows repeating the model's name. Numbers a Monte Carlo
+//! study estimated carry the digits its trial count supports ([`super::values::shown_text`]).
+
+use super::values::{sampled_text, shown_text, value_text};
+use crate::check::{ClaimResult, Quantity, Value};
+
+/// A table of formatted cells.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Table {
+    /// What the table shows.
+    pub caption: String,
+    /// The header of the first column.
+    pub corner: String,
+    /// The column headers.
+    pub columns: Vec<String>,
+    /// Each row: its header and one cell per column (empty when missing).
+    pub rows: Vec<(String, Vec<String>)>,
+}
+
+/// The evidence of one claim as a reader sees it.
+#[derive(Clone, Debug)]
+pub struct Layout<'a> {
+    /// Details shown one per row, in the checks' order.
+    pub rows: Vec<&'a Quantity>,
+    /// The per-model statistics as tables.
+    pub tables: Vec<Table>,
+    /// The trial count behind the claim's sampled numbers.
+    pub trials: Option<u64>,
+}
+
+/// `5/25/50/75/95/99 % quantiles` → the percentiles `["5 %", "25 %", …]`.
+fn percentiles(statistic: &str) -> Option<Vec<String>> {
+    let head = statistic.strip_suffix(" % quantiles")?;
+    let ps: Vec<String> = head.split('/').map(|p| format!("{} %", p.trim())).collect();
+    ps.iter()
+        .all(|p| {
+            p.trim_end_matches(" %")
+                .chars()
+                .all(|c| c.is_ascii_digit() || c == '.')
+        })
+        .then_some(ps)
+}
+
+/// Lay out `c`'s evidence.
+pub fn layout(c: &ClaimResult) -> Layout<'_> {
+    let trials = super::values::trials_of(c);
+    let details = &c.evidence.details;
+    let split = |q: &Quantity| -> Option<(String, String)> {
+        q.name
+            .split_once(": ")
+            .map(|(m, s)| (m.to_string(), s.to_string()))
+    };
+    // a model joins a table when it shares a statistic with another model
+    let named: Vec<(String, String)> = details.iter().filter_map(split).collect();
+    let shared = |model: &str, stat: &str| {
+        named.iter().any(|(m, s)| m != model && s == stat) && !model.starts_with("printed run")
+    };
+    let mut models: Vec<String> = Vec::new();
+    for (m, s) in &named {
+        if shared(m, s) && !models.contains(m) {
+            models.push(m.clone());
+        }
+    }
+    let in_table = |q: &Quantity| split(q).is_some_and(|(m, _)| models.contains(&m));
+    let rows: Vec<&Quantity> = details.iter().filter(|q| !in_table(q)).collect();
+    let grouped: Vec<(String, String, &Value)> = details
+        .iter()
+        .filter(|q| in_table(q))
+        .filter_map(|q| split(q).map(|(m, s)| (m, s, &q.value)))
+        .collect();
+    let mut tables = Vec::new();
+    if !models.is_empty() {
+        tables.extend(quantile_tables(&models, &grouped, trials));
+        if let Some(t) = statistic_table(&models, &grouped, trials) {
+            tables.push(t);
+        }
+    }
+    Layout {
+        rows,
+        tables,
+        trials,
+    }
+}
+
+/// One model × percentile table per quantile statistic.
+fn quantile_tables(
+    models: &[String],
+    grouped: &[(String, String, &Value)],
+    trials: Option<u64>,
+) -> Vec<Table> {
+    let mut stats: Vec<&str> = Vec::new();
+    for (_, s, v) in grouped {
+        if percentiles(s).is_some() && matches!(v, Value::Reals { .. }) && !stats.contains(&&**s) {
+            stats.push(s);
+        }
+    }
+    stats
+        .into_iter()
+        .filter_map(|stat| {
+            let columns = percentiles(stat)?;
+            let rows = models
+                .iter()
+                .map(|m| {
+                    let cells = grouped
+                        .iter()
+                        .find(|(gm, gs, _)| gm == m && gs == stat)
+                        .and_then(|(_, _, v)| match v {
+                            Value::Reals { values } if values.len() == columns.len() => Some(
+                                values
+                                    .iter()
+                                    .map(|r| cell(&Value::real(r.0), trials))
+                                    .collect(),
+                            ),
+                            _ => None,
+                        })
+                        .unwrap_or_else(|| vec![String::new(); columns.len()]);
+                    (m.clone(), cells)
+                })
+                .collect();
+            Some(Table {
+                caption: stat.to_string(),
+                corner: "model".into(),
+                columns,
+                rows,
+            })
+        })
+        .collect()
+}
+
+fn cell(v: &Value, trials: Option<u64>) -> String {
+    match trials {
+        Some(n) => sampled_text(v, n),
+        None => value_text(v),
+    }
+}
+
+/// The statistics that are not quantile lists, one row each, one column per model.
+fn statistic_table(
+    models: &[String],
+    grouped: &[(String, String, &Value)],
+    trials: Option<u64>,
+) -> Option<Table> {
+    let mut stats: Vec<&str> = Vec::new();
+    for (_, s, v) in grouped {
+        let quantiles = percentiles(s).is_some() && matches!(v, Value::Reals { .. });
+        if !quantiles && !stats.contains(&&**s) {
+            stats.push(s);
+        }
+    }
+    if stats.is_empty() {
+        return None;
+    }
+    let rows = stats
+        .iter()
+        .map(|stat| {
+            let cells = models
+                .iter()
+                .map(|m| {
+                    grouped
+                        .iter()
+                        .find(|(gm, gs, _)| gm == m && gs == stat)
+                        .map(|(gm, gs, v)| shown_text(&format!("{gm}: {gs}"), v, trials))
+                        .unwrap_or_default()
+                })
+                .collect();
+            (stat.to_string(), cells)
+        })
+        .collect();
+    Some(Table {
+        caption: "per model".into(),
+        corner: "statistic".into(),
+        columns: models.to_vec(),
+        rows,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::check::{Evidence, Power, Verdict};
+
+    fn claim(details: Vec<Quantity>) -> ClaimResult {
+        let mut e = Evidence::new("m");
+        e.details = details;
+        ClaimResult {
+            id: "x".into(),
+            claim: "x".into(),
+            case: "c".into(),
+            section: "2".into(),
+            lines: "1".into(),
+            quote: String::new(),
+            verdict: Verdict::StatisticalHolds,
+            printed: Vec::new(),
+            computed: Vec::new(),
+            tolerance: None,
+            power: Power::exact_value("d"),
+            correction: None,
+            evidence: e,
+        }
+    }
+
+    #[test]
+    fn shared_statistics_become_tables_with_sampled_digits() {
+        let c = claim(vec![
+            Quantity::new("trials per model", Value::count(10_000)),
+            Quantity::new(
+                "A: 5/50/95 % quantiles",
+                Value::reals(&[0.0123456, 0.5, 1.23456]),
+            ),
+            Quantity::new("A: mean over the trials", 0.2345678),
+            Quantity::new("B: 5/50/95 % quantiles", Value::reals(&[0.01, 0.6, 2.0])),
+            Quantity::new("B: mean over the trials", 0.3),
+            Quantity::new("mutant: lonely", 0.123456),
+            Quantity::new("printed run: error", 0.0642088),
+        ]);
+        let l = layout(&c);
+        assert_eq!(l.trials, Some(10_000));
+        let names: Vec<&str> = l.rows.iter().map(|q| q.name.as_str()).collect();
+        assert_eq!(
+            names,
+            ["trials per model", "mutant: lonely", "printed run: error"]
+        );
+        assert_eq!(l.tables.len(), 2);
+        assert_eq!(l.tables[0].columns, ["5 %", "50 %", "95 %"]);
+        assert_eq!(
+            l.tables[0].rows[0],
+            (
+                "A".to_string(),
+                vec!["0.0123".into(), "0.500".into(), "1.23".into()]
+            )
+        );
+        assert_eq!(
+            l.tables[1].rows,
+            vec![(
+                "mean over the trials".to_string(),
+                vec!["0.235".to_string(), "0.300".to_string()]
+            )]
+        );
+    }
+
+    #[test]
+    fn a_claim_without_models_keeps_its_rows() {
+        let c = claim(vec![Quantity::new("a", 1.0), Quantity::new("b: c", 2.0)]);
+        let l = layout(&c);
+        assert_eq!(l.rows.len(), 2);
+        assert!(l.tables.is_empty());
+    }
+}

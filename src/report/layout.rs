@@ -1,0 +1,248 @@
+//! The order both report renderers follow: the paper's sections in reading order with their
+//! titles, the claims of each section in line order, the verdicts grouped for a reader, and
+//! the claim ids a text may mention.
+
+use std::collections::BTreeSet;
+
+use super::Report;
+use crate::check::{ClaimResult, Verdict};
+
+/// One section of the paper and the claims it holds.
+#[derive(Clone, Debug)]
+pub struct Section<'a> {
+    /// The number as the cases write it ("2.2", "A").
+    pub number: String,
+    /// The paper's title of it, when known.
+    pub title: Option<String>,
+    /// 1 for a section, 2 for a subsection.
+    pub depth: usize,
+    /// Its claims, in line order.
+    pub claims: Vec<&'a ClaimResult>,
+}
+
+impl Section<'_> {
+    /// "§2.2 Structure and motion …" (the appendix by its title alone).
+    pub fn heading(&self) -> String {
+        match &self.title {
+            Some(t) if t.starts_with("Appendix") => t.clone(),
+            Some(t) => format!("§{} {t}", self.number),
+            None if self.number.chars().all(|c| c.is_ascii_alphabetic()) => {
+                format!("Appendix {}", self.number)
+            }
+            None => format!("§{}", self.number),
+        }
+    }
+
+    /// The anchor of the section (`section-2-2`).
+    pub fn anchor(&self) -> String {
+        section_anchor(&self.number)
+    }
+}
+
+/// The anchor of section `number`.
+pub fn section_anchor(number: &str) -> String {
+    format!("section-{}", number.replace('.', "-"))
+}
+
+/// The anchor of the list of claims with verdict `v` (`verdict-erratum`).
+pub fn verdict_anchor(v: Verdict) -> String {
+    format!("verdict-{}", v.name())
+}
+
+/// A claim's anchor (`appA-coefficients/f_cb` → `claim-appA-coefficients-f_cb`).
+pub fn anchor(id: &str) -> String {
+    let clean: String = id
+        .chars()
+        .map(|c| {
+            if c.is_ascii_alphanumeric() || c == '-' || c == '_' || c == '.' {
+                c
+            } else {
+                '-'
+            }
+        })
+        .collect();
+    format!("claim-{clean}")
+}
+
+/// Sort key of a section number: numbers numerically, then the appendix.
+fn section_key(s: &str) -> (u32, Vec<u32>, String) {
+    if s.chars().next().is_some_and(|c| c.is_ascii_digit()) {
+        (
+            0,
+            s.split(['.', '-']).filter_map(|p| p.parse().ok()).collect(),
+            String::new(),
+        )
+    } else {
+        (1, Vec::new(), s.to_string())
+    }
+}
+
+/// The first line number a claim cites (claims without one sort last).
+pub fn first_line(c: &ClaimResult) -> u32 {
+    let digits: String = c
+        .lines
+        .chars()
+        .skip_while(|ch| !ch.is_ascii_digit())
+        .take_while(char::is_ascii_digit)
+        .collect();
+    digits.parse().unwrap_or(u32::MAX)
+}
+
+/// Every section in the paper's order, with its claims in line order: the sections the paper
+/// file names (even those without claims), then any other section a claim cites.
+pub fn sections(r: &Report) -> Vec<Section<'_>> {
+    let mut numbers: Vec<(String, Option<String>)> = r
+        .paper
+        .as_ref()
+        .map(|p| {
+            p.sections
+                .iter()
+                .map(|s| (s.number.clone(), Some(s.title.clone())))
+                .collect()
+        })
+        .unwrap_or_default();
+    for c in &r.claims {
+        if !numbers.iter().any(|(n, _)| n == &c.section) {
+            numbers.push((c.section.clone(), None));
+        }
+    }
+    numbers.sort_by_key(|(n, _)| section_key(n));
+    numbers
+        .into_iter()
+        .map(|(number, title)| {
+            let mut claims: Vec<&ClaimResult> =
+                r.claims.iter().filter(|c| c.section == number).collect();
+            // stable: claims on the same line keep the cases' order
+            claims.sort_by_key(|c| first_line(c));
+            Section {
+                depth: if number.contains('.') { 2 } else { 1 },
+                number,
+                title,
+                claims,
+            }
+        })
+        .collect()
+}
+
+/// The claims in report order: section by section, each in line order.
+pub fn ordered(r: &Report) -> Vec<&ClaimResult> {
+    sections(r).into_iter().flat_map(|s| s.claims).collect()
+}
+
+/// How a reader groups the verdicts at a glance.
+pub const GROUPS: [(&str, &[Verdict]); 5] = [
+    (
+        "holds",
+        &[
+            Verdict::Reproduced,
+            Verdict::ReproducedWithinRounding,
+            Verdict::IdentityVerified,
+            Verdict::HoldsGenerically,
+            Verdict::StatisticalHolds,
+        ],
+    ),
+    (
+        "fails",
+        &[
+            Verdict::Erratum,
+            Verdict::Contradicted,
+            Verdict::StatisticalFails,
+        ],
+    ),
+    ("form only (notes)", &[Verdict::Note]),
+    ("cannot be decided", &[Verdict::NotReproducible]),
+    ("inconclusive", &[Verdict::Inconclusive]),
+];
+
+/// The ids a text may mention and a renderer links: every result id, and every claim id that
+/// cannot be an ordinary word (it holds a digit, a dash or a slash).
+pub fn linkable_ids(r: &Report) -> BTreeSet<String> {
+    let mut ids = BTreeSet::new();
+    for c in &r.claims {
+        ids.insert(c.id.clone());
+        if c.claim
+            .contains(|ch: char| ch.is_ascii_digit() || ch == '-' || ch == '/')
+        {
+            ids.insert(c.claim.clone());
+        }
+    }
+    ids
+}
+
+/// The result an id names: the result itself, or the first result (in report order) of the
+/// claim it names.
+pub fn target_of<'a>(ordered: &[&'a ClaimResult], id: &str) -> Option<&'a ClaimResult> {
+    ordered
+        .iter()
+        .find(|c| c.id == id)
+        .or_else(|| ordered.iter().find(|c| c.claim == id))
+        .copied()
+}
+
+/// Split `text` into pieces, each either plain text or an id of `ids` (a whole token of id
+/// characters, trailing punctuation excluded).
+pub fn split_ids<'t>(text: &'t str, ids: &BTreeSet<String>) -> Vec<(&'t str, bool)> {
+    let is_id_char = |c: char| c.is_ascii_alphanumeric() || matches!(c, '-' | '_' | '.' | '/');
+    let mut out = Vec::new();
+    let mut plain_from = 0;
+    let mut i = 0;
+    let bytes = text.as_bytes();
+    while i < text.len() {
+        let c = text[i..].chars().next().unwrap_or(' ');
+        if !is_id_char(c) {
+            i += c.len_utf8();
+            continue;
+        }
+        let start = i;
+        while i < text.len() && is_id_char(bytes[i] as char) && bytes[i].is_ascii() {
+            i += 1;
+        }
+        let token = text[start..i].trim_end_matches(['.', '/', '-']);
+        let end = start + token.len();
+        if ids.contains(token) {
+            if plain_from < start {
+                out.push((&text[plain_from..start], false));
+            }
+            out.push((&text[start..end], true));
+            plain_from = end;
+        }
+    }
+    if plain_from < text.len() {
+        out.push((&text[plain_from..], false));
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn ids_are_found_as_whole_tokens() {
+        let ids: BTreeSet<String> = ["p4f3-unique/planar-body", "ex2-body"]
+            .iter()
+            .map(|s| s.to_string())
+            .collect();
+        let parts = split_ids(
+            "contradicted by p4f3-unique/planar-body. not ex2-body2",
+            &ids,
+        );
+        assert_eq!(
+            parts,
+            vec![
+                ("contradicted by ", false),
+                ("p4f3-unique/planar-body", true),
+                (". not ex2-body2", false)
+            ]
+        );
+        assert_eq!(split_ids("ex2-body", &ids), vec![("ex2-body", true)]);
+        assert_eq!(split_ids("a², b²", &ids), vec![("a², b²", false)]);
+    }
+
+    #[test]
+    fn sections_sort_in_reading_order() {
+        let mut v = vec!["A", "5.2", "2.2", "10", "2", "5"];
+        v.sort_by_key(|s| section_key(s));
+        assert_eq!(v, vec!["2", "2.2", "5", "5.2", "10", "A"]);
+    }
+}

@@ -1,0 +1,597 @@
+//! Formulas as a reader wants them: the paper's LaTeX (and the plain `a_1^2` notation the
+//! checks write) turned into Unicode mathematics. The paper's own `\newcommand` macros are
+//! expanded from their definitions (`paper_cases/paper.yml`), fractions become `(p)/(q)`,
+//! roots `√(x)`, Greek letters their glyphs, and sub- and superscripts Unicode where Unicode
+//! has the glyphs (HTML `<sub>`/`<sup>` elsewhere, `_(…)` in plain text). No backslash macro
+//! survives: an unknown one is shown by its name.
+
+use std::collections::BTreeMap;
+
+/// Expansion depth limit: the paper's macros nest three deep; a definition that calls itself
+/// stops here instead of looping.
+const MAX_DEPTH: usize = 12;
+
+/// The paper's `\newcommand` macros by name.
+#[derive(Clone, Debug, Default)]
+pub struct Macros {
+    defs: BTreeMap<String, (usize, String)>,
+}
+
+impl Macros {
+    /// Read every `\newcommand{\name}[n]{body}` of `latex` (other text is ignored).
+    pub fn parse(latex: &str) -> Macros {
+        let mut defs = BTreeMap::new();
+        let mut rest = latex;
+        while let Some(at) = rest.find("\\newcommand{\\") {
+            rest = &rest[at + "\\newcommand{\\".len()..];
+            let Some(end) = rest.find('}') else { break };
+            let name = rest[..end].to_string();
+            rest = &rest[end + 1..];
+            let mut args = 0;
+            if let Some(r) = rest.strip_prefix('[') {
+                if let Some(close) = r.find(']') {
+                    args = r[..close].trim().parse().unwrap_or(0);
+                    rest = &r[close + 1..];
+                }
+            }
+            let trimmed = rest.trim_start();
+            if let Some((body, after)) = group(trimmed) {
+                defs.insert(name, (args, body.to_string()));
+                rest = after;
+            }
+        }
+        Macros { defs }
+    }
+
+    /// How many macros are known.
+    pub fn len(&self) -> usize {
+        self.defs.len()
+    }
+
+    /// True when no macro is known.
+    pub fn is_empty(&self) -> bool {
+        self.defs.is_empty()
+    }
+
+    /// Expand every known macro of `s` (arguments in braces or single characters); with
+    /// `names`, also a plain-notation name such as `facCst1` that is a one-argument macro
+    /// followed by its argument.
+    pub fn expand(&self, s: &str, names: bool) -> String {
+        self.expand_at(s, names, 0)
+    }
+
+    fn expand_at(&self, s: &str, names: bool, depth: usize) -> String {
+        if depth > MAX_DEPTH {
+            return s.to_string();
+        }
+        let mut out = String::with_capacity(s.len());
+        let mut rest = s;
+        while let Some(c) = rest.chars().next() {
+            if c == '\\' {
+                let name = letters(&rest[1..]);
+                if let Some((n, body)) = self.defs.get(name) {
+                    let mut after = &rest[1 + name.len()..];
+                    let mut call = body.clone();
+                    for k in 1..=*n {
+                        let (arg, r) = argument(after);
+                        call = call.replace(&format!("#{k}"), arg);
+                        after = r;
+                    }
+                    out.push_str(self.expand_at(&call, names, depth + 1).trim());
+                    rest = after;
+                    continue;
+                }
+                out.push('\\');
+                out.push_str(name);
+                rest = &rest[1 + name.len()..];
+                continue;
+            }
+            let boundary = !out
+                .chars()
+                .last()
+                .is_some_and(|p| p.is_ascii_alphanumeric() || p == '_' || p == '\\');
+            if names && boundary && c.is_ascii_alphabetic() {
+                let word = letters(rest);
+                let digits: &str = {
+                    let r = &rest[word.len()..];
+                    &r[..r.find(|d: char| !d.is_ascii_digit()).unwrap_or(r.len())]
+                };
+                let next = rest[word.len() + digits.len()..].chars().next();
+                if let Some((1, body)) = self.defs.get(word) {
+                    if !digits.is_empty() && !next.is_some_and(|n| n.is_ascii_alphanumeric()) {
+                        let call = body.replace("#1", digits);
+                        out.push_str(self.expand_at(&call, names, depth + 1).trim());
+                        rest = &rest[word.len() + digits.len()..];
+                        continue;
+                    }
+                }
+                out.push_str(word);
+                rest = &rest[word.len()..];
+                continue;
+            }
+            out.push(c);
+            rest = &rest[c.len_utf8()..];
+        }
+        out
+    }
+}
+
+/// The leading ASCII letters of `s`.
+fn letters(s: &str) -> &str {
+    &s[..s
+        .find(|c: char| !c.is_ascii_alphabetic())
+        .unwrap_or(s.len())]
+}
+
+/// A braced group at the start of `s`: its inside and what follows it.
+fn group(s: &str) -> Option<(&str, &str)> {
+    if !s.starts_with('{') {
+        return None;
+    }
+    let mut depth = 0usize;
+    for (i, c) in s.char_indices() {
+        match c {
+            '{' => depth += 1,
+            '}' => {
+                depth -= 1;
+                if depth == 0 {
+                    return Some((&s[1..i], &s[i + 1..]));
+                }
+            }
+            _ => {}
+        }
+    }
+    None
+}
+
+/// One macro argument: a braced group or a single character (after spaces).
+fn argument(s: &str) -> (&str, &str) {
+    let t = s.trim_start();
+    if let Some(g) = group(t) {
+        return g;
+    }
+    match t.chars().next() {
+        Some(c) => t.split_at(c.len_utf8()),
+        None => ("", t),
+    }
+}
+
+/// A piece of rendered mathematics.
+#[derive(Clone, Debug, PartialEq)]
+enum Piece {
+    Text(String),
+    Sub(String),
+    Sup(String),
+}
+
+fn superscript(c: char) -> Option<char> {
+    let digits = "⁰¹²³⁴⁵⁶⁷⁸⁹";
+    match c {
+        '0'..='9' => digits.chars().nth(c as usize - '0' as usize),
+        '+' => Some('⁺'),
+        '-' | '−' => Some('⁻'),
+        '=' => Some('⁼'),
+        '(' => Some('⁽'),
+        ')' => Some('⁾'),
+        'n' => Some('ⁿ'),
+        'i' => Some('ⁱ'),
+        _ => None,
+    }
+}
+
+fn subscript(c: char) -> Option<char> {
+    let digits = "₀₁₂₃₄₅₆₇₈₉";
+    match c {
+        '0'..='9' => digits.chars().nth(c as usize - '0' as usize),
+        '+' => Some('₊'),
+        '-' | '−' => Some('₋'),
+        '=' => Some('₌'),
+        '(' => Some('₍'),
+        ')' => Some('₎'),
+        ',' => Some(','),
+        'a' => Some('ₐ'),
+        'e' => Some('ₑ'),
+        'o' => Some('ₒ'),
+        'x' => Some('ₓ'),
+        'h' => Some('ₕ'),
+        'k' => Some('ₖ'),
+        'l' => Some('ₗ'),
+        'm' => Some('ₘ'),
+        'n' => Some('ₙ'),
+        'p' => Some('ₚ'),
+        's' => Some('ₛ'),
+        't' => Some('ₜ'),
+        'i' => Some('ᵢ'),
+        'j' => Some('ⱼ'),
+        'r' => Some('ᵣ'),
+        'u' => Some('ᵤ'),
+        'v' => Some('ᵥ'),
+        _ => None,
+    }
+}
+
+/// A LaTeX command without arguments (or one whose argument is shown as is) as text.
+fn symbol(name: &str) -> Option<&'static str> {
+    Some(match name {
+        "alpha" => "α",
+        "beta" => "β",
+        "gamma" => "γ",
+        "delta" => "δ",
+        "epsilon" | "varepsilon" => "ε",
+        "lambda" => "λ",
+        "mu" => "μ",
+        "pi" => "π",
+        "sigma" => "σ",
+        "phi" | "varphi" => "φ",
+        "theta" => "θ",
+        "omega" => "ω",
+        "Delta" => "Δ",
+        "Gamma" => "Γ",
+        "Lambda" => "Λ",
+        "Sigma" => "Σ",
+        "Phi" => "Φ",
+        "Omega" => "Ω",
+        "cdot" => "·",
+        "times" => "×",
+        "pm" => "±",
+        "mp" => "∓",
+        "leq" | "le" => "≤",
+        "geq" | "ge" => "≥",
+        "neq" | "ne" => "≠",
+        "approx" => "≈",
+        "infty" => "∞",
+        "ldots" | "dots" => "…",
+        "cdots" => "⋯",
+        "sum" => "∑",
+        "prod" => "∏",
+        "partial" => "∂",
+        "in" => "∈",
+        "to" | "rightarrow" => "→",
+        "Rightarrow" => "⇒",
+        "quad" | "qquad" | ";" | " " => " ",
+        "," => "\u{2009}",
+        "nonumber" | "left" | "right" | "!" | "displaystyle" | "big" | "Big" => "",
+        "{" => "{",
+        "}" => "}",
+        "sin" | "cos" | "tan" | "log" | "exp" | "det" | "arctan" | "min" | "max" => {
+            return Some(match name {
+                "sin" => "sin ",
+                "cos" => "cos ",
+                "tan" => "tan ",
+                "log" => "log ",
+                "exp" => "exp ",
+                "det" => "det ",
+                "arctan" => "arctan ",
+                "min" => "min ",
+                _ => "max ",
+            })
+        }
+        _ => return None,
+    })
+}
+
+/// Commands whose braced argument is shown as it is (fonts, text).
+fn is_font(name: &str) -> bool {
+    matches!(
+        name,
+        "mathrm" | "mathit" | "mathbf" | "text" | "textrm" | "mbox" | "hat" | "bar" | "tilde"
+    )
+}
+
+struct Renderer {
+    /// Plain notation (`d_Cst1`): a script without braces runs over letters and digits.
+    plain: bool,
+    out: Vec<Piece>,
+}
+
+impl Renderer {
+    fn text(&mut self, t: &str) {
+        if let Some(Piece::Text(s)) = self.out.last_mut() {
+            s.push_str(t);
+        } else {
+            self.out.push(Piece::Text(t.to_string()));
+        }
+    }
+
+    fn last_char(&self) -> Option<char> {
+        match self.out.last() {
+            Some(Piece::Text(s)) => s.chars().last(),
+            Some(_) => Some('x'),
+            None => None,
+        }
+    }
+
+    fn run(&mut self, s: &str) {
+        let mut rest = s;
+        while let Some(c) = rest.chars().next() {
+            rest = &rest[c.len_utf8()..];
+            match c {
+                '$' | '&' => {}
+                '{' | '}' => {}
+                '~' => self.text(" "),
+                '=' if !self.plain => self.text(" = "),
+                '*' => self.text("·"),
+                '-' => {
+                    let word = self.last_char().is_some_and(|p| p.is_alphabetic())
+                        && rest.chars().next().is_some_and(|n| n.is_alphabetic());
+                    self.text(if word && self.plain { "-" } else { "−" });
+                }
+                // LaTeX ignores spaces in mathematics; plain notation keeps one
+                c if c.is_whitespace() => {
+                    if self.plain && !matches!(self.last_char(), None | Some(' ')) {
+                        self.text(" ");
+                    }
+                }
+                '^' | '_' => rest = self.script(c == '^', rest),
+                '\\' => rest = self.command(rest),
+                c => self.text(c.encode_utf8(&mut [0; 4])),
+            }
+        }
+    }
+
+    /// A sub- or superscript; returns what follows it.
+    fn script<'a>(&mut self, sup: bool, s: &'a str) -> &'a str {
+        let t = s.trim_start();
+        let (body, rest) = if let Some(g) = group(t) {
+            g
+        } else if self.plain {
+            let n = t
+                .find(|c: char| !c.is_ascii_alphanumeric())
+                .unwrap_or(t.len())
+                .max(t.chars().next().map_or(0, char::len_utf8));
+            t.split_at(n)
+        } else {
+            argument(t)
+        };
+        let inner = flatten(body, self.plain);
+        let map = if sup { superscript } else { subscript };
+        let mapped: Option<String> = inner.chars().map(map).collect();
+        match mapped {
+            Some(m) if !inner.is_empty() => self.text(&m),
+            _ if sup => self.out.push(Piece::Sup(inner)),
+            _ => self.out.push(Piece::Sub(inner)),
+        }
+        rest
+    }
+
+    /// A backslash command; returns what follows it.
+    fn command<'a>(&mut self, s: &'a str) -> &'a str {
+        let name = letters(s);
+        let (name, rest) = if name.is_empty() {
+            match s.chars().next() {
+                Some(c) => s.split_at(c.len_utf8()),
+                None => return s,
+            }
+        } else {
+            (name, &s[name.len()..])
+        };
+        match name {
+            "\\" => {
+                self.text(" ");
+                rest
+            }
+            "frac" => {
+                let (num, r) = argument(rest);
+                let (den, r) = argument(r);
+                self.wrapped(num);
+                self.text("/");
+                self.wrapped(den);
+                r
+            }
+            "sqrt" => {
+                let r = rest.trim_start();
+                let r = match r.strip_prefix('[').and_then(|x| x.split_once(']')) {
+                    Some((_, after)) => after,
+                    None => r,
+                };
+                let (arg, r) = argument(r);
+                self.text("√");
+                self.wrapped(arg);
+                r
+            }
+            n if is_font(n) => {
+                let (arg, r) = argument(rest);
+                self.run(arg);
+                r
+            }
+            n => {
+                match symbol(n) {
+                    Some(t) => self.text(t),
+                    // an unknown command shows its name, never its backslash
+                    None => {
+                        self.text(n);
+                        if rest.trim_start().starts_with(|c: char| c.is_alphanumeric()) {
+                            self.text(" ");
+                        }
+                    }
+                }
+                rest
+            }
+        }
+    }
+
+    /// `x` as is when it is one symbol, else in parentheses.
+    fn wrapped(&mut self, x: &str) {
+        let inner = flatten(x, self.plain);
+        let atomic = inner.chars().all(|c| c.is_alphanumeric() || c == '.')
+            || (inner.starts_with('(') && inner.ends_with(')') && balanced_outer(&inner));
+        if atomic {
+            self.run(x);
+        } else {
+            self.text("(");
+            self.run(x.trim());
+            self.text(")");
+        }
+    }
+}
+
+/// True when the outer parentheses of `s` enclose all of it.
+fn balanced_outer(s: &str) -> bool {
+    let mut depth = 0i32;
+    let n = s.chars().count();
+    for (i, c) in s.chars().enumerate() {
+        match c {
+            '(' => depth += 1,
+            ')' => depth -= 1,
+            _ => {}
+        }
+        if depth == 0 && i + 1 < n {
+            return false;
+        }
+    }
+    depth == 0
+}
+
+fn pieces(s: &str, plain: bool) -> Vec<Piece> {
+    let mut r = Renderer {
+        plain,
+        out: Vec::new(),
+    };
+    r.run(s);
+    // trim the ends
+    if let Some(Piece::Text(t)) = r.out.first_mut() {
+        *t = t.trim_start().to_string();
+    }
+    if let Some(Piece::Text(t)) = r.out.last_mut() {
+        *t = t.trim_end().to_string();
+    }
+    r.out
+        .retain(|p| !matches!(p, Piece::Text(t) if t.is_empty()));
+    r.out
+}
+
+/// Rendered mathematics as one plain string (scripts without a Unicode glyph as `_(…)`).
+fn flatten(s: &str, plain: bool) -> String {
+    let mut out = String::new();
+    for p in pieces(s, plain) {
+        match p {
+            Piece::Text(t) => out.push_str(&t),
+            Piece::Sub(t) => push_script(&mut out, '_', &t),
+            Piece::Sup(t) => push_script(&mut out, '^', &t),
+        }
+    }
+    out
+}
+
+fn push_script(out: &mut String, mark: char, t: &str) {
+    out.push(mark);
+    if t.chars().all(|c| c.is_ascii_alphanumeric()) {
+        out.push_str(t);
+    } else {
+        out.push('(');
+        out.push_str(t);
+        out.push(')');
+    }
+}
+
+/// True when `s` reads as LaTeX (a backslash command or a braced group) rather than plain
+/// notation.
+fn is_latex(s: &str) -> bool {
+    s.contains('\\') || s.contains('{')
+}
+
+/// A formula as plain Unicode text; `names` also expands plain-notation macro names
+/// (`facCst1`).
+pub fn math_text(s: &str, macros: &Macros, names: bool) -> String {
+    let expanded = macros.expand(s, names);
+    flatten(&expanded, !is_latex(s))
+}
+
+/// A formula as HTML (escaped; `<sub>`/`<sup>` for scripts Unicode cannot write).
+pub fn math_html(s: &str, macros: &Macros, names: bool) -> String {
+    let expanded = macros.expand(s, names);
+    let mut out = String::new();
+    for p in pieces(&expanded, !is_latex(s)) {
+        match p {
+            Piece::Text(t) => out.push_str(&super::html::escape(&t)),
+            Piece::Sub(t) => {
+                out.push_str("<sub>");
+                out.push_str(&super::html::escape(&t));
+                out.push_str("</sub>");
+            }
+            Piece::Sup(t) => {
+                out.push_str("<sup>");
+                out.push_str(&super::html::escape(&t));
+                out.push_str("</sup>");
+            }
+        }
+    }
+    out
+}
+
+/// Backslash commands left in `s` (what no reader should see): their names.
+pub fn raw_macros(s: &str) -> Vec<&str> {
+    let mut found = Vec::new();
+    let mut rest = s;
+    while let Some(at) = rest.find('\\') {
+        let name = letters(&rest[at + 1..]);
+        if !name.is_empty() {
+            found.push(name);
+        }
+        rest = &rest[at + 1 + name.len()..];
+    }
+    found
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn paper_like() -> Macros {
+        Macros::parse(
+            "\\newcommand{\\nn}{\\nonumber}\n\
+             \\newcommand{\\faca}[1]{ 2(-{a_#1}^2+{b_#1}^2+{c_#1}^2) }\n\
+             \\newcommand{\\diffCst}[1]{d_{Cst,#1}}\n\
+             \\newcommand{\\deltab}{\\Delta_b}\n\
+             \\newcommand{\\AFcbbdwa}{f_{b ^2}}\n",
+        )
+    }
+
+    #[test]
+    fn macros_are_read_with_their_arguments() {
+        let m = paper_like();
+        assert_eq!(m.len(), 5);
+        assert_eq!(m.expand("\\diffCst{1}", false), "d_{Cst,1}");
+        assert_eq!(m.expand("\\faca 3", false), "2(-{a_3}^2+{b_3}^2+{c_3}^2)");
+        // a plain name is expanded only when asked, and only as a whole word
+        assert_eq!(m.expand("faca1 - xfaca1", false), "faca1 - xfaca1");
+        assert_eq!(
+            m.expand("faca1 - xfaca1", true),
+            "2(-{a_1}^2+{b_1}^2+{c_1}^2) - xfaca1"
+        );
+    }
+
+    #[test]
+    fn latex_becomes_unicode() {
+        let m = paper_like();
+        assert_eq!(math_text("\\faca{1}", &m, false), "2(−a₁²+b₁²+c₁²)");
+        assert_eq!(
+            math_text("\\diffCst{1} = (x\\nn,$$ $$-y) ,", &m, false),
+            "d_(Cst,1) = (x,−y),"
+        );
+        assert_eq!(math_text("\\frac{a+b}{c}", &m, false), "(a+b)/c");
+        assert_eq!(math_text("\\sqrt{\\deltab}", &m, false), "√(Δ_b)");
+        assert_eq!(math_text("\\AFcbbdwa", &m, false), "f_(b²)");
+        assert_eq!(math_text("\\unknownthing x", &m, false), "unknownthing x");
+        assert!(raw_macros(&math_text("\\diffCst{2} \\nn", &m, false)).is_empty());
+    }
+
+    #[test]
+    fn plain_notation_becomes_unicode() {
+        let m = paper_like();
+        assert_eq!(math_text("2*a_i^2*b_1^4", &m, false), "2·aᵢ²·b₁⁴");
+        assert_eq!(math_text("d_Cst1 - d_a2", &m, false), "d_Cst1 − dₐ₂");
+        assert_eq!(math_text("well-posed", &m, false), "well-posed");
+        assert_eq!(
+            math_text("(faca1-faca3)", &m, true),
+            "(2(−a₁²+b₁²+c₁²)−2(−a₃²+b₃²+c₃²))"
+        );
+    }
+
+    #[test]
+    fn html_uses_sub_and_sup_where_unicode_has_no_glyph() {
+        let m = paper_like();
+        assert_eq!(math_html("\\diffCst{1}", &m, false), "d<sub>Cst,1</sub>");
+        assert_eq!(math_html("a_1^2 < b", &m, false), "a₁² &lt; b");
+    }
+}
