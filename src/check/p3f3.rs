@@ -407,7 +407,7 @@ fn figures(
         claim: case.figure.claim.claim.clone(),
         title: "§2: the three projections of the triangle".into(),
         caption: format!(
-            "The printed figure coordinates and the nearest exact projections of the body ({}) within their rounding.",
+            "The printed figure coordinates (wide, pale, beneath) and the nearest exact projections of the body ({}) within their rounding (dashed, on top); equal scales on both axes.",
             Printed::join(&case.body.lengths)
         ),
         panels,

@@ -214,7 +214,7 @@ fn figure(b: &ResultBuilder, case: &P4f3ExampleCase, bx: &RoundingBox, fit: &Fig
         id: "fig-ex4-figure".into(),
         claim: case.figure.claim.claim.clone(),
         title: "§4: the three projections of the tetrahedron".into(),
-        caption: "The printed figure coordinates and the nearest exact orthographic views of the body of the edge table within their rounding.".into(),
+        caption: "The printed figure coordinates (wide, pale, beneath) and the nearest exact orthographic views of the body of the edge table within their rounding (dashed, on top); equal scales on both axes.".into(),
         panels,
     });
 }

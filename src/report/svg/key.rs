@@ -39,11 +39,19 @@ pub(super) fn draw_labels(s: &mut String, p: &Plot, a: &Axes) {
     for ((x, y), text, c) in &labels {
         let (dx, dy) = (x - cx, y - cy);
         let norm = dx.hypot(dy);
-        let (ux, uy) = if norm > 1.0 {
+        let (mut ux, mut uy) = if norm > 1.0 {
             (dx / norm, dy / norm)
         } else {
             (0.0, -1.0)
         };
+        // a label that would leave the plot area goes to the other side of its point
+        let w = CHAR_W * 12.0 * text.chars().count() as f64;
+        if (ux < -0.35 && x - 9.0 - w < a.left) || (ux > 0.35 && x + 9.0 + w > a.left + a.w) {
+            ux = -ux;
+        }
+        if (uy < 0.0 && y - 9.0 - 12.0 < a.top) || (uy > 0.0 && y + 9.0 + 4.0 > a.top + a.h) {
+            uy = -uy;
+        }
         let anchor = if ux > 0.35 {
             "start"
         } else if ux < -0.35 {
