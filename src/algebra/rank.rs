@@ -211,7 +211,6 @@ pub const SVD_MAX_ITERATIONS: usize = 10_000;
 /// the rounding error in the entries) also count as zero: a matrix made only of rounding
 /// noise then has rank 0 instead of full rank. A non-finite matrix, or one whose SVD does not
 /// converge within [`SVD_MAX_ITERATIONS`], has rank 0 and no singular values.
-
 pub fn svd_rank_above(m: &DMatrix<f64>, noise: f64) -> SvdRank {
     let (rows, cols) = m.shape();
     if rows == 0 || cols == 0 {
