@@ -203,9 +203,14 @@ pub fn svd_rank(m: &DMatrix<f64>) -> SvdRank {
     svd_rank_above(m, 0.0)
 }
 
+/// Iterations the SVD of [`svd_rank_above`] may take (it converges in a few per singular
+/// value on finite input; the bound only stops a loop).
+pub const SVD_MAX_ITERATIONS: usize = 10_000;
+
 /// Like [`svd_rank`], but singular values up to `noise` (a bound on the Frobenius norm of
 /// the rounding error in the entries) also count as zero: a matrix made only of rounding
-/// noise then has rank 0 instead of full rank.
+/// noise then has rank 0 instead of full rank. A non-finite matrix, or one whose SVD does not
+/// converge within [`SVD_MAX_ITERATIONS`], has rank 0 and no singular values.
 pub fn svd_rank_above(m: &DMatrix<f64>, noise: f64) -> SvdRank {
     let (rows, cols) = m.shape();
     if rows == 0 || cols == 0 {
@@ -216,7 +221,22 @@ pub fn svd_rank_above(m: &DMatrix<f64>, noise: f64) -> SvdRank {
             condition: None,
         };
     }
-    let mut sv: Vec<f64> = m.clone().singular_values().iter().copied().collect();
+    // nalgebra's SVD can iterate forever on a non-finite matrix (or fail to converge): such a
+    // matrix has no numerical rank, and the iterations are bounded
+    let svd = m
+        .iter()
+        .all(|v| v.is_finite())
+        .then(|| nalgebra::SVD::try_new(m.clone(), false, false, f64::EPSILON, SVD_MAX_ITERATIONS))
+        .flatten();
+    let Some(svd) = svd else {
+        return SvdRank {
+            rank: 0,
+            tolerance: f64::INFINITY,
+            singular_values: Vec::new(),
+            condition: None,
+        };
+    };
+    let mut sv: Vec<f64> = svd.singular_values.iter().copied().collect();
     sv.sort_by(|a, b| b.total_cmp(a));
     let smax = sv.first().copied().unwrap_or(0.0);
     let tol = (smax * rows.max(cols) as f64 * f64::EPSILON).max(noise);

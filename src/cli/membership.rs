@@ -36,6 +36,10 @@ pub fn run(a: Args) -> Result<(), Error> {
         return Err(in_file(&a.input, Error::InvalidInput(d.to_string())));
     }
     let m = identity::membership(&t.frames[0], &t.frames[1], tolerance);
+    let inside: Vec<bool> = m.iter().map(|(i, _)| *i).collect();
+    if let Some(d) = identity::members_rigid(&t.frames[0], &t.frames[1], &inside, tolerance) {
+        return Err(in_file(&a.input, Error::InvalidInput(d.to_string())));
+    }
     let rows: Vec<MemberRow> = t
         .names
         .iter()

@@ -210,44 +210,116 @@ pub struct Assignment {
     pub residual: f64,
 }
 
+/// An assignment ordered by residual (total order), then by indices: the ranking's order.
+#[derive(PartialEq)]
+struct Ranked(Assignment);
+
+impl Eq for Ranked {}
+
+impl PartialOrd for Ranked {
+    fn partial_cmp(&self, other: &Self) -> Option<std::cmp::Ordering> {
+        Some(self.cmp(other))
+    }
+}
+
+impl Ord for Ranked {
+    fn cmp(&self, other: &Self) -> std::cmp::Ordering {
+        self.0
+            .residual
+            .total_cmp(&other.0.residual)
+            .then_with(|| self.0.frame2_indices.cmp(&other.0.frame2_indices))
+    }
+}
+
+/// The `top` best assignments kept while visiting: a max-heap of at most `top` entries, so
+/// memory is linear in what is kept, not in what is tried.
+#[derive(Default)]
+struct TopN {
+    heap: std::collections::BinaryHeap<Ranked>,
+    tried: usize,
+}
+
+impl TopN {
+    fn push(mut self, a: Assignment, top: usize) -> Self {
+        self.tried += 1;
+        if top == 0 {
+            return self;
+        }
+        let r = Ranked(a);
+        if self.heap.len() < top {
+            self.heap.push(r);
+        } else if self.heap.peek().is_some_and(|worst| r < *worst) {
+            self.heap.pop();
+            self.heap.push(r);
+        }
+        self
+    }
+
+    fn merge(mut self, other: TopN, top: usize) -> Self {
+        let tried = self.tried + other.tried;
+        for r in other.heap {
+            self = self.push(r.0, top);
+        }
+        self.tried = tried;
+        self
+    }
+
+    fn into_sorted(self) -> (Vec<Assignment>, usize) {
+        let v = self
+            .heap
+            .into_sorted_vec()
+            .into_iter()
+            .map(|r| r.0)
+            .collect();
+        (v, self.tried)
+    }
+}
+
+/// The `top` best of every ordered choice of four frame-2 points for frame-1 points 0‥3,
+/// n(n−1)(n−2)(n−3) of them, ranked by `residual` (best first, ties by indices), and how many
+/// were tried. Memory O(top) per thread.
+pub fn rank_quadruples_top(
+    f1: &[Vector2<f64>],
+    f2: &[Vector2<f64>],
+    residual: impl Fn(&[Vector2<f64>; 4], &[Vector2<f64>; 4]) -> f64 + Sync,
+    top: usize,
+) -> (Vec<Assignment>, usize) {
+    use rayon::prelude::*;
+    let n = f2.len();
+    if f1.len() < 4 || n < 4 {
+        return (Vec::new(), 0);
+    }
+    let first: [Vector2<f64>; 4] = std::array::from_fn(|i| f1[i]);
+    (0..n)
+        .into_par_iter()
+        .fold(TopN::default, |mut acc, a| {
+            for b in (0..n).filter(|b| *b != a) {
+                for c in (0..n).filter(|c| *c != a && *c != b) {
+                    for d in (0..n).filter(|d| *d != a && *d != b && *d != c) {
+                        let g = [f2[a], f2[b], f2[c], f2[d]];
+                        let x = Assignment {
+                            frame2_indices: vec![a, b, c, d],
+                            residual: residual(&first, &g),
+                        };
+                        acc = acc.push(x, top);
+                    }
+                }
+            }
+            acc
+        })
+        .reduce(TopN::default, |x, y| x.merge(y, top))
+        .into_sorted()
+}
+
 /// Every ordered choice of four frame-2 points for frame-1 points 0‥3, n(n−1)(n−2)(n−3) of
-/// them, ranked by `residual` (best first, ties by indices).
+/// them, ranked by `residual` (best first, ties by indices). Memory grows with n⁴: for small
+/// n; [`rank_quadruples_top`] keeps only the best.
 pub fn rank_quadruples(
     f1: &[Vector2<f64>],
     f2: &[Vector2<f64>],
     residual: impl Fn(&[Vector2<f64>; 4], &[Vector2<f64>; 4]) -> f64 + Sync,
 ) -> Vec<Assignment> {
-    use rayon::prelude::*;
-    let n = f2.len();
-    let first: [Vector2<f64>; 4] = std::array::from_fn(|i| f1[i]);
-    let mut all: Vec<Assignment> = (0..n)
-        .into_par_iter()
-        .flat_map_iter(|a| {
-            let first = &first;
-            let residual = &residual;
-            (0..n).filter(move |b| *b != a).flat_map(move |b| {
-                (0..n)
-                    .filter(move |c| *c != a && *c != b)
-                    .flat_map(move |c| {
-                        (0..n)
-                            .filter(move |d| *d != a && *d != b && *d != c)
-                            .map(move |d| {
-                                let g = [f2[a], f2[b], f2[c], f2[d]];
-                                Assignment {
-                                    frame2_indices: vec![a, b, c, d],
-                                    residual: residual(first, &g),
-                                }
-                            })
-                    })
-            })
-        })
-        .collect();
-    all.sort_by(|x, y| {
-        x.residual
-            .total_cmp(&y.residual)
-            .then_with(|| x.frame2_indices.cmp(&y.frame2_indices))
-    });
-    all
+    rank_quadruples_top(f1, f2, residual, usize::MAX).0
 }
 
 /// The best full correspondence: the best four-point assignment fixes the epipolar geometry;
@@ -255,14 +327,26 @@ pub fn rank_quadruples(
 /// assignment of the rest by those distances). The score is the RMS epipolar distance over
 /// all points, relative to the image size.
 pub fn full_correspondence(f1: &[Vector2<f64>], f2: &[Vector2<f64>]) -> Option<Assignment> {
-    let n = f1.len();
-    if n < 4 || f2.len() != n {
+    if f1.len() < 4 || f2.len() != f1.len() {
         return None;
     }
-    let best = rank_quadruples(f1, f2, |a, b| epipolar_residual(a, b))
+    let best = rank_quadruples_top(f1, f2, |a, b| epipolar_residual(a, b), 1)
+        .0
         .into_iter()
         .next()?;
-    let chosen = &best.frame2_indices;
+    extend_to_full(f1, f2, &best.frame2_indices)
+}
+
+/// [`full_correspondence`] from the best four-point assignment `chosen`, already found.
+fn extend_to_full(
+    f1: &[Vector2<f64>],
+    f2: &[Vector2<f64>],
+    chosen: &[usize],
+) -> Option<Assignment> {
+    let n = f1.len();
+    if n < 4 || f2.len() != n || chosen.len() != 4 {
+        return None;
+    }
     let g1: Vec<Vector2<f64>> = (0..4).map(|i| f1[i]).collect();
     let g2: Vec<Vector2<f64>> = chosen.iter().map(|&j| f2[j]).collect();
     let e = epipolar(&g1, &g2);
@@ -286,7 +370,7 @@ pub fn full_correspondence(f1: &[Vector2<f64>], f2: &[Vector2<f64>]) -> Option<A
         })
         .collect();
     let matched = hungarian(&cost);
-    let mut indices = chosen.clone();
+    let mut indices = chosen.to_vec();
     indices.extend(matched.iter().map(|&k| rest2[k]));
     let size = f2
         .iter()
@@ -465,48 +549,70 @@ pub fn identify(
     {
         return Err(crate::error::Error::InvalidInput(d.to_string()));
     }
+    // the same view (or a scaled copy) under every assignment: no question to answer
+    if let Some(d) = similar_frames(f1, f2) {
+        let d = match d {
+            TwoFrameDegenerate::IdenticalFrames => "the frames are the same view (an in-plane motion or a mirror of each other, under some assignment): every assignment fits".to_string(),
+            d => d.to_string(),
+        };
+        return Err(crate::error::Error::InvalidInput(d));
+    }
     let size = f2
         .iter()
         .map(|p| p.norm())
         .fold(f64::MIN_POSITIVE, f64::max);
-    let ranked = match method {
-        IdentifyMethod::Epipolar => rank_quadruples(f1, f2, |a, b| epipolar_residual(a, b)),
-        IdentifyMethod::Four => rank_quadruples(f1, f2, |a, b| {
-            smallest_c(a, b).map_or(f64::INFINITY, |c| {
-                paper_tests(a, b, c)
-                    .iter()
-                    .map(|t| t.distance / size)
-                    .fold(f64::INFINITY, f64::min)
-            })
-        }),
-        IdentifyMethod::Five => rank_quintuples(f1, f2),
+    let (ranked, tried) = match method {
+        IdentifyMethod::Epipolar => {
+            rank_quadruples_top(f1, f2, |a, b| epipolar_residual(a, b), top)
+        }
+        IdentifyMethod::Four => rank_quadruples_top(
+            f1,
+            f2,
+            |a, b| {
+                smallest_c(a, b).map_or(f64::INFINITY, |c| {
+                    paper_tests(a, b, c)
+                        .iter()
+                        .map(|t| t.distance / size)
+                        .fold(f64::INFINITY, f64::min)
+                })
+            },
+            top,
+        ),
+        IdentifyMethod::Five => rank_quintuples(f1, f2, top),
     };
-    let tried = ranked.len();
-    let full = full_correspondence(f1, f2);
+    // the epipolar ranking already found the four points the full correspondence starts from
+    let full = match (method, ranked.first()) {
+        (IdentifyMethod::Epipolar, Some(best)) => extend_to_full(f1, f2, &best.frame2_indices),
+        _ => full_correspondence(f1, f2),
+    };
     let degenerate = full.as_ref().and_then(|a| {
         let g2: Vec<Vector2<f64>> = a.frame2_indices.iter().map(|&j| f2[j]).collect();
-        degeneracy(f1, &g2)
+        rigidity(f1, &g2)
     });
     Ok(Identified {
         method,
-        assignments: ranked.into_iter().take(top).collect(),
+        assignments: ranked,
         tried,
         full,
         degenerate,
     })
 }
 
-/// Every ordered choice of five frame-2 points for frame-1 points 0‥4, by the five-point
-/// line distance (relative to the image size).
-fn rank_quintuples(f1: &[Vector2<f64>], f2: &[Vector2<f64>]) -> Vec<Assignment> {
+/// The `top` best ordered choices of five frame-2 points for frame-1 points 0‥4, by the
+/// five-point line distance (relative to the image size), and how many were tried; memory
+/// O(top) per thread.
+fn rank_quintuples(
+    f1: &[Vector2<f64>],
+    f2: &[Vector2<f64>],
+    top: usize,
+) -> (Vec<Assignment>, usize) {
+    use rayon::prelude::*;
     let n = f2.len();
     let first: [Vector2<f64>; 5] = std::array::from_fn(|i| f1[i]);
     let size = f2
         .iter()
         .map(|p| p.norm())
         .fold(f64::MIN_POSITIVE, f64::max);
-    let mut all = Vec::new();
-    let mut idx = [0usize; 5];
     fn rec(k: usize, n: usize, idx: &mut [usize; 5], visit: &mut dyn FnMut(&[usize; 5])) {
         if k == 5 {
             visit(idx);
@@ -519,20 +625,24 @@ fn rank_quintuples(f1: &[Vector2<f64>], f2: &[Vector2<f64>]) -> Vec<Assignment> 
             }
         }
     }
-    rec(0, n, &mut idx, &mut |c| {
-        let g: [Vector2<f64>; 5] = std::array::from_fn(|i| f2[c[i]]);
-        all.push(Assignment {
-            frame2_indices: c.to_vec(),
-            residual: super::identity5::line_distance(&first, &g)
-                .map_or(f64::INFINITY, |d| d / size),
-        });
-    });
-    all.sort_by(|x, y| {
-        x.residual
-            .total_cmp(&y.residual)
-            .then_with(|| x.frame2_indices.cmp(&y.frame2_indices))
-    });
-    all
+    (0..n)
+        .into_par_iter()
+        .fold(TopN::default, |acc, a| {
+            let mut acc = Some(acc);
+            let mut idx = [a, 0, 0, 0, 0];
+            rec(1, n, &mut idx, &mut |c| {
+                let g: [Vector2<f64>; 5] = std::array::from_fn(|i| f2[c[i]]);
+                let x = Assignment {
+                    frame2_indices: c.to_vec(),
+                    residual: super::identity5::line_distance(&first, &g)
+                        .map_or(f64::INFINITY, |d| d / size),
+                };
+                acc = acc.take().map(|t| t.push(x, top));
+            });
+            acc.unwrap_or_default()
+        })
+        .reduce(TopN::default, |x, y| x.merge(y, top))
+        .into_sorted()
 }
 
 /// Two frames the identity and membership tests cannot use as they are.
@@ -546,6 +656,15 @@ pub enum TwoFrameDegenerate {
     /// The frames differ by an in-plane motion only: every distance is kept, the views are
     /// the same, and every point is on its epipolar line whatever the assignment.
     IdenticalFrames,
+    /// Frame 2 is a mirror image of frame 1 (up to an in-plane motion): the same viewing line
+    /// seen from the other side, so again the same view.
+    Mirror,
+    /// Frame 2 is a scaled copy of frame 1 (up to an in-plane motion): orthographic views of
+    /// one rigid body have one scale, so no rigid body gives these frames.
+    ScaledFrames,
+    /// No rigid body gives these frames: they fit no affine epipolar geometry of two views at
+    /// equal scale.
+    NotRigid,
     /// The best assignment leaves the epipolar geometry undetermined (a planar body).
     Planar,
 }
@@ -558,6 +677,15 @@ impl std::fmt::Display for TwoFrameDegenerate {
             TwoFrameDegenerate::IdenticalFrames => {
                 "the frames differ by an in-plane motion only: the two views are the same"
             }
+            TwoFrameDegenerate::Mirror => {
+                "frame 2 is a mirror image of frame 1: the same viewing line from the other side, the two views are the same"
+            }
+            TwoFrameDegenerate::ScaledFrames => {
+                "frame 2 is a scaled copy of frame 1: orthographic views of one rigid body have one scale, no rigid body gives these frames"
+            }
+            TwoFrameDegenerate::NotRigid => {
+                "no rigid body gives these frames: they fit no epipolar geometry of two orthographic views at equal scale"
+            }
             TwoFrameDegenerate::Planar => {
                 "the body is planar: the epipolar geometry is undetermined and several assignments may fit"
             }
@@ -565,8 +693,59 @@ impl std::fmt::Display for TwoFrameDegenerate {
     }
 }
 
+/// The largest distance of a point from the frames' centroids, the size rounding is judged by.
+fn size_of(f1: &[Vector2<f64>], f2: &[Vector2<f64>]) -> f64 {
+    let c = |f: &[Vector2<f64>]| f.iter().sum::<Vector2<f64>>() / f.len().max(1) as f64;
+    let (c1, c2) = (c(f1), c(f2));
+    f1.iter()
+        .map(|p| (p - c1).norm())
+        .chain(f2.iter().map(|q| (q - c2).norm()))
+        .fold(f64::MIN_POSITIVE, f64::max)
+}
+
+/// The affine map A of frame 2 onto frame 1 (centred, least squares: Σqpᵀ (Σppᵀ)⁻¹) and the
+/// condition number of Σppᵀ; `None` when frame 1's points are collinear.
+fn affine_map(f1: &[Vector2<f64>], f2: &[Vector2<f64>]) -> Option<(nalgebra::Matrix2<f64>, f64)> {
+    let n = f1.len().max(1) as f64;
+    let c1 = f1.iter().sum::<Vector2<f64>>() / n;
+    let c2 = f2.iter().sum::<Vector2<f64>>() / n;
+    let mut pp = nalgebra::Matrix2::zeros();
+    let mut qp = nalgebra::Matrix2::zeros();
+    for (p, q) in f1.iter().zip(f2) {
+        let (p, q) = (p - c1, q - c2);
+        pp += p * p.transpose();
+        qp += q * p.transpose();
+    }
+    let sv = pp.singular_values();
+    let cond = sv.max() / sv.min();
+    Some((qp * pp.try_inverse()?, cond))
+}
+
+/// Frames related by an affine map A (the epipolar geometry undetermined): two orthographic
+/// views of a planar body have A = M₂M₁⁻¹ with each Mᵢ a 2×2 matrix of singular values 1 and
+/// |cos θᵢ|, possible exactly when A's singular values s₁ ≥ s₂ straddle 1 (s₂ ≤ 1 ≤ s₁).
+/// Both above or both below 1 (a scaled copy) is no rigid body. Tolerance: 64ε·κ(Σppᵀ),
+/// the relative rounding the normal equations of A can leave.
+fn affine_degeneracy(f1: &[Vector2<f64>], f2: &[Vector2<f64>]) -> TwoFrameDegenerate {
+    let Some((a, cond)) = affine_map(f1, f2) else {
+        return TwoFrameDegenerate::Planar;
+    };
+    let tol = crate::algebra::NEGLIGIBLE_ULPS * f64::EPSILON * cond;
+    let sv = a.singular_values();
+    let (s1, s2) = (sv.max(), sv.min());
+    if s2 <= 1.0 + tol && s1 >= 1.0 - tol {
+        TwoFrameDegenerate::Planar
+    } else if (s1 - s2) <= tol * s1 {
+        TwoFrameDegenerate::ScaledFrames
+    } else {
+        TwoFrameDegenerate::NotRigid
+    }
+}
+
 /// What makes two frames unusable (or weaker) for the tests, if anything; `planar` is
-/// judged for the correspondence given.
+/// judged for the correspondence given. Order: too few points, coincident points, the same
+/// view (in-plane motion, mirror), an affine relation (a planar body, or a scaled copy or
+/// other affine image no rigid body gives).
 pub fn degeneracy(f1: &[Vector2<f64>], f2: &[Vector2<f64>]) -> Option<TwoFrameDegenerate> {
     let n = f1.len();
     if n < 4 || f2.len() != n {
@@ -587,19 +766,109 @@ pub fn degeneracy(f1: &[Vector2<f64>], f2: &[Vector2<f64>]) -> Option<TwoFrameDe
             }
         }
     }
+    // each squared distance judged against the frames' size squared: a short distance carries
+    // the rounding of the coordinates, not of itself
+    let size2 = 4.0 * size_of(f1, f2).powi(2);
     let same = (0..n).all(|i| {
         (i + 1..n).all(|j| {
             let (a, b) = (
                 (f1[i] - f1[j]).norm_squared(),
                 (f2[i] - f2[j]).norm_squared(),
             );
-            crate::algebra::negligible(a - b, a + b)
+            crate::algebra::negligible(a - b, size2)
         })
     });
     if same {
-        return Some(TwoFrameDegenerate::IdenticalFrames);
+        // the orthogonal map between congruent frames: a rotation or a reflection
+        let mirror = affine_map(f1, f2).is_some_and(|(a, _)| a.determinant() < 0.0);
+        return Some(if mirror {
+            TwoFrameDegenerate::Mirror
+        } else {
+            TwoFrameDegenerate::IdenticalFrames
+        });
     }
-    (!epipolar(f1, f2).determined).then_some(TwoFrameDegenerate::Planar)
+    (!epipolar(f1, f2).determined).then(|| affine_degeneracy(f1, f2))
+}
+
+/// [`degeneracy`], then whether one rigid body can give the two frames at all: the centred
+/// rows (x₁, y₁, x₂, y₂) must have a null vector (the affine epipolar constraint; automatic
+/// for four points) with a² + b² = c² + d² (equal scale). Rounding allowance: the null
+/// vector of the Gram matrix G moves by at most ‖δG‖/(λ₁ − λ₀) with ‖δG‖ ≤ 64ε·λ₃ (Davis–
+/// Kahan), and the form a² + b² − c² − d² of a unit vector by at most twice that; the
+/// smallest eigenvalue itself must be below what rounding leaves ([`epipolar`]'s zero).
+pub fn rigidity(f1: &[Vector2<f64>], f2: &[Vector2<f64>]) -> Option<TwoFrameDegenerate> {
+    if let Some(d) = degeneracy(f1, f2) {
+        return Some(d);
+    }
+    let e = epipolar(f1, f2);
+    let [l0, l1, _, l3] = e.eigenvalues;
+    let u = crate::algebra::NEGLIGIBLE_ULPS * f64::EPSILON;
+    let rounding = u * size_of(f1, f2);
+    let zero = (4.0 * f1.len() as f64 * rounding * rounding).max(u * l3);
+    let scale_allowance = 2.0 * u * l3 / (l1 - l0).max(f64::MIN_POSITIVE);
+    (l0 > zero || e.scale_residual.abs() > scale_allowance).then_some(TwoFrameDegenerate::NotRigid)
+}
+
+/// Whether the members of a membership decision are views of one rigid body at equal scale:
+/// the equal-scale residual of their epipolar geometry within the larger of `tolerance` (the
+/// relative distance the user allows) and the rounding allowance of [`rigidity`]. `None` when
+/// they are; the degenerate case otherwise.
+pub fn members_rigid(
+    f1: &[Vector2<f64>],
+    f2: &[Vector2<f64>],
+    members: &[bool],
+    tolerance: f64,
+) -> Option<TwoFrameDegenerate> {
+    let pick = |f: &[Vector2<f64>]| -> Vec<Vector2<f64>> {
+        f.iter()
+            .zip(members)
+            .filter(|(_, m)| **m)
+            .map(|(p, _)| *p)
+            .collect()
+    };
+    let (g1, g2) = (pick(f1), pick(f2));
+    if g1.len() < 4 {
+        return None;
+    }
+    let e = epipolar(&g1, &g2);
+    let [l0, l1, _, l3] = e.eigenvalues;
+    let allowance = 2.0 * crate::algebra::NEGLIGIBLE_ULPS * f64::EPSILON * l3
+        / (l1 - l0).max(f64::MIN_POSITIVE);
+    (e.determined && e.scale_residual.abs() > allowance.max(tolerance))
+        .then_some(TwoFrameDegenerate::NotRigid)
+}
+
+/// Two frames of points in unknown correspondence that are the same view (congruent: an
+/// in-plane motion or a mirror) or a scaled copy: the sorted pairwise squared distances of
+/// frame 2 are λ² times frame 1's, within rounding. Correspondence-free, O(n² log n).
+pub fn similar_frames(f1: &[Vector2<f64>], f2: &[Vector2<f64>]) -> Option<TwoFrameDegenerate> {
+    let sorted = |f: &[Vector2<f64>]| {
+        let mut d: Vec<f64> = (0..f.len())
+            .flat_map(|i| (i + 1..f.len()).map(move |j| (f[i] - f[j]).norm_squared()))
+            .collect();
+        d.sort_by(f64::total_cmp);
+        d
+    };
+    let (d1, d2) = (sorted(f1), sorted(f2));
+    let (s1, s2): (f64, f64) = (d1.iter().sum(), d2.iter().sum());
+    if d1.len() != d2.len() || s1 == 0.0 || s2 == 0.0 {
+        return None;
+    }
+    let l2 = s2 / s1;
+    // judged against the largest squared distance (the coordinates' rounding sets the noise)
+    let big = d2.last().copied().unwrap_or(0.0) + l2 * d1.last().copied().unwrap_or(0.0);
+    let similar = d1
+        .iter()
+        .zip(&d2)
+        .all(|(a, b)| crate::algebra::negligible(b - l2 * a, big));
+    if !similar {
+        return None;
+    }
+    Some(if crate::algebra::negligible(l2 - 1.0, 1.0 + l2) {
+        TwoFrameDegenerate::IdenticalFrames
+    } else {
+        TwoFrameDegenerate::ScaledFrames
+    })
 }
 
 #[cfg(test)]

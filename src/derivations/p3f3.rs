@@ -265,6 +265,9 @@ pub fn solve(input: &SquaredLengths) -> Result<SolverOutput> {
             input.frames.len()
         )));
     }
+    if let Some(d) = super::degenerate::classify(input, 3) {
+        return Ok(SolverOutput::degenerate("p3f3", input, d));
+    }
     let l: [[f64; 3]; 3] = std::array::from_fn(|i| std::array::from_fn(|e| input.frames[i][e]));
     let core = solve_core(&l);
     let solutions = (0..core.count)
@@ -299,72 +302,158 @@ pub struct Reconstruction {
     pub reprojection_error: f64,
 }
 
+/// Frames of three points whose depth-sign patterns [`reconstructions`] lists one by one
+/// (2^(k−1) of them); beyond, [`motion_summary`] counts them in closed form.
+pub const MAX_LISTED_FRAMES: usize = 16;
+
+/// Frames of three points whose structure-and-motion solutions [`motion_summary`] can count:
+/// 2^(k−1) must fit in 64 bits (and twice it, with the mirror reversal, in 128).
+pub const MAX_COUNTED_FRAMES: usize = 64;
+
+/// P, Q, R in frame `i`'s camera coordinates for depth sign `s`: the depth differences are
+/// ±√(e² − eᵢ²) with the sign pattern of the relation that holds (the smallest
+/// |s_a√A + s_b√B + s_c√C|), up to the global sign `s`.
+fn camera(f: &[nalgebra::Vector2<f64>], squares: &[f64; 3], s: f64) -> Option<[Vector3<f64>; 3]> {
+    let proj = [0, 1, 2].map(|e| {
+        let (a, b) = [(0, 1), (1, 2), (2, 0)][e];
+        (f[a] - f[b]).norm_squared()
+    });
+    let roots: [f64; 3] = std::array::from_fn(|e| (squares[e] - proj[e]).max(0.0).sqrt());
+    let patterns = [[1.0, 1.0, -1.0], [1.0, -1.0, 1.0], [-1.0, 1.0, 1.0]];
+    let r = |p: &[f64; 3]| (p[0] * roots[0] + p[1] * roots[1] + p[2] * roots[2]).abs();
+    let best = patterns.iter().min_by(|p, q| r(p).total_cmp(&r(q)))?;
+    let zq = s * best[0] * roots[0];
+    let zr = zq + s * best[1] * roots[1];
+    let o = f[0];
+    Some([
+        Vector3::new(0.0, 0.0, 0.0),
+        Vector3::new(f[1].x - o.x, f[1].y - o.y, zq),
+        Vector3::new(f[2].x - o.x, f[2].y - o.y, zr),
+    ])
+}
+
+/// Per later frame and depth sign (+1, −1): the rotation taking frame 1's body onto that
+/// frame's, and the frame's reprojection error relative to the largest edge. A pattern's
+/// error is the largest of its frames' errors, so every count and best choice over the
+/// 2^(k−1) patterns follows from these 2(k − 1) numbers.
+#[allow(clippy::type_complexity)]
+fn per_frame(
+    tracks: &Tracks,
+    squares: &[f64; 3],
+) -> Result<Option<([Vector3<f64>; 3], Vec<[(Rotation3<f64>, f64); 2]>)>> {
+    if tracks.points() != 3 {
+        return Err(Error::InvalidInput("reconstruction needs 3 points".into()));
+    }
+    let scale = squares.iter().fold(0.0_f64, |a, b| a.max(*b)).sqrt();
+    let Some(first) = camera(&tracks.frames[0], squares, 1.0) else {
+        return Ok(None);
+    };
+    let mut frames = Vec::with_capacity(tracks.frames.len());
+    for f in &tracks.frames[1..] {
+        let mut pair = [(Rotation3::identity(), 0.0); 2];
+        for (slot, s) in pair.iter_mut().zip([1.0, -1.0]) {
+            let Some(target) = camera(f, squares, s) else {
+                return Ok(None);
+            };
+            let r = kabsch(&first, &target);
+            let err = (0..3)
+                .map(|j| {
+                    let (y, t) = (r * first[j], target[j]);
+                    ((y.x - t.x).powi(2) + (y.y - t.y).powi(2)).sqrt() / scale
+                })
+                .fold(0.0, f64::max);
+            *slot = (r, err);
+        }
+        frames.push(pair);
+    }
+    Ok(Some((first, frames)))
+}
+
 /// All structure-and-motion solutions behind one feasible edge solution: in each frame the
 /// depth differences are ±√(e² − eᵢ²) with the sign pattern of the relation that holds, and
 /// the whole pattern may flip (a reflection of that frame's triangle through the image plane).
 /// A planar triangle can be rotated onto its mirror image, so every combination of flips is a
-/// rigid motion: 2^k solutions, 2^(k−1) up to the global mirror reversal.
+/// rigid motion: 2^k solutions, 2^(k−1) up to the global mirror reversal. Listed one by one
+/// for at most [`MAX_LISTED_FRAMES`] frames (an error beyond: use [`motion_summary`]).
 pub fn reconstructions(tracks: &Tracks, squares: &[f64; 3]) -> Result<Vec<Reconstruction>> {
-    if tracks.points() != 3 {
-        return Err(Error::InvalidInput("reconstruction needs 3 points".into()));
-    }
     let k = tracks.frames.len();
-    let scale = squares.iter().fold(0.0_f64, |a, b| a.max(*b)).sqrt();
-    // camera-frame coordinates of P, Q, R in frame i for depth sign s
-    let camera = |i: usize, s: f64| -> Option<[Vector3<f64>; 3]> {
-        let f = &tracks.frames[i];
-        let proj = [0, 1, 2].map(|e| {
-            let (a, b) = [(0, 1), (1, 2), (2, 0)][e];
-            (f[a] - f[b]).norm_squared()
-        });
-        let roots: Vec<f64> = (0..3)
-            .map(|e| (squares[e] - proj[e]).max(0.0).sqrt())
-            .collect();
-        // the pattern with the smallest |s_a√A + s_b√B + s_c√C|, up to a global sign
-        let patterns = [[1.0, 1.0, -1.0], [1.0, -1.0, 1.0], [-1.0, 1.0, 1.0]];
-        let best = patterns.iter().min_by(|p, q| {
-            let r = |p: &[f64; 3]| (p[0] * roots[0] + p[1] * roots[1] + p[2] * roots[2]).abs();
-            r(p).total_cmp(&r(q))
-        })?;
-        let zq = s * best[0] * roots[0];
-        let zr = zq + s * best[1] * roots[1];
-        let o = f[0];
-        Some([
-            Vector3::new(0.0, 0.0, 0.0),
-            Vector3::new(f[1].x - o.x, f[1].y - o.y, zq),
-            Vector3::new(f[2].x - o.x, f[2].y - o.y, zr),
-        ])
-    };
-    let Some(first) = camera(0, 1.0) else {
+    if k > MAX_LISTED_FRAMES {
+        return Err(Error::InvalidInput(format!(
+            "{k} frames: listing all 2^{} depth-sign patterns is refused beyond {MAX_LISTED_FRAMES} frames",
+            k - 1
+        )));
+    }
+    let Some((first, frames)) = per_frame(tracks, squares)? else {
         return Ok(Vec::new());
     };
-    let mut out = Vec::new();
-    for mask in 0..(1u32 << (k - 1)) {
-        let mut signs = vec![1i8];
-        let mut rotations = vec![Rotation3::identity()];
-        let mut err: f64 = 0.0;
-        for i in 1..k {
-            let s = if mask >> (i - 1) & 1 == 1 { -1.0 } else { 1.0 };
-            signs.push(s as i8);
-            let Some(target) = camera(i, s) else {
-                return Ok(Vec::new());
-            };
-            let r = kabsch(&first, &target);
-            for j in 0..3 {
-                let y = r * first[j];
-                let t = target[j];
-                err = err.max(((y.x - t.x).powi(2) + (y.y - t.y).powi(2)).sqrt() / scale);
+    Ok((0..1usize << (k - 1))
+        .map(|mask| {
+            let mut signs = vec![1i8];
+            let mut rotations = vec![Rotation3::identity()];
+            let mut err: f64 = 0.0;
+            for (i, pair) in frames.iter().enumerate() {
+                let b = mask >> i & 1;
+                signs.push(if b == 1 { -1 } else { 1 });
+                rotations.push(pair[b].0);
+                err = err.max(pair[b].1);
             }
-            rotations.push(r);
-        }
-        out.push(Reconstruction {
+            Reconstruction {
+                points: first,
+                rotations,
+                depth_signs: signs,
+                reprojection_error: err,
+            }
+        })
+        .collect())
+}
+
+/// The structure-and-motion solutions behind one edge solution, counted without listing them.
+#[derive(Clone, Debug, PartialEq)]
+pub struct MotionSummary {
+    /// The pattern of least reprojection error (each frame's better sign).
+    pub best: Reconstruction,
+    /// Patterns whose every frame reprojects within `threshold`: the product over frames of
+    /// the signs that do (0, 1 or 2 each), i.e. 0 or a power of two up to 2^(k−1).
+    pub reprojecting: u64,
+}
+
+/// [`reconstructions`] in closed form: linear in the frames, for up to [`MAX_COUNTED_FRAMES`].
+pub fn motion_summary(
+    tracks: &Tracks,
+    squares: &[f64; 3],
+    threshold: f64,
+) -> Result<Option<MotionSummary>> {
+    let k = tracks.frames.len();
+    if k > MAX_COUNTED_FRAMES {
+        return Err(Error::InvalidInput(format!(
+            "{k} frames of three points: their 2^{} structure-and-motion solutions are counted for at most {MAX_COUNTED_FRAMES} frames",
+            k - 1
+        )));
+    }
+    let Some((first, frames)) = per_frame(tracks, squares)? else {
+        return Ok(None);
+    };
+    let mut signs = vec![1i8];
+    let mut rotations = vec![Rotation3::identity()];
+    let mut err: f64 = 0.0;
+    let mut count: u64 = 1;
+    for pair in &frames {
+        let b = usize::from(pair[1].1 < pair[0].1);
+        signs.push(if b == 1 { -1 } else { 1 });
+        rotations.push(pair[b].0);
+        err = err.max(pair[b].1);
+        // at most 63 doublings (k ≤ 64): no overflow
+        count *= pair.iter().filter(|(_, e)| *e <= threshold).count() as u64;
+    }
+    Ok(Some(MotionSummary {
+        best: Reconstruction {
             points: first,
             rotations,
             depth_signs: signs,
             reprojection_error: err,
-        });
-    }
-    Ok(out)
+        },
+        reprojecting: count,
+    }))
 }
 
 /// The proper rotation that best maps `from` onto `to` (shared Procrustes kernel).

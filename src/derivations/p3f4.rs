@@ -90,6 +90,9 @@ pub fn solve(input: &SquaredLengths) -> Result<SolverOutput> {
             input.frames.len()
         )));
     }
+    if let Some(d) = super::degenerate::classify(input, 4) {
+        return Ok(SolverOutput::degenerate("p3f4", input, d));
+    }
     let sys = system(input);
     let rank = svd_rank_above(&sys.m, sys.noise_m);
     let mut out = SolverOutput {
@@ -151,7 +154,7 @@ mod tests {
     }
 
     #[test]
-    fn rotation_about_the_viewing_axis_only_is_too_special() {
+    fn rotation_about_the_viewing_axis_only_is_the_same_view() {
         let mut scene = Scene::random(3, 4, 5);
         for i in 1..4 {
             scene.motions[i] = Motion {
@@ -160,10 +163,17 @@ mod tests {
             };
         }
         let out = solve(&SquaredLengths::from_tracks(&scene.tracks())).unwrap();
-        assert!(matches!(
+        // frames 2‥4 differ by in-plane turns only: two distinct views, four needed
+        assert_eq!(
             out.degenerate,
-            Some(Degenerate::SpecialMotion { rank: 0, .. })
-        ));
+            Some(Degenerate::IdenticalFrames {
+                first: 1,
+                second: 2
+            })
+        );
         assert!(out.solutions.is_empty());
+        // the system itself has rank 0 there (the special motion of §3)
+        let sys = system(&SquaredLengths::from_tracks(&scene.tracks()));
+        assert_eq!(svd_rank_above(&sys.m, sys.noise_m).rank, 0);
     }
 }

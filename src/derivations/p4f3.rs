@@ -336,7 +336,24 @@ fn finish(
         .iter()
         .fold(f64::MIN_POSITIVE, |a, v| a.max(v.abs()));
     let smin = rank.smin;
-    let real = realize(&squares, input.names.len());
+    let bound = (noise_m * x.norm() + noise_b) / smin;
+    let mut real = realize(&squares, input.names.len());
+    // the Gram entries (s₀ᵢ + s₀ⱼ − sᵢⱼ)/2 carry up to 1.5 × the squares' error bound, so its
+    // eigenvalues move by at most (p − 1)·1.5·bound: a rank above 3 within that is rounding
+    let slack = (input.names.len() - 1) as f64 * 1.5 * bound;
+    if !real.realizable
+        && real
+            .eigenvalues
+            .iter()
+            .all(|v| *v >= -real.floor.max(slack))
+        && real
+            .eigenvalues
+            .iter()
+            .skip(3)
+            .all(|v| *v <= real.floor.max(slack))
+    {
+        real.realizable = true;
+    }
     let mut feas = feasibility(&squares, &vec![0.0; squares.len()], input);
     if feas.is_feasible() && !real.realizable {
         feas = Feasibility::NotRealizable {
@@ -346,7 +363,7 @@ fn finish(
     out.solutions.push(Solution {
         feasibility: feas,
         residual: residual(&x) / (scale * scale),
-        error_bound: Some((noise_m * x.norm() + noise_b) / smin),
+        error_bound: Some(bound),
         imaginary: vec![0.0; squares.len()],
         squared_edges: squares,
     });
@@ -361,6 +378,9 @@ pub fn solve(input: &SquaredLengths) -> Result<SolverOutput> {
             input.names.len(),
             input.frames.len()
         )));
+    }
+    if let Some(d) = super::degenerate::classify(input, 3) {
+        return Ok(SolverOutput::degenerate("p4f3", input, d));
     }
     let l: [[f64; 6]; 3] = std::array::from_fn(|i| std::array::from_fn(|e| input.frames[i][e]));
     let (a, b) = paper_system(&l);
@@ -402,9 +422,31 @@ pub fn general_system(input: &SquaredLengths) -> (DMatrix<f64>, DVector<f64>) {
     (m, b)
 }
 
-/// The least-squares solver for p ≥ 4 points in k ≥ 3 frames over every triangle and frame:
-/// the normal equations, assembled row by row (each row has three entries), solved by
-/// Cholesky; rank and condition from the eigenvalues of AᵀA (σᵢ = √λᵢ).
+/// Points the least-squares form takes: its p(p − 1)/2 unknowns make a dense normal matrix
+/// of (p(p − 1)/2)² entries factorised in O(p⁶); 60 points are 1770 unknowns, a 25 MB matrix
+/// and about 2·10⁹ operations (well under a second).
+pub const MAX_LSQ_POINTS: usize = 60;
+
+/// The triangles the least-squares form uses: every triangle through point 0 or point 1,
+/// (p − 1)(p − 2)/2 + (p − 2)(p − 3)/2 of them, linear in the p(p − 1)/2 unknowns (every
+/// triangle would be O(p³)). Every edge is in one at least; the edges from point 0 (and 1)
+/// tie the triangles together as T's edges do in the paper's PQT, QRT, RPT.
+pub fn lsq_triangles(p: usize) -> Vec<Triangle> {
+    let mut t = Vec::new();
+    for a in 0..p.min(2) {
+        for i in a + 1..p {
+            for j in i + 1..p {
+                t.push([edge_index(a, i), edge_index(i, j), edge_index(j, a)]);
+            }
+        }
+    }
+    t
+}
+
+/// The least-squares solver for p ≥ 4 points in k ≥ 3 frames over the triangles of
+/// [`lsq_triangles`] and every later frame: the normal equations, assembled row by row (each
+/// row has three entries, no row is stored), solved by Cholesky; rank and condition from the
+/// eigenvalues of AᵀA (σᵢ = √λᵢ). More than [`MAX_LSQ_POINTS`] points are refused.
 pub fn solve_least_squares(input: &SquaredLengths) -> Result<SolverOutput> {
     let (p, k) = (input.names.len(), input.frames.len());
     if p < 4 || k < 3 {
@@ -412,25 +454,32 @@ pub fn solve_least_squares(input: &SquaredLengths) -> Result<SolverOutput> {
             "the least-squares form needs at least 4 points in 3 frames, got {p} points in {k} frames"
         )));
     }
+    if p > MAX_LSQ_POINTS {
+        return Err(Error::InvalidInput(format!(
+            "{p} points: the least-squares form solves for every one of the p(p − 1)/2 squared edges and takes at most {MAX_LSQ_POINTS} points"
+        )));
+    }
+    if let Some(d) = super::degenerate::classify(input, 3) {
+        return Ok(SolverOutput::degenerate("lsq", input, d));
+    }
     let n = input.edges.len();
-    let tris = all_triangles(p);
+    let tris = lsq_triangles(p);
     let rows = tris.len() * (k - 1);
-    // every row once (three coefficients, a constant, the triangle), frame 1's equations
-    // computed once per triangle
     let pick = |f: &[f64], t: &Triangle| FrameCoefficients::new([f[t[0]], f[t[1]], f[t[2]]]);
     let base: Vec<FrameCoefficients> = tris.iter().map(|t| pick(&input.frames[0], t)).collect();
-    let all_rows: Vec<([f64; 3], f64, Triangle)> = (1..k)
-        .flat_map(|frame| {
-            tris.iter().zip(&base).map(move |(t, b0)| {
-                let (c, kc) = pick(&input.frames[frame], t).difference(b0);
-                (c, kc, *t)
-            })
-        })
-        .collect();
+    // every row (three coefficients, a constant, the triangle), computed when visited
+    let each_row = |visit: &mut dyn FnMut(&[f64; 3], f64, &Triangle)| {
+        for frame in &input.frames[1..] {
+            for (t, b0) in tris.iter().zip(&base) {
+                let (c, kc) = pick(frame, t).difference(b0);
+                visit(&c, kc, t);
+            }
+        }
+    };
     // AᵀA by rows of three entries: the upper triangle (column-major), then mirrored
     let mut upper = vec![0.0; n * n];
     let mut atb = DVector::<f64>::zeros(n);
-    for (c, kc, tri) in &all_rows {
+    each_row(&mut |c, kc, tri| {
         for a in 0..3 {
             for b in 0..3 {
                 let (i, j) = (tri[a], tri[b]);
@@ -440,18 +489,39 @@ pub fn solve_least_squares(input: &SquaredLengths) -> Result<SolverOutput> {
             }
             atb[tri[a]] += c[a] * kc;
         }
-    }
+    });
     let ata = DMatrix::from_fn(n, n, |i, j| upper[i.max(j) * n + i.min(j)]);
+    drop(upper);
     let (noise_m, noise_b) = noise(input, rows);
     let chol = ata.clone().cholesky();
+    let rank = lsq_rank(&ata, chol.as_ref(), noise_m);
+    let x = chol.map(|c| c.solve(&(-&atb)));
+    // the residual row by row: the dense system is never built
+    let residual = |x: &DVector<f64>| {
+        let mut worst: f64 = 0.0;
+        each_row(&mut |c, kc, t| {
+            worst = worst.max((c[0] * x[t[0]] + c[1] * x[t[1]] + c[2] * x[t[2]] + kc).abs());
+        });
+        worst
+    };
+    Ok(finish(input, "lsq", n, x, residual, rank, noise_m, noise_b))
+}
+
+/// Rank and condition of A from AᵀA and its Cholesky factor, when there is one.
+fn lsq_rank(
+    ata: &DMatrix<f64>,
+    chol: Option<&nalgebra::Cholesky<f64, nalgebra::Dyn>>,
+    noise_m: f64,
+) -> Rank {
+    let n = ata.nrows();
     // σ below the noise of the matrix, or below what squaring into AᵀA can resolve
     let floor_for = |smax: f64| noise_m.max(smax * (n as f64 * f64::EPSILON).sqrt() * 8.0);
-    let rank = match &chol {
+    match chol {
         // positive definite: the extreme singular values by Lanczos on AᵀA and on its
         // inverse (Cholesky solves), O(n²) per step instead of a full eigendecomposition
         Some(c) => {
             // 1e-10: the condition number is shown to six digits
-            let lmax = largest_eigenvalue(|v| &ata * v, n, 1e-10);
+            let lmax = largest_eigenvalue(|v| ata * v, n, 1e-10);
             let lmin = 1.0 / largest_eigenvalue(|v| c.solve(v), n, 1e-10);
             let (smax, smin) = (lmax.max(0.0).sqrt(), lmin.max(0.0).sqrt());
             let full = smin > floor_for(smax);
@@ -459,27 +529,18 @@ pub fn solve_least_squares(input: &SquaredLengths) -> Result<SolverOutput> {
                 rank: if full {
                     n
                 } else {
-                    rank_by_eigen(&ata, &floor_for)
+                    rank_by_eigen(ata, &floor_for)
                 },
                 condition: full.then(|| smax / smin),
                 smin,
             }
         }
         None => Rank {
-            rank: rank_by_eigen(&ata, &floor_for),
+            rank: rank_by_eigen(ata, &floor_for),
             condition: None,
             smin: 0.0,
         },
-    };
-    let x = chol.map(|c| c.solve(&(-&atb)));
-    // the residual row by row: the dense system is never built
-    let residual = |x: &DVector<f64>| {
-        all_rows
-            .iter()
-            .map(|(c, kc, t)| (c[0] * x[t[0]] + c[1] * x[t[1]] + c[2] * x[t[2]] + kc).abs())
-            .fold(0.0, f64::max)
-    };
-    Ok(finish(input, "lsq", n, x, residual, rank, noise_m, noise_b))
+    }
 }
 
 /// The rank analysis a solution needs.
@@ -638,12 +699,14 @@ mod tests {
                 translation: Vector2::new(0.1, 0.2),
             };
         }
+        // frames 2 and 3 differ by an in-plane turn only: the same view, named before the rank
         let out = solve(&SquaredLengths::from_tracks(&turn.tracks())).unwrap();
-        assert!(
-            matches!(
-                out.degenerate,
-                Some(Degenerate::SpecialMotion { unknowns: 6, .. })
-            ),
+        assert_eq!(
+            out.degenerate,
+            Some(Degenerate::IdenticalFrames {
+                first: 1,
+                second: 2
+            }),
             "{out:?}"
         );
         assert!(out.solutions.is_empty());

@@ -112,6 +112,12 @@ pub enum Feasibility {
         /// The most negative eigenvalue.
         eigenvalue: f64,
     },
+    /// The squared edges satisfy the equations but no rigid motion reprojects their body onto
+    /// the tracks (frames that no rigid body gives, e.g. one scaled, or noisy tracks).
+    NoMotionReprojects {
+        /// The best reprojection error found, relative to the largest edge.
+        error: f64,
+    },
     /// An edge is shorter than its projection in some frame.
     ShorterThanProjection {
         /// The edge.
@@ -136,6 +142,10 @@ impl Feasibility {
             Feasibility::NotRealizable { eigenvalue } => format!(
                 "not realizable in 3-D (Gram eigenvalue {})",
                 crate::numfmt::sig(*eigenvalue)
+            ),
+            Feasibility::NoMotionReprojects { error } => format!(
+                "no rigid motion reprojects it (best reprojection error {})",
+                crate::numfmt::sig(*error)
             ),
             Feasibility::ShorterThanProjection { edge, frame } => {
                 format!("{edge} is shorter than its projection in frame {frame}")
@@ -204,11 +214,34 @@ pub struct Solution {
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "kebab-case")]
 pub enum Degenerate {
+    /// Two points have exactly the same image in every frame (a point listed twice): their
+    /// edge is zero and the body has fewer points than named.
+    DuplicatedPoints {
+        /// First point (1-based).
+        first: usize,
+        /// Second point (1-based).
+        second: usize,
+    },
+    /// Two points coincide within rounding in every frame: as good as one point.
+    CoincidentPoints {
+        /// First point (1-based).
+        first: usize,
+        /// Second point (1-based).
+        second: usize,
+    },
     /// The points are collinear in every frame: infinitely many solutions.
     Collinear,
     /// Two frames have the same projected lengths (identical up to an in-plane motion):
     /// their difference equation vanishes, infinitely many solutions.
     IdenticalFrames {
+        /// First frame (1-based).
+        first: usize,
+        /// Second frame (1-based).
+        second: usize,
+    },
+    /// Two frames differ by an in-plane motion (or a mirror) only: the same view, turned or
+    /// shifted in the image plane; their lengths agree and add no equation.
+    InPlaneMotion {
         /// First frame (1-based).
         first: usize,
         /// Second frame (1-based).
@@ -240,10 +273,22 @@ pub enum Degenerate {
 impl fmt::Display for Degenerate {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
+            Degenerate::DuplicatedPoints { first, second } => write!(
+                f,
+                "points {first} and {second} are the same point in every frame (a point listed twice)"
+            ),
+            Degenerate::CoincidentPoints { first, second } => write!(
+                f,
+                "points {first} and {second} coincide in every frame (within rounding): as good as one point"
+            ),
             Degenerate::Collinear => write!(f, "collinear points: infinitely many solutions"),
             Degenerate::IdenticalFrames { first, second } => write!(
                 f,
-                "frames {first} and {second} are identical up to an in-plane rotation: infinitely many solutions"
+                "frames {first} and {second} are identical (the same lengths): infinitely many solutions"
+            ),
+            Degenerate::InPlaneMotion { first, second } => write!(
+                f,
+                "frames {first} and {second} differ by an in-plane motion (or a mirror) only: the same view, infinitely many solutions"
             ),
             Degenerate::DependentDifferences => {
                 write!(f, "the frame-difference equations are dependent")
@@ -285,6 +330,17 @@ pub struct SolverOutput {
 }
 
 impl SolverOutput {
+    /// No solution: `input` is the degenerate case `d`.
+    pub fn degenerate(method: &str, input: &SquaredLengths, d: Degenerate) -> Self {
+        SolverOutput {
+            method: method.into(),
+            edges: input.edge_names(),
+            solutions: Vec::new(),
+            degenerate: Some(d),
+            condition: None,
+        }
+    }
+
     /// The feasible solutions.
     pub fn feasible(&self) -> impl Iterator<Item = &Solution> {
         self.solutions
@@ -319,6 +375,19 @@ impl Method {
     /// assert!(Method::Auto.resolve(3, 2).is_err());
     /// ```
     pub fn resolve(self, p: usize, k: usize) -> Result<(Method, String)> {
+        let (m, why) = self.resolve_shape(p, k)?;
+        let most = super::p4f3::MAX_LSQ_POINTS;
+        if m == Method::Lsq && p > most {
+            // refused before the p(p − 1)/2 squared lengths of every frame are computed
+            return Err(Error::InvalidInput(format!(
+                "{p} points: the least-squares form solves for every one of the p(p − 1)/2 squared edges and takes at most {most} points"
+            )));
+        }
+        Ok((m, why))
+    }
+
+    /// [`Method::resolve`] by the numbers of points and frames alone.
+    fn resolve_shape(self, p: usize, k: usize) -> Result<(Method, String)> {
         let auto = match (p, k) {
             (3, 3) => Ok((
                 Method::P3f3,
@@ -335,7 +404,7 @@ impl Method {
             (4, 3) => Ok((Method::P4f3, "4 points in 3 frames: the linear system of §4")),
             _ => Ok((
                 Method::Lsq,
-                "4 or more points in 3 or more frames: every triangle against frame 1, least squares",
+                "4 or more points in 3 or more frames: the triangles through the first two points against frame 1, least squares",
             )),
         };
         match self {
@@ -381,7 +450,7 @@ pub struct Structure {
     pub points: Vec<[f64; 3]>,
     /// Structure-and-motion solutions behind this edge solution that reproject (depth-sign
     /// combinations of the later frames; the global mirror reversal doubles this count).
-    pub motions: usize,
+    pub motions: u64,
     /// Reprojection error of the best of them, relative to the largest edge (noisy tracks
     /// reproject only approximately, and then `motions` may be 0).
     pub reprojection_error: f64,
@@ -408,7 +477,9 @@ pub struct Solved {
 pub const REPROJECTION_EXACT: f64 = 1e-6;
 
 /// Solve tracks with `method` (resolved by [`Method::resolve`]), and recover the body behind
-/// every feasible three-point solution.
+/// every feasible solution. The solvers run on the tracks brought to unit size
+/// ([`normalise`](super::scale::normalise)) and every length is mapped back; a solution no
+/// rigid motion reprojects is not called feasible; no number of the answer is non-finite.
 ///
 /// # Example
 /// ```
@@ -420,44 +491,22 @@ pub const REPROJECTION_EXACT: f64 = 1e-6;
 /// ```
 pub fn solve_tracks(tracks: &Tracks, method: Method) -> Result<Solved> {
     let (m, why) = method.resolve(tracks.points(), tracks.frames.len())?;
-    let input = SquaredLengths::from_tracks(tracks);
-    let output = match m {
+    let unit = super::scale::normalise(tracks)?;
+    let input = SquaredLengths::from_tracks(&unit.tracks);
+    let mut output = match m {
         Method::P3f3 => super::p3f3::solve(&input)?,
         Method::P3f4 | Method::Auto => super::p3f4::solve(&input)?,
         Method::P4f3 => super::p4f3::solve(&input)?,
         Method::Lsq => super::p4f3::solve_least_squares(&input)?,
     };
+    output.degenerate = output
+        .degenerate
+        .map(|d| super::degenerate::refine_frames(d, &unit.tracks));
     let structures = output
         .solutions
         .iter()
-        .map(|s| {
-            if !s.feasibility.is_feasible() {
-                return Ok(None);
-            }
-            if s.squared_edges.len() != 3 {
-                // four or more points: one body up to the mirror, one camera per frame
-                let fit = super::p4f3::fit(tracks, &s.squared_edges);
-                return Ok(Some(Structure {
-                    points: fit.points.iter().map(|p| [p.x, p.y, p.z]).collect(),
-                    motions: usize::from(fit.residual <= REPROJECTION_EXACT),
-                    reprojection_error: fit.residual,
-                }));
-            }
-            let sq = [s.squared_edges[0], s.squared_edges[1], s.squared_edges[2]];
-            let recs = super::p3f3::reconstructions(tracks, &sq)?;
-            let best = recs
-                .iter()
-                .min_by(|a, b| a.reprojection_error.total_cmp(&b.reprojection_error));
-            Ok(best.map(|r| Structure {
-                points: r.points.iter().map(|p| [p.x, p.y, p.z]).collect(),
-                motions: recs
-                    .iter()
-                    .filter(|r| r.reprojection_error <= REPROJECTION_EXACT)
-                    .count(),
-                reprojection_error: r.reprojection_error,
-            }))
-        })
-        .collect::<Result<_>>()?;
+        .map(|s| structure(&unit.tracks, s))
+        .collect::<Result<Vec<_>>>()?;
     let validation = (m == Method::P3f3).then(|| {
         use num_rational::BigRational;
         let l: [[BigRational; 3]; 3] = std::array::from_fn(|i| {
@@ -465,10 +514,117 @@ pub fn solve_tracks(tracks: &Tracks, method: Method) -> Result<Solved> {
         });
         super::p3f3::validate(&l)
     });
-    Ok(Solved {
+    let mut solved = Solved {
         output,
         why,
         structures,
         validation,
-    })
+    };
+    back_to_input_units(&mut solved, &unit)?;
+    Ok(solved)
+}
+
+/// The body behind one feasible solution (unit tracks); `None` for an infeasible one.
+fn structure(tracks: &Tracks, s: &Solution) -> Result<Option<Structure>> {
+    if !s.feasibility.is_feasible() {
+        return Ok(None);
+    }
+    if s.squared_edges.len() != 3 {
+        // four or more points: one body up to the mirror, one camera per frame
+        let fit = super::p4f3::fit(tracks, &s.squared_edges);
+        return Ok(Some(Structure {
+            points: fit.points.iter().map(|p| [p.x, p.y, p.z]).collect(),
+            motions: u64::from(fit.residual <= REPROJECTION_EXACT),
+            reprojection_error: fit.residual,
+        }));
+    }
+    let sq = [s.squared_edges[0], s.squared_edges[1], s.squared_edges[2]];
+    let summary = super::p3f3::motion_summary(tracks, &sq, REPROJECTION_EXACT)?;
+    Ok(summary.map(|m| Structure {
+        points: m.best.points.iter().map(|p| [p.x, p.y, p.z]).collect(),
+        motions: m.reprojecting,
+        reprojection_error: m.best.reprojection_error,
+    }))
+}
+
+/// Lengths back in the input's units; a solution no motion reprojects is marked so; every
+/// number checked finite (a typed error otherwise, never NaN in the answer).
+fn back_to_input_units(s: &mut Solved, unit: &super::scale::Normalised) -> Result<()> {
+    use super::scale::squares_back;
+    for (sol, st) in s.output.solutions.iter_mut().zip(&mut s.structures) {
+        squares_back(unit, &mut sol.squared_edges)?;
+        squares_back(unit, &mut sol.imaginary)?;
+        if let Some(b) = sol.error_bound.as_mut() {
+            // an infinite bound (a double root) is a fact, not an overflow
+            if b.is_finite() {
+                *b = unit.square_back(*b);
+            }
+        }
+        if let Some(st) = st {
+            for p in &mut st.points {
+                for c in p.iter_mut() {
+                    *c *= unit.scale;
+                }
+            }
+            if st.motions == 0 {
+                sol.feasibility = Feasibility::NoMotionReprojects {
+                    error: st.reprojection_error,
+                };
+            }
+        }
+    }
+    if let Some(v) = s.validation.as_mut() {
+        for list in [&mut v.solver, &mut v.closed_form, &mut v.companion]
+            .into_iter()
+            .chain(v.exact.as_mut())
+        {
+            squares_back(unit, list)?;
+        }
+    }
+    finite(s)
+}
+
+/// Every number of an answer finite: the last guard before a renderer sees it.
+fn finite(s: &Solved) -> Result<()> {
+    let bad = |what: &str| {
+        Err(Error::Numerical(format!(
+            "the {} solver produced a non-finite {what}; nothing is reported",
+            s.output.method
+        )))
+    };
+    for sol in &s.output.solutions {
+        if !sol
+            .squared_edges
+            .iter()
+            .chain(&sol.imaginary)
+            .all(|v| v.is_finite())
+        {
+            return bad("squared edge");
+        }
+        if !sol.residual.is_finite() {
+            return bad("residual");
+        }
+        if let Feasibility::NotRealizable { eigenvalue: v }
+        | Feasibility::NoMotionReprojects { error: v } = sol.feasibility
+        {
+            if !v.is_finite() {
+                return bad("feasibility measure");
+            }
+        }
+    }
+    for st in s.structures.iter().flatten() {
+        if !st.points.iter().flatten().all(|v| v.is_finite()) || !st.reprojection_error.is_finite()
+        {
+            return bad("body coordinate");
+        }
+    }
+    if s.output.condition.is_some_and(|c| !c.is_finite()) {
+        return bad("condition number");
+    }
+    if let Some(v) = &s.validation {
+        if !v.max_relative_disagreement.is_finite() {
+            return bad("route disagreement");
+        }
+    }
+    Ok(())
 }

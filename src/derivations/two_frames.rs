@@ -128,6 +128,9 @@ pub struct Member {
     pub rotation: Rotation3<f64>,
     /// Largest reprojection error in either frame, relative to the image size.
     pub reprojection: f64,
+    /// First-order bound on the reprojection error rounding alone can cause, relative to the
+    /// image size (see [`family`]).
+    pub error_bound: f64,
 }
 
 /// Members of the family of bodies that two frames of corresponding points allow, one per
@@ -152,6 +155,17 @@ pub fn family(f1: &[Vector2<f64>], f2: &[Vector2<f64>], betas: &[f64]) -> Option
         .fold(f64::MIN_POSITIVE, f64::max);
     let m1 = f1.iter().sum::<Vector2<f64>>() / f1.len() as f64;
     let m2 = f2.iter().sum::<Vector2<f64>>() / f2.len() as f64;
+    // Rounding bound. With u = 64ε, the Gram matrix G of the centred rows carries an error
+    // ‖δG‖ ≤ u·λ₃, so its null vector (a, b, c, d) moves by δv ≤ u·λ₃/(λ₁ − λ₀) (Davis–Kahan);
+    // Q₁, Q₂ are built from it over √(a² + b²) = √(c² + d²) = 1/√2, so their angles move by at
+    // most 2√2·δv each. A point's depth Z = (x₂′ − cos β·x₁′)/sin β, of size up to
+    // 2·size/sin β, is then off by 2√2·δv·2·size/sin β, and the rotation Q₂ᵀR_y(β)Q₁ by 4√2·δv
+    // applied to points of size up to (1 + 2/sin β)·size. Together, relative to the size, with
+    // u for the arithmetic of each of the few steps:
+    // (4√2·δv + 2u)·(1 + 2/sin β) + 2√2·δv·2/sin β ≤ (8√2·δv + 2u)·(1 + 2/sin β).
+    let [l0, l1, _, l3] = e.eigenvalues;
+    let u = crate::algebra::NEGLIGIBLE_ULPS * f64::EPSILON;
+    let dv = u * l3 / (l1 - l0).max(f64::MIN_POSITIVE);
     Some(
         betas
             .iter()
@@ -185,6 +199,7 @@ pub fn family(f1: &[Vector2<f64>], f2: &[Vector2<f64>], betas: &[f64]) -> Option
                     points,
                     rotation,
                     reprojection: worst,
+                    error_bound: (8.0 * std::f64::consts::SQRT_2 * dv + 2.0 * u) * (1.0 + 2.0 / sb),
                 }
             })
             .collect(),

@@ -406,7 +406,7 @@ pub fn solve_text(s: &crate::derivations::solver::Solved) -> String {
                 "  body in frame 1: {}; {} structure-and-motion solutions reproject ({} with the mirror reversal)",
                 pts.join(" "),
                 st.motions,
-                2 * st.motions
+                2 * u128::from(st.motions)
             );
         }
     }

@@ -3,7 +3,7 @@
 
 use nalgebra::Vector2;
 
-use crate::derivations::identity::degeneracy;
+use crate::derivations::identity::rigidity;
 use crate::derivations::two_frames::{family, Member};
 use crate::error::{Error, Result};
 
@@ -16,14 +16,14 @@ pub fn betas(samples: usize) -> Vec<f64> {
 }
 
 /// The family's members at [`betas`]`(samples)` for the two frames `f1`, `f2` (the same
-/// points in the same order). A degenerate pair of frames, or one whose epipolar geometry
-/// is undetermined, is `InvalidInput`.
+/// points in the same order). A degenerate pair of frames, one whose epipolar geometry is
+/// undetermined, or one no rigid body gives, is `InvalidInput`.
 pub fn sample_family(
     f1: &[Vector2<f64>],
     f2: &[Vector2<f64>],
     samples: usize,
 ) -> Result<Vec<Member>> {
-    if let Some(d) = degeneracy(f1, f2) {
+    if let Some(d) = rigidity(f1, f2) {
         return Err(Error::InvalidInput(d.to_string()));
     }
     family(f1, f2, &betas(samples))
