@@ -1,5 +1,7 @@
 //! Integration tests in one binary; the paper runs once for all of them (`common::report`).
 
+/// The committed adversarial corpus: no panic, no hang, no NaN, the documented exit class.
+mod adversarial;
 /// Property tests of the exact and floating algebra.
 mod algebra_props;
 /// The command line: exit codes, JSON shapes, determinism.
@@ -9,6 +11,8 @@ mod cli;
 mod common;
 /// docs/errata.md is what `orthocheck audit --all --markdown` prints.
 mod errata;
+/// Structured fuzzing of the tracks and case parsers (proptest; long run in docs/limits.md).
+mod fuzz;
 /// The paper cases cover the claims this tool must decide.
 mod inventory;
 /// The Markdown and HTML renderers on fixed claims.
