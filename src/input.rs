@@ -159,6 +159,9 @@ fn parse_yaml_tracks(text: &str, path: &Path) -> Result<Tracks> {
 
 /// What is wrong with a list of point names, if anything: an empty name, or one used twice.
 fn name_problem(names: &[String]) -> Option<String> {
+    if names.is_empty() {
+        return Some("no points are named".into());
+    }
     let mut seen = HashSet::new();
     for n in names {
         if n.trim().is_empty() {

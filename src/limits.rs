@@ -50,6 +50,11 @@ pub const CURVE_SAMPLES: usize = 100_000;
 pub const CASE_LIST: usize = 1_000;
 /// Significant digits a case may say a program printed with (an f64 holds 17).
 pub const SIGNIFICANT_DIGITS: u32 = 17;
+/// YAML values (scalars, lists, maps) of one case file; the largest paper case holds a few
+/// thousand. Small enough that an alias bomb is refused within milliseconds.
+pub const CASE_YAML_VALUES: usize = 50_000;
+/// YAML aliases (`*name`) of one case file.
+pub const CASE_YAML_ALIASES: usize = 1_000;
 /// Characters of one formula.
 pub const FORMULA_CHARS: usize = 20_000;
 /// Nesting depth of parentheses (and unary signs) in one formula: the parser is recursive.
@@ -106,6 +111,18 @@ fn short(x: f64) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn docs_list_every_limit() {
+        let doc = include_str!("../docs/limits.md");
+        let me = include_str!("limits.rs");
+        for line in me.lines() {
+            if let Some(rest) = line.strip_prefix("pub const ") {
+                let name = rest.split(':').next().unwrap_or("");
+                assert!(doc.contains(name), "docs/limits.md does not list {name}");
+            }
+        }
+    }
 
     #[test]
     fn limits_accept_up_to_and_refuse_beyond() {

@@ -25,8 +25,16 @@ pub fn parse_case(text: &str, path: &Path) -> Result<Case> {
 }
 
 /// Deserialize YAML with errors that name the file, line, column and field path.
+/// Case files are small (the largest paper case holds a few thousand values), so their
+/// budget is [`crate::limits::CASE_YAML_VALUES`] values and
+/// [`crate::limits::CASE_YAML_ALIASES`] aliases: an alias bomb is refused within milliseconds.
 pub fn parse_yaml<T: serde::de::DeserializeOwned>(text: &str, path: &Path) -> Result<T> {
-    parse_yaml_limited(text, path, serde_saphyr::Budget::default().max_nodes)
+    parse_yaml_budget(
+        text,
+        path,
+        crate::limits::CASE_YAML_VALUES,
+        crate::limits::CASE_YAML_ALIASES,
+    )
 }
 
 /// [`parse_yaml`] allowing up to `max_nodes` YAML values (sequences, maps and scalars), for
@@ -36,8 +44,20 @@ pub fn parse_yaml_limited<T: serde::de::DeserializeOwned>(
     path: &Path,
     max_nodes: usize,
 ) -> Result<T> {
+    let aliases = serde_saphyr::Budget::default().max_aliases;
+    parse_yaml_budget(text, path, max_nodes, aliases)
+}
+
+/// [`parse_yaml`] with the parser's budget of values and aliases.
+fn parse_yaml_budget<T: serde::de::DeserializeOwned>(
+    text: &str,
+    path: &Path,
+    max_nodes: usize,
+    max_aliases: usize,
+) -> Result<T> {
     let mut budget = serde_saphyr::Budget::default();
     budget.max_nodes = max_nodes;
+    budget.max_aliases = max_aliases;
     budget.max_events = max_nodes.saturating_mul(2).max(budget.max_events);
     let options = serde_saphyr::options! { with_snippet: false, budget: Some(budget) };
     let mut field: Option<String> = None;
@@ -96,6 +116,14 @@ fn plain_message(message: &str) -> String {
             _ => "elements",
         };
         return format!("the file is too large: more than {limit} {kind}");
+    }
+    for int in [
+        "u8", "u16", "u32", "u64", "usize", "i8", "i16", "i32", "i64",
+    ] {
+        if message.starts_with(&format!("invalid {int}")) {
+            return "expected a whole number (no sign, no decimal point, no exponent) that fits"
+                .into();
+        }
     }
     if message.contains("from_str_multiple") {
         return "the file holds more than one YAML document".into();

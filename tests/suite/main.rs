@@ -1,5 +1,7 @@
 //! Integration tests in one binary; the paper runs once for all of them (`common::report`).
 
+/// The committed adversarial corpus: no panic, no hang, no NaN, the documented exit class.
+mod adversarial;
 /// Property tests of the exact and floating algebra.
 mod algebra_props;
 /// report.html in headless Chromium: it loads, its links resolve, it is not blank.
@@ -14,6 +16,8 @@ mod errata;
 /// Every figure of the paper run, drawn: data inside the axes, keys outside, one colour per
 /// series, equal scales where claimed, captions without LaTeX.
 mod figures;
+/// Structured fuzzing of the tracks and case parsers (proptest; long run in docs/limits.md).
+mod fuzz;
 /// The paper cases cover the claims this tool must decide.
 mod inventory;
 /// The Markdown and HTML renderers on fixed claims.
