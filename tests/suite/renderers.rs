@@ -284,12 +284,8 @@ fn every_badge_and_series_colour_passes_wcag_aa() {
         let ratio = contrast_ratio(bg, text);
         assert!(ratio >= TEXT_CONTRAST, "badge {}: {ratio:.2}:1", v.name());
     }
-    // every style a figure can draw (the match fails to compile when a style is added)
-    let all = [Style::Printed, Style::Computed, Style::Other, Style::Mark];
-    for st in all {
-        match st {
-            Style::Printed | Style::Computed | Style::Other | Style::Mark => {}
-        }
+    // every style a figure can draw
+    for st in Style::ALL {
         let css = orthocheck::report::svg::css_colour(st);
         let c = parse_colour(&css).unwrap_or_else(|| panic!("{css} does not parse"));
         let ratio = contrast_ratio(c, white);
