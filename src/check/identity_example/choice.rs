@@ -27,6 +27,10 @@ fn rule_name(r: Rule) -> &'static str {
         Rule::AsymptoteSmall => "d² = longest squared QR / smaller slope of b²/d²",
         Rule::AsymptoteLarge => "d² = longest squared QR / larger slope of b²/d²",
         Rule::SmallestAdmissible => "d = smallest admissible value",
+        Rule::MinimumBMinus => "d² at the smallest b² of the − root",
+        Rule::MinimumBPlus => "d² at the smallest b² of the + root",
+        Rule::MinimumGMinus => "d² at the smallest g² of the − root",
+        Rule::MinimumGPlus => "d² at the smallest g² of the + root",
     }
 }
 

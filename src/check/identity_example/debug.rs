@@ -372,7 +372,7 @@ fn undetermined_result(
         .computed("agreeing only within a bound wider than the mutant", Value::label(wide.iter().map(|w| w.0.clone()).collect::<Vec<_>>().join("; ")))
         .computed("their acceptance half-widths (half units)", Value::reals(&wide.iter().map(|w| w.1).collect::<Vec<_>>()))
         .power(Power::none("the same test accepts these numbers moved by the mutant's half units: agreement says nothing about their digits"))
-        .method("the debug numbers and error ratios whose propagated bound exceeds the mutant's half units (or their own magnitude)")
+        .method("the debug numbers and error ratios whose propagated bound exceeds the mutant's half units (or their own magnitude); the rounding-level (Linie) numbers are explained to the unit in the last place by the program's arithmetic in ex5-debug/linie")
         .verdict(Verdict::Inconclusive)
 }
 

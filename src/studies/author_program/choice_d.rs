@@ -40,11 +40,20 @@ pub enum Rule {
     /// d = the smallest admissible value (a and b at least their projections, Δ_b ≥ 0), on
     /// a grid of relative step 10⁻³.
     SmallestAdmissible,
+    /// d² where b² of the − root is smallest (b² touching its longest projection), on a
+    /// geometric grid of d² above the longest projection.
+    MinimumBMinus,
+    /// … of the + root.
+    MinimumBPlus,
+    /// d² where g² of the − root is smallest.
+    MinimumGMinus,
+    /// … of the + root.
+    MinimumGPlus,
 }
 
 impl Rule {
     /// Every rule, in report order.
-    pub const ALL: [Rule; 14] = [
+    pub const ALL: [Rule; 18] = [
         Rule::Longest,
         Rule::LongestPlusOne,
         Rule::LongestPlusTenth,
@@ -59,6 +68,10 @@ impl Rule {
         Rule::AsymptoteSmall,
         Rule::AsymptoteLarge,
         Rule::SmallestAdmissible,
+        Rule::MinimumBMinus,
+        Rule::MinimumBPlus,
+        Rule::MinimumGMinus,
+        Rule::MinimumGPlus,
     ];
 }
 
@@ -135,8 +148,36 @@ pub fn predict(rule: Rule, f1: &[Vector2<f64>; 4], f2: &[Vector2<f64>; 4]) -> Op
             let a = |f: &[Vector2<f64>; 4]| [f[3], f[1], f[2], f[0]];
             smallest_c(&a(f1), &a(f2))?.powi(2)
         }
+        Rule::MinimumBMinus => minimum(f1, f2, lo, 0, false)?,
+        Rule::MinimumBPlus => minimum(f1, f2, lo, 1, false)?,
+        Rule::MinimumGMinus => minimum(f1, f2, lo, 0, true)?,
+        Rule::MinimumGPlus => minimum(f1, f2, lo, 1, true)?,
     };
     value.is_finite().then_some(value)
+}
+
+/// Grid points of d² = lo (1 + t), t from 10⁻⁶ to 100 geometrically.
+const GRID: usize = 4000;
+
+/// The d² on the grid where b² (or g², `g`) of root `root` (0: −, 1: +) is smallest.
+fn minimum(
+    f1: &[Vector2<f64>; 4],
+    f2: &[Vector2<f64>; 4],
+    lo: f64,
+    root: usize,
+    g: bool,
+) -> Option<f64> {
+    let a = |f: &[Vector2<f64>; 4]| [f[3], f[1], f[2], f[0]];
+    let (a1, a2) = (a(f1), a(f2));
+    let step = (1e8_f64).ln() / (GRID - 1) as f64;
+    (0..GRID)
+        .filter_map(|i| {
+            let x = lo * (1.0 + 1e-6 * (step * i as f64).exp());
+            let (b2, g2) = crate::derivations::identity::b_squared(&a1, &a2, x)?[root];
+            Some((x, if g { g2 } else { b2 }))
+        })
+        .min_by(|u, v| u.1.total_cmp(&v.1))
+        .map(|m| m.0)
 }
 
 /// How far a rule misses over the assignments.
