@@ -45,6 +45,45 @@ fn group(readings: &[Reading], k: usize) -> Option<(f64, f64)> {
     Some((phi, g.iter().map(|r| r.phi_bound).sum::<f64>() / n))
 }
 
+/// Per picture: its labels, the body it shows, the misfits, φ and n.
+fn picture_details<'b>(
+    mut r: super::ClaimBuilder<'b>,
+    dm: &DrawnMember,
+    readings: &[Reading],
+) -> super::ClaimBuilder<'b> {
+    let deg = f64::to_degrees;
+    for (d, rd) in dm.drawings.iter().zip(readings) {
+        r = r
+            .detail(
+                &format!("picture {}: labels", d.lines),
+                Value::label(d.label_names.join(", ")),
+            )
+            .detail(
+                &format!("picture {}: shows the rotated body", d.lines),
+                Value::flag(rd.body == 1),
+            )
+            .detail(
+                &format!(
+                    "picture {}: label misfit against the original, the rotated body",
+                    d.lines
+                ),
+                Value::reals(&rd.misfit),
+            )
+            .detail(
+                &format!(
+                    "picture {}: φ of the frame-2 rays and its bound (degrees)",
+                    d.lines
+                ),
+                Value::reals(&[deg(rd.phi), deg(rd.phi_bound)]),
+            )
+            .detail(
+                &format!("picture {}: angle of n from the z edge (degrees)", d.lines),
+                deg(rd.n_tilt),
+            );
+    }
+    r
+}
+
 pub(super) fn result(b: &ResultBuilder, case: &TwoFramesCase) -> Option<ClaimResult> {
     let dm: &DrawnMember = case.drawn_member.as_ref()?;
     let pts: Vec<Vector3<f64>> = case
@@ -102,35 +141,7 @@ pub(super) fn result(b: &ResultBuilder, case: &TwoFramesCase) -> Option<ClaimRes
         .tolerance(Tolerance::bound(deg(bound), ToleranceSource::Propagated, "degrees: Σ|∂φ/∂c|·h of the drawings' three-decimal coordinates (mean over the pictures of each body, both bodies) plus Σ|∂θ/∂c|·h of the printed points"))
         .power(Power::interval(deg(theta - bound), deg(theta + bound), deg(theta), deg(bound), "θ (degrees) of the printed points the drawings would accept: exactly what the drawings' three decimals and the printed points' digits allow"))
         .method("per picture: the cube's thin edges as the scene's axes (x along the frame-1 ray, z along n), their signs and the scale fitted to the labels of P and the two points of either body; the frame-2 rays' direction in the scene; the turn θ = φ′ − φ between the pictures of the two bodies, against the non-trivial root of (R(−θ)Q′ − Q) × (R(−θ)R′ − R) = 0 of the printed points; Q′ and R′ rebuilt from Q and R by the drawn member");
-    for (d, rd) in dm.drawings.iter().zip(&readings) {
-        r = r
-            .detail(
-                &format!("picture {}: labels", d.lines),
-                Value::label(d.label_names.join(", ")),
-            )
-            .detail(
-                &format!("picture {}: shows the rotated body", d.lines),
-                Value::flag(rd.body == 1),
-            )
-            .detail(
-                &format!(
-                    "picture {}: label misfit against the original, the rotated body",
-                    d.lines
-                ),
-                Value::reals(&rd.misfit),
-            )
-            .detail(
-                &format!(
-                    "picture {}: φ of the frame-2 rays and its bound (degrees)",
-                    d.lines
-                ),
-                Value::reals(&[deg(rd.phi), deg(rd.phi_bound)]),
-            )
-            .detail(
-                &format!("picture {}: angle of n from the z edge (degrees)", d.lines),
-                deg(rd.n_tilt),
-            );
-    }
+    r = picture_details(r, dm, &readings);
     Some(r.verdict(if holds {
         Verdict::ReproducedWithinRounding
     } else {
