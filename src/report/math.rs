@@ -318,7 +318,11 @@ impl Renderer {
                 }
                 // LaTeX ignores spaces in mathematics; plain notation keeps one
                 c if c.is_whitespace() => {
-                    if self.plain && !matches!(self.last_char(), None | Some(' ')) {
+                    let next = rest.trim_start().chars().next();
+                    if self.plain
+                        && !matches!(self.last_char(), None | Some(' ' | '('))
+                        && next != Some(')')
+                    {
                         self.text(" ");
                     }
                 }

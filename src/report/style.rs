@@ -99,7 +99,7 @@ figure { margin: .8rem 0; max-width: 100%; } figcaption { color: #444; font-size
 .strip .group { font-weight: 600; display: block; } .strip .total { font-size: 1.5rem; font-weight: 700; }
 .strip ul, .toc ul, .vlist ul { margin: .2rem 0; padding-left: 1.1rem; }
 .toc ul.sections { list-style: none; padding-left: 0; } .toc li { margin: .1rem 0; } .toc li.sub { margin-left: 1.4rem; }
-.toc details { display: inline; } .toc details[open] { display: block; margin-left: 1.2rem; }
+.toc details { margin: 0 0 .15rem 1.2rem; }
 .filter a { margin-right: .4rem; white-space: nowrap; }
 .vlist { display: none; border: 1px solid #ccc; border-radius: 6px; padding: .4rem .9rem; margin: .6rem 0; }
 .vlist:target { display: block; }

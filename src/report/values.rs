@@ -126,8 +126,14 @@ pub fn sig_digits(x: f64, digits: usize) -> String {
     let a = x.abs();
     if (1e-4..1e6).contains(&a) {
         let magnitude = a.log10().floor() as i32;
-        let decimals = (digits as i32 - 1 - magnitude).max(0) as usize;
-        format!("{x:.decimals$}")
+        let decimals = digits as i32 - 1 - magnitude;
+        if decimals >= 0 {
+            format!("{x:.0$}", decimals as usize)
+        } else {
+            // digits left of the point beyond the significant ones are zeros
+            let scale = 10f64.powi(-decimals);
+            format!("{:.0}", (x / scale).round() * scale)
+        }
     } else {
         format!("{:.*e}", digits - 1, x)
     }
