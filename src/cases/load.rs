@@ -8,10 +8,15 @@ use crate::error::{Error, InputLocation, Result};
 /// Read and validate one case file.
 pub fn load_case(path: &Path) -> Result<Case> {
     let text = read_case_text(path)?;
-    let mut case = parse_case(&text, path)?;
+    case_from_text(&text, path)
+}
+
+/// Parse, validate and complete one case read from `path`.
+fn case_from_text(text: &str, path: &Path) -> Result<Case> {
+    let mut case = parse_case(text, path)?;
     if let super::CaseCheck::SourceErrata(c) = &mut case.check {
         // the quotes are verified against the source as it is read
-        super::errata::attach_source(c, &text, path)?;
+        super::errata::attach_source(c, text, path)?;
     }
     case.file = Some(path.to_path_buf());
     Ok(case)
@@ -229,8 +234,7 @@ pub fn load_all(dir: &Path) -> Result<Vec<Case>> {
     let mut texts = Vec::new();
     for p in case_files(dir)? {
         let text = read_case_text(&p)?;
-        let mut case = parse_case(&text, &p)?;
-        case.file = Some(p.clone());
+        let case = case_from_text(&text, &p)?;
         if let Some(first) = cases.iter().position(|c: &Case| c.id == case.id) {
             let other = cases[first].file.as_deref().unwrap_or(Path::new("?"));
             return Err(invalid(

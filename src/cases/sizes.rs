@@ -98,7 +98,9 @@ pub(super) fn check_sizes(case: &Case, v: &Validator) -> Result<()> {
         }
         CaseCheck::IdentityExample(c) => identity_example(c, v),
         CaseCheck::NoiseStudy(c) => noise_study(c, v),
-        CaseCheck::NotReproducible(_) | CaseCheck::Restatements(_) | CaseCheck::SourceErrata(_) => Ok(()),
+        CaseCheck::NotReproducible(_) | CaseCheck::Restatements(_) | CaseCheck::SourceErrata(_) => {
+            Ok(())
+        }
     }
 }
 
