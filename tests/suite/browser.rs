@@ -34,6 +34,11 @@ fn headless(browser: &Path, profile: &Path, extra: &[&str], url: &str) -> std::p
         "--disable-gpu",
         "--hide-scrollbars",
         "--no-first-run",
+        // the machine's network is closed: no background connections, no update checks
+        "--disable-background-networking",
+        "--disable-component-update",
+        "--disable-sync",
+        "--disable-quic",
         "--virtual-time-budget=5000",
     ])
     .arg(format!("--user-data-dir={}", profile.display()))
