@@ -38,6 +38,22 @@ pub struct FourthRelation {
     pub rank_three: usize,
     /// With PQR added.
     pub rank_four: usize,
+    /// The reading the paper's words fit: the relations in the signed depth differences.
+    pub signed: SignedDependence,
+}
+
+/// The four relations read in the signed depth differences uₑ = z_i − z_j of the edges (the
+/// square roots of §5 with their signs): each triangle's loop Σ ±uₑ = 0 is a linear form in
+/// the six uₑ, and dependence is a question of exact rank.
+#[derive(Clone, Debug)]
+pub struct SignedDependence {
+    /// Rank of the loops of PQT, QRT and RPT.
+    pub rank_three: usize,
+    /// Rank with the loop of PQR added: equal to `rank_three` when PQR's depends on them.
+    pub rank_four: usize,
+    /// The mutant: PQR's loop with the sign of its last difference changed. It must raise
+    /// the rank (a relation that holds on no body is not in the span).
+    pub mutant_rank: usize,
 }
 
 /// Decide the dependence of the fourth relation (frame `i` for the polynomial questions; a
@@ -54,7 +70,44 @@ pub fn fourth_relation(seed: u64) -> FourthRelation {
         counterexample_values,
         rank_three: exact_rank(&rows[..3]).0,
         rank_four: exact_rank(&rows).0,
+        signed: signed_dependence(),
     }
+}
+
+/// The loops of the four triangles in the signed edge differences, and their ranks.
+fn signed_dependence() -> SignedDependence {
+    let loops: Vec<Vec<BigRational>> = TRIANGLES.iter().map(|t| signed_loop(t)).collect();
+    let mut mutant = loops.clone();
+    if let Some(last) = mutant[3].iter_mut().rev().find(|x| !x.is_zero()) {
+        *last = -last.clone();
+    }
+    SignedDependence {
+        rank_three: exact_rank(&loops[..3]).0,
+        rank_four: exact_rank(&loops).0,
+        mutant_rank: exact_rank(&mutant).0,
+    }
+}
+
+/// The signs s with Σ sₖ (z_iₖ − z_jₖ) = 0 identically in the depths (the triangle's loop), as
+/// a row over the six edge columns; found by trying the sign choices, first sign fixed.
+fn signed_loop(t: &[&str; 3]) -> Vec<BigRational> {
+    for signs in [[1, 1, 1], [1, 1, -1], [1, -1, 1], [1, -1, -1]] {
+        let mut depth = [0i64; 4];
+        for (e, s) in t.iter().zip(signs) {
+            let (i, j) = edge_points(e);
+            depth[i] += s;
+            depth[j] -= s;
+        }
+        if depth.iter().all(|d| *d == 0) {
+            let mut row = vec![BigRational::zero(); EDGES.len()];
+            for (e, s) in t.iter().zip(signs) {
+                let col = EDGES.iter().position(|x| x == e).unwrap_or(0);
+                row[col] = rat(s, 1);
+            }
+            return row;
+        }
+    }
+    vec![BigRational::zero(); EDGES.len()]
 }
 
 /// The edge letters, in the column order of the frame rows.

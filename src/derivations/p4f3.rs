@@ -504,7 +504,31 @@ pub fn solve_least_squares(input: &SquaredLengths) -> Result<SolverOutput> {
         });
         worst
     };
-    Ok(finish(input, "lsq", n, x, residual, rank, noise_m, noise_b))
+    let mut b2 = 0.0;
+    each_row(&mut |_, kc, _| b2 += kc * kc);
+    let (trace, smin) = (ata.trace(), rank.smin);
+    let mut out = finish(input, "lsq", n, x, residual, rank, noise_m, noise_b);
+    for s in &mut out.solutions {
+        let xn = s.squared_edges.iter().map(|v| v * v).sum::<f64>().sqrt();
+        if let Some(b) = &mut s.error_bound {
+            *b += normal_equations_error(rows, n, trace, b2.sqrt(), xn, smin);
+        }
+    }
+    Ok(out)
+}
+
+/// The forward error the normal equations add (Higham, Accuracy and Stability, §20.4): the
+/// computed x solves (AᵀA + E)x = Aᵀb + f with ‖E‖ ≤ (γ_m + n γ_{n+1})‖A‖²_F (forming AᵀA
+/// from m rows, then Cholesky) and ‖f‖ ≤ γ_m ‖A‖_F ‖b‖, so ‖Δx‖ ≤ (‖E‖‖x‖ + ‖f‖)/σ_min²:
+/// the κ² the least-squares form pays for never building A.
+fn normal_equations_error(m: usize, n: usize, trace: f64, b: f64, x: f64, smin: f64) -> f64 {
+    let gamma = |k: usize| {
+        let ku = k as f64 * f64::EPSILON / 2.0;
+        ku / (1.0 - ku)
+    };
+    let e = (gamma(m) + n as f64 * gamma(n + 1)) * trace;
+    let f = gamma(m) * trace.sqrt() * b;
+    (e * x + f) / (smin * smin)
 }
 
 /// Rank and condition of A from AᵀA and its Cholesky factor, when there is one.

@@ -11,13 +11,7 @@ use crate::studies::audit::ComputedFinding;
 /// The judge of a dedicated computation.
 pub(super) fn computed_verdict(x: &ComputedFinding) -> Verdict {
     match x {
-        ComputedFinding::FourthRelation(r) => {
-            if independent(r) {
-                Verdict::Contradicted
-            } else {
-                Verdict::IdentityVerified
-            }
-        }
+        ComputedFinding::FourthRelation(r) => identity(signed_dependent(r)),
         ComputedFinding::BFormula { solves, .. } => identity(*solves),
         ComputedFinding::SignedRelation {
             three_edges,
@@ -38,8 +32,16 @@ pub(super) fn computed_verdict(x: &ComputedFinding) -> Verdict {
     }
 }
 
-/// Not a linear combination, and an exact point where the three hold and the fourth does not.
-fn independent(r: &FourthRelation) -> bool {
+/// In the signed depth differences (the paper's square roots with their signs) PQR's loop lies
+/// in the span of the other three, and the mutant with one sign changed does not.
+fn signed_dependent(r: &FourthRelation) -> bool {
+    let s = &r.signed;
+    s.rank_three == 3 && s.rank_four == s.rank_three && s.mutant_rank > s.rank_four
+}
+
+/// After twofold squaring: not a linear combination, and an exact point where the three hold
+/// and the fourth does not.
+fn independent_after_squaring(r: &FourthRelation) -> bool {
     let zero = BigRational::from_integer(0.into());
     let v = &r.counterexample_values;
     !r.linear && v.len() == 4 && v[..3].iter().all(|x| *x == zero) && v[3] != zero
@@ -71,14 +73,21 @@ fn should_be(test: &ComputedTest) -> String {
     }
 }
 
-const FOURTH: &str = "the fourth relation is neither a linear combination of the other three nor implied by them; it holds on real bodies because one set of depths serves all four triangles (a consistent choice of the signs)";
+const FOURTH: &str = "in the signed depth differences the relation of PQR is the sum of those of PQT, QRT and RPT (linearly dependent, as the paper says); after twofold squaring, the form §5 goes on to solve, it is neither a linear combination of the other three nor implied by them: dropping it there admits sign choices no body has";
 
 fn fourth<'b>(r: ClaimBuilder<'b>, x: &FourthRelation, seed: u64) -> ClaimBuilder<'b> {
+    let s = &x.signed;
     let mut r = r
-        .method("(1) F_PQR = λ₁F_PQT + λ₂F_QRT + λ₃F_RPT solved for λ over the rational functions of the projections, monomial by monomial, exactly; (2) an exact point where the three relations hold and the fourth does not; (3) exact ranks of the frame-differenced equations of two frames at a rational scene")
-        .computed("a linear combination exists", x.linear)
+        .method("(0) each triangle's loop Σ ±(z_i − z_j) = 0 as a row over the six signed depth differences, exact ranks of the three loops and of all four; then the twofold-squared forms: (1) F_PQR = λ₁F_PQT + λ₂F_QRT + λ₃F_RPT solved for λ over the rational functions of the projections, monomial by monomial, exactly; (2) an exact point where the three relations hold and the fourth does not; (3) exact ranks of the frame-differenced equations of two frames at a rational scene")
+        .computed("rank of the signed loops, three triangles", s.rank_three)
+        .computed("rank of the signed loops, with PQR", s.rank_four)
+        .computed("after squaring: a linear combination exists", x.linear)
+        .computed("after squaring: implied by the other three", !independent_after_squaring(x))
         .tolerance(Tolerance::exact("exact arithmetic over ℚ"))
-        .power(Power::none("the finding is negative, shown by an exact counterexample"))
+        .power(Power::mutant(
+            s.mutant_rank > s.rank_four,
+            "PQR's loop with the sign of its last difference changed (a relation no body satisfies) raises the rank: the same rank test rejects it",
+        ))
         .detail("scene seed", seed);
     if let Some(o) = &x.obstruction {
         r = r.computed("obstruction", Value::formula(o.clone()));
@@ -92,14 +101,14 @@ fn fourth<'b>(r: ClaimBuilder<'b>, x: &FourthRelation, seed: u64) -> ClaimBuilde
     {
         r = r.computed(&format!("{name} at the counterexample"), Value::exact(v));
     }
-    r.computed("rank, three triangles", x.rank_three)
-        .computed("rank, with PQR", x.rank_four)
+    r.computed("after squaring: rank, three triangles", x.rank_three)
+        .computed("after squaring: rank, with PQR", x.rank_four)
 }
 
 fn describe<'b>(r: ClaimBuilder<'b>, test: &ComputedTest, x: &ComputedFinding) -> ClaimBuilder<'b> {
     match (test, x) {
         (ComputedTest::FourthRelation { seed }, ComputedFinding::FourthRelation(f)) => {
-            fourth(r, f, *seed).correction(FOURTH)
+            fourth(r, f, *seed).detail("reading", Value::label(FOURTH))
         }
         (_, ComputedFinding::BFormula { solves, mutant_rejected }) => r
             .method("with A = f_{b²}, B = c² f_cb + f_b, C = the constant part and s = √Δ_b: 4A(AX² + BX + C) for X = (−B ± s)/(2A), reduced by s² = B² − 4AC, exactly over ℚ")
