@@ -76,7 +76,7 @@ pub fn fourth_relation(seed: u64) -> FourthRelation {
 
 /// The loops of the four triangles in the signed edge differences, and their ranks.
 fn signed_dependence() -> SignedDependence {
-    let loops: Vec<Vec<BigRational>> = TRIANGLES.iter().map(|t| signed_loop(t)).collect();
+    let loops: Vec<Vec<BigRational>> = TRIANGLES.iter().map(signed_loop).collect();
     let mut mutant = loops.clone();
     if let Some(last) = mutant[3].iter_mut().rev().find(|x| !x.is_zero()) {
         *last = -last.clone();
