@@ -10,71 +10,10 @@ use crate::limits::{self, count};
 /// Every count and list of `case` within its limit.
 pub(super) fn check_sizes(case: &Case, v: &Validator) -> Result<()> {
     match &case.check {
-        CaseCheck::DofCount(c) => {
-            for (i, e) in c.examples.iter().enumerate() {
-                dof(
-                    v,
-                    &format!("check.dof_count.examples[{i}].points"),
-                    e.points,
-                    e.frames,
-                )?;
-            }
-            Ok(())
-        }
-        CaseCheck::DofIdentifiability(c) => {
-            let at = "check.dof_identifiability";
-            v.limit(
-                &format!("{at}.max_points"),
-                "max_points",
-                c.max_points,
-                limits::DOF_GRID,
-            )?;
-            v.limit(
-                &format!("{at}.max_frames"),
-                "max_frames",
-                c.max_frames,
-                limits::DOF_GRID,
-            )?;
-            dof(
-                v,
-                &format!("{at}.minimum.points"),
-                c.minimum.points,
-                c.minimum.frames,
-            )
-        }
-        CaseCheck::TwofoldSquared(c) => {
-            let at = "check.twofold_squared";
-            v.limit(
-                &format!("{at}.evaluation_points"),
-                "evaluation_points",
-                c.evaluation_points,
-                limits::EVALUATION_POINTS,
-            )?;
-            v.limit(
-                &format!("{at}.relations.trials"),
-                "trials",
-                c.relations.trials,
-                limits::CASE_TRIALS,
-            )?;
-            v.list(
-                &format!("{at}.relations.patterns"),
-                c.relations.patterns.len(),
-            )
-        }
-        CaseCheck::P3f3Example(c) => {
-            v.limit(
-                "check.p3f3_example.rounding_trials",
-                "rounding_trials",
-                c.rounding_trials,
-                limits::ROUNDING_TRIALS,
-            )?;
-            digits(
-                v,
-                "check.p3f3_example.solutions.significant_digits",
-                c.solutions.significant_digits,
-            )?;
-            body_digits(v, "check.p3f3_example.body.significant_digits", &c.body)
-        }
+        CaseCheck::DofCount(c) => dof_count(c, v),
+        CaseCheck::DofIdentifiability(c) => dof_identifiability(c, v),
+        CaseCheck::TwofoldSquared(c) => twofold_squared(c, v),
+        CaseCheck::P3f3Example(c) => p3f3_example(c, v),
         CaseCheck::P4f3Example(c) => p4f3_example(c, v),
         CaseCheck::P4f3Census(c) | CaseCheck::P3f3Census(c) | CaseCheck::P3f4Census(c) => {
             v.limit("check.trials", "trials", c.trials, limits::CASE_TRIALS)?;
@@ -102,6 +41,79 @@ pub(super) fn check_sizes(case: &Case, v: &Validator) -> Result<()> {
             Ok(())
         }
     }
+}
+
+/// The sizes of a `DofCount` case.
+fn dof_count(c: &DofCountCase, v: &Validator) -> Result<()> {
+    for (i, e) in c.examples.iter().enumerate() {
+        dof(
+            v,
+            &format!("check.dof_count.examples[{i}].points"),
+            e.points,
+            e.frames,
+        )?;
+    }
+    Ok(())
+}
+
+/// The sizes of a `DofIdentifiability` case.
+fn dof_identifiability(c: &DofIdentifiabilityCase, v: &Validator) -> Result<()> {
+    let at = "check.dof_identifiability";
+    v.limit(
+        &format!("{at}.max_points"),
+        "max_points",
+        c.max_points,
+        limits::DOF_GRID,
+    )?;
+    v.limit(
+        &format!("{at}.max_frames"),
+        "max_frames",
+        c.max_frames,
+        limits::DOF_GRID,
+    )?;
+    dof(
+        v,
+        &format!("{at}.minimum.points"),
+        c.minimum.points,
+        c.minimum.frames,
+    )
+}
+
+/// The sizes of a `TwofoldSquared` case.
+fn twofold_squared(c: &TwofoldCase, v: &Validator) -> Result<()> {
+    let at = "check.twofold_squared";
+    v.limit(
+        &format!("{at}.evaluation_points"),
+        "evaluation_points",
+        c.evaluation_points,
+        limits::EVALUATION_POINTS,
+    )?;
+    v.limit(
+        &format!("{at}.relations.trials"),
+        "trials",
+        c.relations.trials,
+        limits::CASE_TRIALS,
+    )?;
+    v.list(
+        &format!("{at}.relations.patterns"),
+        c.relations.patterns.len(),
+    )
+}
+
+/// The sizes of a `P3f3Example` case.
+fn p3f3_example(c: &P3f3ExampleCase, v: &Validator) -> Result<()> {
+    v.limit(
+        "check.p3f3_example.rounding_trials",
+        "rounding_trials",
+        c.rounding_trials,
+        limits::ROUNDING_TRIALS,
+    )?;
+    digits(
+        v,
+        "check.p3f3_example.solutions.significant_digits",
+        c.solutions.significant_digits,
+    )?;
+    body_digits(v, "check.p3f3_example.body.significant_digits", &c.body)
 }
 
 /// One identifiability decision of p points in k frames.

@@ -11,6 +11,9 @@ use std::collections::BTreeMap;
 /// stops here instead of looping.
 const MAX_DEPTH: usize = 12;
 
+/// How a macro definition starts in the source.
+const NEWCOMMAND: &str = "\\newcommand{\\";
+
 /// The paper's `\newcommand` macros by name.
 #[derive(Clone, Debug, Default)]
 pub struct Macros {
@@ -22,8 +25,8 @@ impl Macros {
     pub fn parse(latex: &str) -> Macros {
         let mut defs = BTreeMap::new();
         let mut rest = latex;
-        while let Some(at) = rest.find("\\newcommand{\\") {
-            rest = &rest[at + "\\newcommand{\\".len()..];
+        while let Some(at) = rest.find(NEWCOMMAND) {
+            rest = &rest[at + NEWCOMMAND.len()..];
             let Some(end) = rest.find('}') else { break };
             let name = rest[..end].to_string();
             rest = &rest[end + 1..];

@@ -144,8 +144,21 @@ pub(super) fn results(
         worst_off,
         distant,
     ));
-    let moved_rejected = good.iter().all(|(d, bd)| d + k * half > *bd);
-    let second = b
+    let second = distance_result(b, case, &good, &bad, k * half);
+    vec![first, second]
+}
+
+/// Whether the tested point is distant from the line exactly for the wrong assignments
+/// (`good`, `bad`: distance and bound per panel); the mutant moves a correct one by `shift`.
+fn distance_result(
+    b: &ResultBuilder,
+    case: &IdentityExampleCase,
+    good: &[(f64, f64)],
+    bad: &[(f64, f64)],
+    shift: f64,
+) -> ClaimResult {
+    let moved_rejected = good.iter().all(|(d, bd)| d + shift > *bd);
+    b
         .claim(&case.panels.claim)
         .suffix("distance")
         .printed("the tested point is distant from the line for the wrong assignments", Value::count(bad.len()))
@@ -154,8 +167,7 @@ pub(super) fn results(
         .tolerance(Tolerance::bound(good.iter().map(|x| x.1).fold(0.0, f64::max), ToleranceSource::Propagated, "the line's rounding at the tested point (as for the endpoints)"))
         .power(Power::mutant(moved_rejected, "a correct panel's tested point moved by the mutant's half units is called distant by the same test"))
         .method("distance of each panel's tested point (#1) from the line of its printed block")
-        .verdict(judge_distance(&good, &bad));
-    vec![first, second]
+        .verdict(judge_distance(good, bad))
 }
 
 /// Each endpoint off its line, named by its panel's line, and the largest such distance.
@@ -225,45 +237,10 @@ fn figure(
                 .with_vertices()
                 .beneath(),
             ];
-            let mut title = format!("line {}", p.line);
-            if let Some(f) = fit {
-                let line = blocks
-                    .iter()
-                    .filter(|bl| {
-                        bl.assignment() == Some(f.assignment) && bl.attempt.version == f.version
-                    })
-                    .find_map(|bl| bl.recomputed.as_ref().map(|r| r.line));
-                if let Some(c) = line.and_then(|l| clip_line(l[0], l[1], box_half)) {
-                    layers.push(Layer::new(
-                        "T₂ₐT₂_b (recomputed)",
-                        Shape::Line,
-                        Style::Computed,
-                        c.to_vec(),
-                    ));
-                }
-                let off: Vec<[f64; 2]> = (0..2)
-                    .filter(|&e| f.endpoint_distance[e] > f.endpoint_bound[e])
-                    .filter_map(|e| p.segment.get(e).map(xy))
-                    .collect();
-                if !off.is_empty() {
-                    layers.push(Layer::new(
-                        "endpoint off the line beyond rounding",
-                        Shape::Points,
-                        Style::Mark,
-                        off,
-                    ));
-                }
-                let sign = if f.version < 0 { "b −" } else { "b +" };
-                title = format!(
-                    "line {}: {}{sign}",
-                    p.line,
-                    if f.assignment == *truth {
-                        "correct, "
-                    } else {
-                        ""
-                    }
-                );
-            }
+            let title = match fit {
+                Some(f) => fit_layers(p, f, blocks, box_half, truth, &mut layers),
+                None => format!("line {}", p.line),
+            };
             Plot::image(&title, layers)
         })
         .collect();
@@ -274,6 +251,52 @@ fn figure(
         caption: "Every panel of the §5.2 figure (a triangle with a line): frame 2 re-centred at the assigned R, the tested point, the segment the paper draws (wide, beneath), and the line T₂ₐT₂_b recomputed at the printed d0 (dashed, clipped to the panel's box); a ring marks a segment endpoint farther from the line of its printed block than the rounding allows.".into(),
         panels: plots,
     });
+}
+
+/// The layers a fitted panel adds (the recomputed line, the endpoints off it) and its title.
+fn fit_layers(
+    p: &crate::cases::Panel,
+    f: &PanelFit,
+    blocks: &[Block],
+    box_half: f64,
+    truth: &[usize; 4],
+    layers: &mut Vec<Layer>,
+) -> String {
+    let xy = |q: &[Printed; 2]| [q[0].to_f64(), q[1].to_f64()];
+    let line = blocks
+        .iter()
+        .filter(|bl| bl.assignment() == Some(f.assignment) && bl.attempt.version == f.version)
+        .find_map(|bl| bl.recomputed.as_ref().map(|r| r.line));
+    if let Some(c) = line.and_then(|l| clip_line(l[0], l[1], box_half)) {
+        layers.push(Layer::new(
+            "T₂ₐT₂_b (recomputed)",
+            Shape::Line,
+            Style::Computed,
+            c.to_vec(),
+        ));
+    }
+    let off: Vec<[f64; 2]> = (0..2)
+        .filter(|&e| f.endpoint_distance[e] > f.endpoint_bound[e])
+        .filter_map(|e| p.segment.get(e).map(xy))
+        .collect();
+    if !off.is_empty() {
+        layers.push(Layer::new(
+            "endpoint off the line beyond rounding",
+            Shape::Points,
+            Style::Mark,
+            off,
+        ));
+    }
+    let sign = if f.version < 0 { "b −" } else { "b +" };
+    format!(
+        "line {}: {}{sign}",
+        p.line,
+        if f.assignment == *truth {
+            "correct, "
+        } else {
+            ""
+        }
+    )
 }
 
 #[cfg(test)]
