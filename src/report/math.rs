@@ -491,10 +491,11 @@ fn push_script(out: &mut String, mark: char, t: &str) {
     }
 }
 
-/// True when `s` reads as LaTeX (a backslash command or a braced group) rather than plain
-/// notation.
+/// True when `s` reads as LaTeX (a backslash command) rather than plain notation. A braced
+/// group alone does not make LaTeX: plain transcriptions group scripts with braces too
+/// (`f_{b²}`) and keep the spaces between their words.
 fn is_latex(s: &str) -> bool {
-    s.contains('\\') || s.contains('{')
+    s.contains('\\')
 }
 
 /// A formula as plain Unicode text; `names` also expands plain-notation macro names
@@ -589,6 +590,11 @@ mod tests {
         assert_eq!(math_text("2*a_i^2*b_1^4", &m, false), "2·aᵢ²·b₁⁴");
         assert_eq!(math_text("d_Cst1 - d_a2", &m, false), "d_Cst1 − dₐ₂");
         assert_eq!(math_text("well-posed", &m, false), "well-posed");
+        // braces group a script; the words keep their spaces
+        assert_eq!(
+            math_text("symbols f_cb f_b, f_{b²}", &m, false),
+            "symbols f_cb f_b, f_(b²)"
+        );
         assert_eq!(
             math_text("(faca1-faca3)", &m, true),
             "(2(−a₁²+b₁²+c₁²)−2(−a₃²+b₃²+c₃²))"
