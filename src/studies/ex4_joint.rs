@@ -353,28 +353,35 @@ pub struct JointMutant {
 }
 
 /// The same fit, warm-started at `p`, for every nonzero entry moved alone by ± each shift.
+/// The refits are independent: they run in parallel and are collected in a fixed order.
 pub fn joint_mutants(inp: &JointInput, p: &[f64], shifts: &[f64]) -> Vec<JointMutant> {
-    let mut out = Vec::new();
+    use rayon::prelude::*;
+    let mut moves = Vec::new();
     for (i, h) in inp.half.iter().enumerate() {
         for j in (0..7).filter(|j| h[*j] > 0.0) {
             for shift in shifts.iter().flat_map(|m| [-m, *m]) {
-                let mut rows = inp.rows.to_vec();
-                rows[i][j] += shift * h[j];
-                let moved = JointInput {
-                    rows: &rows,
-                    ..inp.clone()
-                };
-                let worst = joint_fit(&moved, Some(p)).map_or(f64::INFINITY, |f| f.0.worst);
-                out.push(JointMutant {
-                    row: i,
-                    column: j,
-                    shift,
-                    worst,
-                });
+                moves.push((i, j, shift));
             }
         }
     }
-    out
+    moves
+        .into_par_iter()
+        .map(|(i, j, shift)| {
+            let mut rows = inp.rows.to_vec();
+            rows[i][j] += shift * inp.half[i][j];
+            let moved = JointInput {
+                rows: &rows,
+                ..inp.clone()
+            };
+            let worst = joint_fit(&moved, Some(p)).map_or(f64::INFINITY, |f| f.0.worst);
+            JointMutant {
+                row: i,
+                column: j,
+                shift,
+                worst,
+            }
+        })
+        .collect()
 }
 
 #[cfg(test)]
