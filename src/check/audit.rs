@@ -177,11 +177,22 @@ fn formula_result(b: &ResultBuilder, f: &FormulaItem, x: &FormulaFinding) -> (Cl
     } else {
         r = r.tolerance(Tolerance::exact("exact comparison over ℚ"));
     }
-    if verdict == Verdict::Erratum {
-        r = r.correction(should_be.clone());
+    finish_formula(r, f, verdict, should_be)
+}
+
+/// The end of every formula item, macro-level or expanded: the correction of an erratum (or
+/// what it should be, for the rest), the verdict, and the line the audit table shows.
+fn finish_formula(
+    r: ClaimBuilder<'_>,
+    f: &FormulaItem,
+    verdict: Verdict,
+    should_be: String,
+) -> (ClaimResult, Shown) {
+    let r = if verdict == Verdict::Erratum {
+        r.correction(should_be.clone())
     } else {
-        r = r.detail("should be", Value::formula(should_be.clone()));
-    }
+        r.detail("should be", Value::formula(should_be.clone()))
+    };
     let shown = Shown {
         place: f.place.clone(),
         printed: f

@@ -251,26 +251,3 @@ pub fn rank_example(ex: &Example, truth: &[usize; 4], factor: f64) -> ExampleRan
         true_bound,
     }
 }
-
-/// Generic bodies of four points: in how many of `trials` scenes (seed + k) both signs of b
-/// put T₂ on its line for the true assignment at c = `factor` × the smallest admissible c;
-/// returns (both, scenes).
-pub fn both_signs_generic(trials: usize, seed: u64, factor: f64) -> (usize, usize) {
-    let (mut both, mut total) = (0, 0);
-    for k in 0..trials {
-        let tr = Scene::random(4, 2, seed.wrapping_add(k as u64)).tracks();
-        let a: [Vector2<f64>; 4] = std::array::from_fn(|i| tr.frames[0][i]);
-        let g: [Vector2<f64>; 4] = std::array::from_fn(|i| tr.frames[1][i]);
-        let s = image_size(&tr.frames[1]);
-        if let Some(c) = smallest_c(&a, &g) {
-            let signs: std::collections::BTreeSet<i64> = paper_tests(&a, &g, c * factor)
-                .iter()
-                .filter(|t| t.distance / s <= distance_level())
-                .map(|t| t.sign_b as i64)
-                .collect();
-            total += 1;
-            both += usize::from(signs.len() == 2);
-        }
-    }
-    (both, total)
-}

@@ -110,22 +110,7 @@ pub(super) fn expanded_result(
         (Verdict::Erratum, Some(c)) => format!("{c}   (= {what}, every macro expanded)"),
         _ => format!("{what}, every macro expanded"),
     };
-    if verdict == Verdict::Erratum {
-        r = r.correction(should_be.clone());
-    } else {
-        r = r.detail("should be", Value::formula(should_be.clone()));
-    }
-    let shown = Shown {
-        place: f.place.clone(),
-        printed: f
-            .printed
-            .clone()
-            .or_else(|| f.printed_text.clone())
-            .unwrap_or_default(),
-        defect: f.defect.clone(),
-        should_be,
-    };
-    (r.verdict(verdict), shown)
+    super::finish_formula(r, f, verdict, should_be)
 }
 
 #[cfg(test)]

@@ -103,12 +103,6 @@ pub struct Recomputed {
     /// The floating-point error bound: 64ε times the largest magnitude in the attempt
     /// (a few dozen operations on numbers of that size).
     pub float_bound: f64,
-    /// The depths of Pa and Pb in frame 2 with R at depth 0, and with P at depth 0.
-    pub depths_r: [f64; 2],
-    /// Their first-order bounds.
-    pub depths_r_bound: [f64; 2],
-    /// With P at depth 0.
-    pub depths_p: [f64; 2],
     /// T₂ₐ and T₂_b.
     pub line: [[f64; 2]; 2],
     /// d0 against the longest projection of RP and against the smallest admissible c.
@@ -177,11 +171,6 @@ pub fn recompute(
     let f = |y: &[f64]| test_at(y, version, sign2).map(|t| twelve(&t, Vector2::new(y[14], y[15])));
     let values = twelve(&test, g2[3]);
     let bounds = first_order_bound(&f, &x, &half)?;
-    let zr = test.depths2[2];
-    let fz = |y: &[f64]| {
-        test_at(y, version, sign2).map(|t| vec![t.ta2.z - t.depths2[2], t.tb2.z - t.depths2[2]])
-    };
-    let zb = first_order_bound(&fz, &x, &half)?;
     let magnitude = values.iter().fold(d.value * d.value, |m, v| m.max(v.abs()));
     let longest = (g1[2] - g1[0]).norm().max((g2[2] - g2[0]).norm());
     Some(Recomputed {
@@ -189,9 +178,6 @@ pub fn recompute(
         values: std::array::from_fn(|k| values[k]),
         bounds: std::array::from_fn(|k| bounds[k]),
         float_bound: NEGLIGIBLE_ULPS * f64::EPSILON * magnitude,
-        depths_r: [test.ta2.z - zr, test.tb2.z - zr],
-        depths_r_bound: [zb[0], zb[1]],
-        depths_p: [test.ta2.z, test.tb2.z],
         line: [[test.ta2.x, test.ta2.y], [test.tb2.x, test.tb2.y]],
         d_over_projection: d.value / longest,
         d_over_smallest: smallest_c(&g1, &g2).map(|c| d.value / c),
