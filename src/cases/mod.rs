@@ -4,6 +4,7 @@
 //! both its exact value and its precision.
 
 mod audit;
+mod counts;
 mod errata;
 mod examples;
 mod formula_size;
@@ -18,6 +19,7 @@ mod source;
 mod validate;
 
 pub use audit::*;
+pub use counts::{LiteratureCount, PaperCount, SolutionCountCase};
 pub use errata::{
     parse_lines, quote_at, quote_within, Balance, Configuration, Decision, Finding, FindingKind,
     LabelPicture, NamedPoint, Place as SourcePlace, PrintedLabel, SourceErrataCase, SourceText,
@@ -90,6 +92,8 @@ pub enum CaseCheck {
     NoiseStudy(NoiseStudyCase),
     /// Errata of the text, each quoted at its lines of the LaTeX source.
     SourceErrata(SourceErrataCase),
+    /// Exact solution counts of three and four points in three frames, and the literature's.
+    SolutionCount(SolutionCountCase),
 }
 
 impl Case {
@@ -109,6 +113,7 @@ impl Case {
             CaseCheck::IdentityCensus(c) => vec![c.seed],
             CaseCheck::IdentityExample(c) => vec![c.seed],
             CaseCheck::NoiseStudy(c) => vec![c.seed],
+            CaseCheck::SolutionCount(c) => vec![c.seed],
             CaseCheck::NotReproducible(_)
             | CaseCheck::Restatements(_)
             | CaseCheck::SourceErrata(_) => Vec::new(),

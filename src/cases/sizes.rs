@@ -37,6 +37,12 @@ pub(super) fn check_sizes(case: &Case, v: &Validator) -> Result<()> {
         }
         CaseCheck::IdentityExample(c) => identity_example(c, v),
         CaseCheck::NoiseStudy(c) => noise_study(c, v),
+        CaseCheck::SolutionCount(c) => v.limit(
+            "check.solution_count.instances",
+            "instances",
+            c.instances,
+            limits::COUNT_INSTANCES,
+        ),
         CaseCheck::NotReproducible(_) | CaseCheck::Restatements(_) | CaseCheck::SourceErrata(_) => {
             Ok(())
         }
@@ -312,6 +318,7 @@ pub(super) fn trials_positive(case: &Case, v: &Validator) -> Result<()> {
         }
         CaseCheck::TwoFrames(c) => zero("check.two_frames.trials", c.trials),
         CaseCheck::IdentityCensus(c) => zero("check.identity_census.trials", c.trials),
+        CaseCheck::SolutionCount(c) => zero("check.solution_count.instances", c.instances),
         _ => Ok(()),
     }
 }

@@ -103,6 +103,7 @@ pub(super) fn validate(case: &Case, text: &str, path: &Path) -> Result<()> {
         CaseCheck::NotReproducible(c) => not_reproducible(c, v),
         CaseCheck::P3f3Example(c) => p3f3_example(c, v),
         CaseCheck::SourceErrata(c) => source_errata(c, v),
+        CaseCheck::SolutionCount(c) => solution_count(c, v),
     }
 }
 
@@ -599,4 +600,35 @@ pub fn parse_signs(text: &str) -> Option<[i64; 3]> {
         })
         .collect::<Option<_>>()?;
     signs.try_into().ok()
+}
+
+/// The printed counts must be whole numbers (they are counts of solutions).
+fn solution_count(c: &SolutionCountCase, v: &Validator) -> Result<()> {
+    let fields = [
+        (
+            "check.solution_count.three_points.at_most",
+            &c.three_points.at_most,
+        ),
+        (
+            "check.solution_count.four_points.at_most",
+            &c.four_points.at_most,
+        ),
+        (
+            "check.solution_count.literature.three_points",
+            &c.literature.three_points,
+        ),
+        (
+            "check.solution_count.literature.four_points",
+            &c.literature.four_points,
+        ),
+    ];
+    for (field, p) in fields {
+        if p.to_integer().is_none() || p.value < num_rational::BigRational::from_integer(0.into()) {
+            return v.err(
+                field,
+                format!("`{}` is not a whole number of solutions", p.text),
+            );
+        }
+    }
+    Ok(())
 }

@@ -12,6 +12,7 @@ mod p3f3;
 mod p3f3_restricted;
 mod p4f3;
 mod p4f3_joint;
+mod solution_count;
 mod two_frames;
 mod two_frames_member;
 mod twofold;
@@ -200,6 +201,7 @@ fn dispatch(b: &ResultBuilder, case: &Case) -> Result<Vec<ClaimResult>> {
         CaseCheck::IdentityCensus(c) => identity::check(b, c),
         CaseCheck::IdentityExample(c) => identity_example::check(b, c),
         CaseCheck::SourceErrata(c) => errata::check(b, c),
+        CaseCheck::SolutionCount(c) => solution_count::check(b, c),
         CaseCheck::Restatements(_) => Err(crate::error::Error::InvalidInput(format!(
             "case {}: restatements are decided from the other cases' results (run_all)",
             case.id

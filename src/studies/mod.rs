@@ -19,5 +19,6 @@ pub mod panels;
 pub mod points;
 pub mod printed_matrix;
 pub mod rounding;
+pub mod solution_count;
 pub mod two_frames;
 pub mod twofold;
