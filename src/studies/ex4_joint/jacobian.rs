@@ -155,48 +155,49 @@ fn projection_jacobian(inp: &JointInput, p: &[f64]) -> Option<DMatrix<f64>> {
     Some(d)
 }
 
-/// d(squared length of `edge` in frame `f`, 0-based)/d(parameters), from the projections
-/// `x` and their Jacobian `d`.
-fn length_gradient(x: &[f64], d: &DMatrix<f64>, f: usize, edge: (usize, usize)) -> Vec<f64> {
-    let (a, b) = (2 * (POINTS * f + edge.0), 2 * (POINTS * f + edge.1));
-    let mut g = vec![0.0; d.ncols()];
-    for i in 0..2 {
-        let diff = 2.0 * (x[a + i] - x[b + i]);
-        for (k, gk) in g.iter_mut().enumerate() {
-            *gk += diff * (d[(a + i, k)] - d[(b + i, k)]);
-        }
-    }
-    g
+/// Every squared length of every frame (frame-major, edges in `model::edges` order) with
+/// its gradient over the parameters, from the projections `x` and their Jacobian `d`:
+/// computed once per Jacobian, shared by every row that uses the edge.
+fn length_table(x: &[f64], d: &DMatrix<f64>) -> Vec<(f64, Vec<f64>)> {
+    let per_frame = POINTS * (POINTS - 1) / 2;
+    (0..x.len() / (2 * POINTS))
+        .flat_map(|f| (0..per_frame).map(move |e| (f, crate::model::edge(e))))
+        .map(|(f, (i, j))| {
+            let (a, b) = (2 * (POINTS * f + i), 2 * (POINTS * f + j));
+            let mut g = vec![0.0; d.ncols()];
+            for c in 0..2 {
+                let diff = 2.0 * (x[a + c] - x[b + c]);
+                for (k, gk) in g.iter_mut().enumerate() {
+                    *gk += diff * (d[(a + c, k)] - d[(b + c, k)]);
+                }
+            }
+            let v = (x[a] - x[b]).powi(2) + (x[a + 1] - x[b + 1]).powi(2);
+            (v, g)
+        })
+        .collect()
 }
 
 /// Per column of a printed row, the gradient of `factor · (F_first − F_second)`'s entry.
 /// Entry `triangle[t]` is 2·factor·(L_t(first) − L_t(second)) with L = (α, β, γ) linear in
 /// the triangle's squared lengths; the constant is factor·(K(first) − K(second)) with
 /// ∂K/∂(a², b², c²) = −2(α, β, γ).
-fn row_gradient(x: &[f64], d: &DMatrix<f64>, m: &RowMatch) -> [Vec<f64>; 7] {
-    let edges = crate::model::edges(POINTS);
+fn row_gradient(lengths: &[(f64, Vec<f64>)], n: usize, m: &RowMatch) -> [Vec<f64>; 7] {
     // the signs of a², b², c² in α, β, γ
     const SIGNS: [[f64; 3]; 3] = [[-1.0, 1.0, 1.0], [1.0, -1.0, 1.0], [1.0, 1.0, -1.0]];
-    let mut out: [Vec<f64>; 7] = std::array::from_fn(|_| vec![0.0; d.ncols()]);
+    let per_frame = POINTS * (POINTS - 1) / 2;
+    let mut out: [Vec<f64>; 7] = std::array::from_fn(|_| vec![0.0; n]);
     for (f, sign) in [(m.first, 1.0), (m.second, -1.0)] {
-        let l: Vec<f64> = m
-            .triangle
-            .iter()
-            .map(|e| {
-                let (i, j) = edges[*e];
-                let (a, b) = (2 * (POINTS * (f - 1) + i), 2 * (POINTS * (f - 1) + j));
-                (x[a] - x[b]).powi(2) + (x[a + 1] - x[b + 1]).powi(2)
-            })
-            .collect();
+        let at = |e: usize| &lengths[(f - 1) * per_frame + e];
+        let l = m.triangle.map(|e| at(e).0);
         for (s, e) in m.triangle.iter().enumerate() {
-            let g = length_gradient(x, d, f - 1, edges[*e]);
+            let g = &at(*e).1;
             let dk = -2.0 * (0..3).map(|t| SIGNS[s][t] * l[t]).sum::<f64>();
             for (t, e_t) in m.triangle.iter().enumerate() {
                 let c = sign * m.factor * 2.0 * SIGNS[t][s];
-                out[*e_t].iter_mut().zip(&g).for_each(|(o, v)| *o += c * v);
+                out[*e_t].iter_mut().zip(g).for_each(|(o, v)| *o += c * v);
             }
             let c = sign * m.factor * dk;
-            out[6].iter_mut().zip(&g).for_each(|(o, v)| *o += c * v);
+            out[6].iter_mut().zip(g).for_each(|(o, v)| *o += c * v);
         }
     }
     out
@@ -215,8 +216,9 @@ pub(super) fn scaled_jacobian(
     let mut rows: Vec<Vec<f64>> = (0..x.len())
         .map(|i| d.row(i).iter().map(|v| v / inp.figure.half[i]).collect())
         .collect();
+    let lengths = length_table(&x, &d);
     for (m, h) in matches.iter().zip(inp.half) {
-        let g = row_gradient(&x, &d, m);
+        let g = row_gradient(&lengths, p.len(), m);
         for j in (0..7).filter(|j| h[*j] > 0.0) {
             rows.push(g[j].iter().map(|v| v / h[j]).collect());
         }
