@@ -53,7 +53,14 @@ pub(super) fn figure(
     };
     let failures: Vec<String> = res
         .iter()
-        .map(|r| format!("{} of {} under the {} model", r.failures, r.trials, r.model))
+        .map(|r| {
+            format!(
+                "{} of {} with {}",
+                r.failures,
+                r.trials,
+                series_name(&r.model)
+            )
+        })
         .collect();
     let (trials, seed) = study;
     Figure {
