@@ -1,5 +1,7 @@
 //! Speed goal of the whole report (every case, ≥ 10,000 trials per noise level, figures and
-//! the HTML page): < 5 s after a release build.
+//! the HTML page): < 5 s after a release build. Beside it the slowest case alone, §4's four
+//! points (the joint fit of one configuration to figure and table, refitted for 96 mutants),
+//! so that a regression there shows by itself.
 
 use std::path::Path;
 
@@ -19,6 +21,20 @@ fn report(c: &mut Criterion) {
         b.iter(|| {
             let r = Report::from_cases(&all).expect("the report runs");
             html::render(&r).len()
+        })
+    });
+    let ex4: Vec<_> = all
+        .iter()
+        .filter(|c| c.id == "ex4-four-points")
+        .cloned()
+        .collect();
+    assert_eq!(ex4.len(), 1, "the §4 case is among the paper cases");
+    g.bench_function("ex4_four_points", |b| {
+        b.iter(|| {
+            Report::from_cases(&ex4)
+                .expect("the §4 case runs")
+                .claims
+                .len()
         })
     });
     g.finish();

@@ -117,11 +117,11 @@ fn figure(b: &ResultBuilder, case: &DofIdentifiabilityCase, grid: &[Identifiabil
             equal_aspect: false,
             log_x: false,
             layers: vec![
-                Layer::new("count: too few", Shape::Points, Style::Other, cat(&|r| r.count.balance < 0)),
-                Layer::new("count: enough, rank: ambiguous", Shape::Points, Style::Mark, cat(&|r| r.count.balance >= 0 && r.deficiency > 0)),
-                Layer::new("count: enough, rank: identifiable", Shape::Points, Style::Computed, cat(&|r| r.count.balance >= 0 && r.deficiency == 0 && r.count.points >= SHAPE_POINTS)),
+                Layer::new("more df than information", Shape::Points, Style::Other, cat(&|r| r.count.balance < 0)),
+                Layer::new("balance holds, not recoverable", Shape::Points, Style::Mark, cat(&|r| r.count.balance >= 0 && r.deficiency > 0)),
+                Layer::new("recoverable", Shape::Points, Style::Computed, cat(&|r| r.count.balance >= 0 && r.deficiency == 0 && r.count.points >= SHAPE_POINTS)),
                 // a single point has no shape: its full rank identifies nothing but its image
-                Layer::new("a single point: no shape to identify", Shape::Points, Style::Third, cat(&|r| r.count.balance >= 0 && r.count.points < SHAPE_POINTS)),
+                Layer::new("one point: no shape", Shape::Points, Style::Third, cat(&|r| r.count.balance >= 0 && r.count.points < SHAPE_POINTS)),
             ],
             window: Some((
                 [0.5, case.max_points as f64 + 0.5],

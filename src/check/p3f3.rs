@@ -393,7 +393,7 @@ fn figures(
             .beneath()];
             if let Some(w) = &s.body_fit {
                 layers.push(Layer::new(
-                    "exact view inside the rounding box",
+                    "exact view within rounding",
                     Shape::Polygon,
                     Style::Computed,
                     frame_points(&w.point, i),
@@ -431,7 +431,7 @@ fn rounding_figure(b: &ResultBuilder, case: &P3f3ExampleCase, s: &Study, targets
     let mut layers: Vec<Layer> = (0..targets.len())
         .map(|k| {
             Layer::new(
-                &format!("root near printed solution {}", k + 1),
+                &format!("roots near solution {}", k + 1),
                 Shape::Points,
                 Style::series(k),
                 root(k),
@@ -440,7 +440,7 @@ fn rounding_figure(b: &ResultBuilder, case: &P3f3ExampleCase, s: &Study, targets
         .collect();
     let thinned: usize = layers.iter().map(|l| l.points.len()).sum();
     layers.push(Layer::new(
-        "root at the printed coordinates",
+        "at the printed coordinates",
         Shape::Points,
         Style::Printed,
         s.at_printed.iter().map(|r| [r[0], r[2]]).collect(),

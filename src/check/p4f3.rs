@@ -203,7 +203,7 @@ fn figure(b: &ResultBuilder, case: &P4f3ExampleCase, bx: &RoundingBox, fit: &Fig
             if let Some(w) = &fit.witness {
                 layers.extend(tetra(
                     &unflat(&w.point, i),
-                    "exact view inside the rounding box",
+                    "exact view within rounding",
                     Style::Computed,
                 ));
             }

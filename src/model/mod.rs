@@ -58,6 +58,25 @@ pub fn edges(p: usize) -> Vec<(usize, usize)> {
     e
 }
 
+/// The `e`-th edge of [`edges`] (the same for every body that has it), without building
+/// the list: the edges of point j ≥ 3 start at j(j − 1)/2.
+///
+/// # Example
+/// ```
+/// use orthocheck::model::{edge, edges};
+/// assert!(edges(6).iter().enumerate().all(|(e, pair)| edge(e) == *pair));
+/// ```
+pub fn edge(e: usize) -> (usize, usize) {
+    if e < 3 {
+        return [(0, 1), (1, 2), (2, 0)][e];
+    }
+    let mut j = 3;
+    while (j + 1) * j / 2 <= e {
+        j += 1;
+    }
+    (j, e - j * (j - 1) / 2)
+}
+
 /// Squared lengths of every edge (in [`edges`] order) of one frame's image points
 /// `[x, y]`: the one place image coordinates become the paper's aᵢ², bᵢ², cᵢ², ….
 ///

@@ -444,33 +444,16 @@ fn evidence_html(page: &Page, c: &ClaimResult, trials: Option<u64>) -> String {
     s
 }
 
-/// A figure: its panels, its caption and the key of its series (a coloured swatch beside
-/// each name; the name itself in the text colour).
+/// A figure: its panels and its caption. The key of its series is drawn once, inside the
+/// SVG beside the plot; the caption says in words what the figure shows.
 pub fn figure_html(f: &Figure) -> String {
     let mut s = format!("<figure id=\"{}\"><div class=\"panels\">", escape(&f.id));
     s.push_str(&super::svg::figure_svg(f, false));
-    let mut key: Vec<(String, crate::check::figure::Style)> = Vec::new();
-    for l in f.panels.iter().flat_map(|p| &p.layers) {
-        if !l.name.is_empty() && !key.iter().any(|(n, _)| n == &l.name) {
-            key.push((l.name.clone(), l.style));
-        }
-    }
-    let key: Vec<String> = key
-        .iter()
-        .map(|(n, st)| {
-            format!(
-                "<span><span class=\"swatch\" style=\"color: {}\" aria-hidden=\"true\">■</span> {}</span>",
-                super::svg::css_colour(*st),
-                escape(n)
-            )
-        })
-        .collect();
     let _ = write!(
         s,
-        "</div><figcaption><strong>{}</strong> — {}<br>{}</figcaption></figure>",
+        "</div><figcaption><strong>{}</strong> — {}</figcaption></figure>",
         plain_label(&f.title),
-        plain_label(&f.caption),
-        key.join(" · ")
+        plain_label(&f.caption)
     );
     s
 }

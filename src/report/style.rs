@@ -93,7 +93,6 @@ dl { display: grid; grid-template-columns: 9rem minmax(0, 1fr); gap: .15rem .8re
 details { margin-top: .4rem; } summary { cursor: pointer; color: #0b57a4; }
 figure { margin: .8rem 0; max-width: 100%; } figcaption { color: #444; font-size: .88rem; margin-top: .2rem; }
 .panels { display: flex; flex-wrap: wrap; gap: .5rem; } .panels svg { border: 1px solid #eee; max-width: 100%; height: auto; }
-.swatch { font-size: 1.1em; }
 .strip { display: flex; flex-wrap: wrap; gap: .6rem; margin: 1rem 0; padding: 0; list-style: none; }
 .strip > li { border: 1px solid #ddd; border-radius: 6px; padding: .4rem .7rem; flex: 1 1 10rem; }
 .strip .group { font-weight: 600; display: block; } .strip .total { font-size: 1.5rem; font-weight: 700; }

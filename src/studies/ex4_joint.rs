@@ -9,6 +9,8 @@ use super::rounding::RoundingBox;
 use crate::algebra::{central_jacobian, complete_rotation, orthonormal_rows};
 use crate::derivations::p4f3::solve_points;
 
+mod jacobian;
+
 /// Points per frame of §4's example.
 const POINTS: usize = 4;
 
@@ -239,32 +241,72 @@ fn start(inp: &JointInput) -> Option<Vec<f64>> {
     Some(p)
 }
 
+/// Residuals of a parameter vector (`None`: undefined there).
+pub type Residuals<'a> = &'a dyn Fn(&[f64]) -> Option<Vec<f64>>;
+
+/// The Jacobian of [`Residuals`] (`None`: undefined there).
+pub type ResidualJacobian<'a> = &'a dyn Fn(&[f64]) -> Option<DMatrix<f64>>;
+
 /// Minimise the largest |rᵢ| of `f` from `x0`: the Lᵖ stages of [`STAGES`], least squares
-/// first. `None` when `f` is undefined at the start.
-pub fn lp_minimax(f: &dyn Fn(&[f64]) -> Option<Vec<f64>>, x0: &[f64]) -> Option<Vec<f64>> {
+/// first, with central-difference Jacobians. `None` when `f` is undefined at the start.
+pub fn lp_minimax(f: Residuals, x0: &[f64]) -> Option<Vec<f64>> {
+    lp_minimax_with(f, None, x0)
+}
+
+/// [`lp_minimax`] with the Jacobian `jac` of `f` when one is known (central differences
+/// otherwise).
+pub fn lp_minimax_with(
+    f: Residuals,
+    jac: Option<ResidualJacobian>,
+    x0: &[f64],
+) -> Option<Vec<f64>> {
     let mut p = x0.to_vec();
     for power in STAGES {
-        p = lp_stage(f, &p, power)?;
+        p = lp_stage(f, jac, &p, power)?;
     }
     Some(p)
 }
 
-/// Levenberg–Marquardt on Σ gᵢ², gᵢ = sign(rᵢ)|rᵢ|^(p/2): the Lᵖ norm of the residuals.
-fn lp_stage(f: &dyn Fn(&[f64]) -> Option<Vec<f64>>, x0: &[f64], power: f64) -> Option<Vec<f64>> {
-    let g = |x: &[f64]| {
-        f(x).map(|r| {
-            r.iter()
-                .map(|v| v.signum() * v.abs().powf(power / 2.0))
-                .collect::<Vec<f64>>()
-        })
+/// The Jacobian of g = sign(r)|r|^(p/2) at `x` (residuals `r` there): from `jac` by the
+/// chain rule, ∂gᵢ = (p/2)|rᵢ|^(p/2 − 1) ∂rᵢ, or by central differences of `g`.
+fn lp_jacobian(
+    g: Residuals,
+    jac: Option<ResidualJacobian>,
+    x: &[f64],
+    r: &[f64],
+    power: f64,
+) -> Option<DMatrix<f64>> {
+    let Some(jac) = jac else {
+        return central_jacobian(g, x, |_, xj| 1e-7 * xj.abs().max(1.0));
     };
+    let mut j = jac(x)?;
+    for (i, mut row) in j.row_iter_mut().enumerate() {
+        row *= power / 2.0 * r[i].abs().powf(power / 2.0 - 1.0);
+    }
+    j.iter().all(|v| v.is_finite()).then_some(j)
+}
+
+/// Levenberg–Marquardt on Σ gᵢ², gᵢ = sign(rᵢ)|rᵢ|^(p/2): the Lᵖ norm of the residuals.
+fn lp_stage(
+    f: Residuals,
+    jac: Option<ResidualJacobian>,
+    x0: &[f64],
+    power: f64,
+) -> Option<Vec<f64>> {
+    let lp = |r: Vec<f64>| -> Vec<f64> {
+        r.iter()
+            .map(|v| v.signum() * v.abs().powf(power / 2.0))
+            .collect()
+    };
+    let g = |x: &[f64]| f(x).map(lp);
     let cost = |r: &[f64]| r.iter().map(|v| v * v).sum::<f64>();
     let mut x = x0.to_vec();
-    let mut r = g(&x)?;
+    let mut raw = f(&x)?;
+    let mut r = lp(raw.clone());
     let mut c = cost(&r);
     let mut lambda = 1e-3;
     for _ in 0..STEPS {
-        let Some(j) = central_jacobian(&g, &x, |_, xj| 1e-7 * xj.abs().max(1.0)) else {
+        let Some(j) = lp_jacobian(&g, jac, &x, &raw, power) else {
             break;
         };
         let jt = j.transpose();
@@ -281,10 +323,11 @@ fn lp_stage(f: &dyn Fn(&[f64]) -> Option<Vec<f64>>, x0: &[f64], power: f64) -> O
                 continue;
             };
             let trial: Vec<f64> = x.iter().zip(dx.iter()).map(|(a, d)| a - d).collect();
-            if let Some(rt) = g(&trial) {
+            if let Some(rawt) = f(&trial) {
+                let rt = lp(rawt.clone());
                 let ct = cost(&rt);
                 if ct < c {
-                    (x, r, c) = (trial, rt, ct);
+                    (x, r, c, raw) = (trial, rt, ct, rawt);
                     lambda = (lambda / 10.0).max(1e-12);
                     improved = true;
                     break;
@@ -309,7 +352,8 @@ pub fn joint_fit(inp: &JointInput, p0: Option<&[f64]>) -> Option<(JointFit, Vec<
         Some(p) => p.to_vec(),
         None => start(inp)?,
     };
-    let p = lp_minimax(&f, &p0)?;
+    let jac = |p: &[f64]| jacobian::scaled_jacobian(inp, &matches, p);
+    let p = lp_minimax_with(&f, Some(&jac), &p0)?;
     let (squares, fr, views) = unpack(inp, &p)?;
     let x = flat(&fr);
     let figure_half_units: Vec<f64> = x

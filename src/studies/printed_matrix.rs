@@ -177,9 +177,14 @@ fn frame(x: &[f64], points: usize, f: usize) -> Vec<[f64; 2]> {
 
 /// The row `factor · (F_first − F_second)` of a triangle at flat coordinates `x`.
 pub fn row_at(x: &[f64], points: usize, m: &RowMatch) -> [f64; 7] {
+    // the triangle's three squared lengths only, as `model::squared_lengths` computes them
+    // (this runs inside every fit's residual: no lists built)
     let pick = |f: usize| {
-        let l = crate::model::squared_lengths(&frame(x, points, f - 1));
-        FrameCoefficients::new(m.triangle.map(|e| l[e]))
+        FrameCoefficients::new(m.triangle.map(|e| {
+            let (i, j) = crate::model::edge(e);
+            let (a, b) = (2 * (points * (f - 1) + i), 2 * (points * (f - 1) + j));
+            (x[a] - x[b]).powi(2) + (x[a + 1] - x[b + 1]).powi(2)
+        }))
     };
     let (c, k) = pick(m.first).difference(&pick(m.second));
     let mut row = [0.0; 7];

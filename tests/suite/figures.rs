@@ -344,11 +344,7 @@ fn the_dof_grid_shows_only_the_grid() {
     let p = &f.panels[0];
     let (_, y) = p.window.unwrap();
     assert!(y[0] > 0.0, "the frame axis starts at k = 1: {y:?}");
-    let identifiable = p
-        .layers
-        .iter()
-        .find(|l| l.name.ends_with("identifiable"))
-        .unwrap();
+    let identifiable = p.layers.iter().find(|l| l.name == "recoverable").unwrap();
     assert!(
         !identifiable.points.contains(&[1.0, 1.0]),
         "a single point in one frame has no shape to identify"

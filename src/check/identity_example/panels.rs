@@ -214,22 +214,17 @@ fn figure(
             let pts: Vec<[f64; 2]> = p.points.iter().map(xy).collect();
             let mut layers = vec![
                 Layer::new(
-                    "triangle (printed)",
+                    "printed triangle",
                     Shape::Polygon,
                     Style::Printed,
                     vec![pts[3], pts[1], pts[2]],
                 )
                 .labelled(&["P", "Q", "R"]),
-                Layer::new(
-                    "tested point (printed)",
-                    Shape::Points,
-                    Style::Third,
-                    vec![pts[0]],
-                )
-                .labelled(&["T"]),
+                Layer::new("printed point T", Shape::Points, Style::Third, vec![pts[0]])
+                    .labelled(&["T"]),
                 // wide beneath the recomputed line, which would otherwise hide it
                 Layer::new(
-                    "segment (printed)",
+                    "printed segment",
                     Shape::Line,
                     Style::Other,
                     p.segment.iter().map(xy).collect(),
@@ -269,7 +264,7 @@ fn fit_layers(
         .find_map(|bl| bl.recomputed.as_ref().map(|r| r.line));
     if let Some(c) = line.and_then(|l| clip_line(l[0], l[1], box_half)) {
         layers.push(Layer::new(
-            "T₂ₐT₂_b (recomputed)",
+            "recomputed T₂ₐT₂_b",
             Shape::Line,
             Style::Computed,
             c.to_vec(),
@@ -281,7 +276,7 @@ fn fit_layers(
         .collect();
     if !off.is_empty() {
         layers.push(Layer::new(
-            "endpoint off the line beyond rounding",
+            "endpoint off the line",
             Shape::Points,
             Style::Mark,
             off,

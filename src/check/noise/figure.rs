@@ -30,17 +30,12 @@ pub(super) fn figure(
                     .into_iter()
                     .map(|[x, y]| [PERCENT * x, y])
                     .collect();
-                Layer::new(
-                    &format!("{} model", r.model),
-                    Shape::Line,
-                    Style::series(k),
-                    steps,
-                )
+                Layer::new(&series_name(&r.model), Shape::Line, Style::series(k), steps)
             })
             .collect();
         if let Some(e) = run {
             layers.push(Layer::new(
-                "the paper's printed run",
+                "the paper's test run",
                 Shape::Verticals,
                 Style::Mark,
                 vec![[PERCENT * e.metrics[m], 0.5]],
@@ -58,7 +53,14 @@ pub(super) fn figure(
     };
     let failures: Vec<String> = res
         .iter()
-        .map(|r| format!("{} of {} under the {} model", r.failures, r.trials, r.model))
+        .map(|r| {
+            format!(
+                "{} of {} with {}",
+                r.failures,
+                r.trials,
+                series_name(&r.model)
+            )
+        })
         .collect();
     let (trials, seed) = study;
     Figure {
@@ -66,9 +68,18 @@ pub(super) fn figure(
         claim: id.to_string(),
         title: format!("Noise up to {} %: error distributions", percent_text(&lv.level)),
         caption: format!(
-            "For each noise model, the fraction of its successful trials whose largest relative error over the edges is at most x, in squared lengths and in lengths, over {trials} seeded trials per model (seed {seed}); the vertical line is the paper's printed run. Failed trials (no real solution with non-negative squares: {}) are not in the curves.",
+            "For each noise model, the fraction of its successful trials whose largest relative error over the edges is at most x, in squared lengths and in lengths, over {trials} seeded trials per model (seed {seed}); the vertical line is the paper's printed test run. Failed trials (no real solution with non-negative squares: {}) are not in the curves.",
             failures.join(", ")
         ),
         panels: vec![panel(0, "squares"), panel(2, "lengths")],
     }
+}
+
+/// A noise model's series name, short and in the paper's words ("errors of up to x %" of
+/// the coordinates or of the lengths).
+fn series_name(model: &str) -> String {
+    model
+        .replace("relative-coordinate", "errors in coordinates")
+        .replace("relative-length", "errors in lengths")
+        .replace(" at the paper's scene", ", paper's scene")
 }
