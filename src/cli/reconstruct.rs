@@ -25,7 +25,7 @@ pub struct Args {
     robust: bool,
     /// Inlier threshold of --robust: the largest distance, in image units, from an image
     /// point to its reprojection.
-    #[arg(long)]
+    #[arg(long, requires = "robust")]
     threshold: Option<f64>,
     /// Seed of --robust's sample generator.
     #[arg(long, default_value_t = DEFAULT_SEED)]
@@ -37,7 +37,22 @@ pub struct Args {
 
 /// Load the tracks, reconstruct, print.
 pub fn run(a: Args) -> Result<(), Error> {
+    if let Some(t) = a.threshold {
+        if !(t.is_finite() && t > 0.0) {
+            return Err(Error::InvalidInput(format!(
+                "--threshold {t}: the inlier threshold must be a positive number of image units"
+            )));
+        }
+    }
     let obs = load_observations(&a.input)?;
+    if a.robust {
+        orthocheck::limits::at_most(
+            "points × frames of --robust",
+            obs.names.len().saturating_mul(obs.frames.len()),
+            orthocheck::limits::RANSAC_OBSERVATIONS,
+        )
+        .map_err(|m| in_file(&a.input, Error::InvalidInput(m)))?;
+    }
     let side = (2 * obs.frames.len()).min(obs.names.len());
     orthocheck::limits::at_most(
         "the Gram matrix side min(2 × frames, points)",

@@ -114,9 +114,9 @@ impl State {
         for x in &mut s.pts {
             *x -= c;
         }
-        for f in 0..s.rot.len() {
-            let shift = s.rows(f) * c;
-            s.trans[f] += shift;
+        let shifts: Vec<Vector2<f64>> = (0..s.rot.len()).map(|f| s.rows(f) * c).collect();
+        for (t, shift) in s.trans.iter_mut().zip(shifts) {
+            *t += shift;
         }
         s
     }
@@ -195,12 +195,12 @@ fn solve(n: &Normal, by_point: &ByPoint, lambda: f64) -> Option<(Vec<Vec5>, Vec<
     let k = n.u.len();
     let mut s = DMatrix::<f64>::zeros(5 * k, 5 * k);
     let mut rhs = DVector::<f64>::zeros(5 * k);
-    for f in 0..k {
+    for (f, (u, g)) in n.u.iter().zip(&n.gc).enumerate() {
         for a in 0..5 {
             for b in 0..5 {
-                s[(5 * f + a, 5 * f + b)] = n.u[f][(a, b)] + if a == b { lambda } else { 0.0 };
+                s[(5 * f + a, 5 * f + b)] = u[(a, b)] + if a == b { lambda } else { 0.0 };
             }
-            rhs[5 * f + a] = -n.gc[f][a];
+            rhs[5 * f + a] = -g[a];
         }
     }
     let mut vinv = Vec::with_capacity(by_point.len());

@@ -150,15 +150,15 @@ fn grow(
         .collect();
     loop {
         let mut progress = false;
-        for j in 0..p {
+        for (j, seen) in by_point.iter().enumerate() {
             if points[j].is_none() {
-                points[j] = intersect(&frames, &by_point[j]);
+                points[j] = intersect(&frames, seen);
                 progress |= points[j].is_some();
             }
         }
-        for f in 0..k {
+        for (f, seen) in by_frame.iter().enumerate() {
             if frames[f].is_none() {
-                frames[f] = resect(&points, &by_frame[f]);
+                frames[f] = resect(&points, seen);
                 progress |= frames[f].is_some();
             }
         }
@@ -235,4 +235,23 @@ pub fn initial(obs: &Observations) -> Result<Reconstruction, Error> {
     rec.centre();
     units.back(&mut rec);
     Ok(rec)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::Scene;
+
+    #[test]
+    fn the_block_drops_the_sparsest_frame_and_point() {
+        let mut o = Observations::from_tracks(&Scene::random(6, 5, 1).tracks());
+        // frame 5 misses three points, point 6 misses one frame
+        for j in 0..3 {
+            o.frames[4][j] = None;
+        }
+        o.frames[1][5] = None;
+        let (f, p) = largest_complete_block(&o);
+        assert_eq!(f, [0, 1, 2, 3]);
+        assert_eq!(p, [0, 1, 2, 3, 4]);
+    }
 }

@@ -232,6 +232,28 @@ impl Units {
         Ok(Units { centre, scale })
     }
 
+    /// The units of complete tracks (as [`Units::of`] of their observations, without the
+    /// copy).
+    pub fn of_tracks(t: &crate::model::Tracks) -> Result<Units, Error> {
+        let all = || t.frames.iter().flatten();
+        let big = all().fold(0.0_f64, |m, y| m.max(y.amax()));
+        let pre = if big > 0.0 { pow2_floor(big) } else { 1.0 };
+        let n = all().count().max(1) as f64;
+        let centre = all().fold(Vector2::zeros(), |s, y| s + y / pre) / n * pre;
+        let extent = all().fold(0.0_f64, |m, y| m.max((y - centre).amax()));
+        let scale = if extent > 0.0 {
+            pow2_floor(extent)
+        } else {
+            1.0
+        };
+        if !scale.is_finite() || !centre.iter().all(|v| v.is_finite()) {
+            return Err(Error::Numerical(
+                "the coordinates' size cannot be represented".into(),
+            ));
+        }
+        Ok(Units { centre, scale })
+    }
+
     /// `obs` in these units.
     pub fn to_unit(&self, obs: &Observations) -> Observations {
         Observations {
@@ -329,7 +351,13 @@ pub fn reconstruct(obs: &Observations, options: &Options) -> Result<Outcome, Err
     };
     let mut report = None;
     if options.bundle {
-        if bundle::work(&used) <= crate::limits::BUNDLE_WORK {
+        let frames = used.frames.len();
+        if frames > crate::limits::BUNDLE_FRAMES {
+            rec.method.push(format!(
+                "bundle adjustment skipped: {frames} frames, more than the limit of {} (see docs/limits.md)",
+                crate::limits::BUNDLE_FRAMES
+            ));
+        } else if bundle::work(&used) <= crate::limits::BUNDLE_WORK {
             let adjusted = bundle_adjust(&used, &rec, &bundle::BundleOptions::with(options))?;
             rec = adjusted.reconstruction;
             report = Some(adjusted.report);

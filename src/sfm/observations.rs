@@ -65,10 +65,13 @@ impl Observations {
 
     /// At least [`MIN_POINTS`] points in at least [`MIN_FRAMES`] frames.
     pub fn check_counts(&self) -> Result<(), Error> {
-        if self.frames.len() < MIN_FRAMES {
-            return Err(Error::TooFewFrames {
-                frames: self.frames.len(),
-            });
+        self.check_counts_of(self.frames.len())
+    }
+
+    /// [`Observations::check_counts`] for these points in `frames` frames.
+    pub(super) fn check_counts_of(&self, frames: usize) -> Result<(), Error> {
+        if frames < MIN_FRAMES {
+            return Err(Error::TooFewFrames { frames });
         }
         if self.names.len() < MIN_POINTS {
             return Err(Error::TooFewPoints {

@@ -23,13 +23,20 @@ use crate::model::Tracks;
 /// assert!(r.rms(&(&scene.tracks()).into()) < 1e-9);
 /// ```
 pub fn tomasi_kanade(tracks: &Tracks) -> Result<Reconstruction, Error> {
-    let obs = Observations::from_tracks(tracks);
-    obs.check_counts()?;
-    let units = Units::of(&obs)?;
-    let unit = units
-        .to_unit(&obs)
-        .complete()
-        .ok_or_else(|| Error::Numerical("the unit tracks are incomplete".into()))?;
+    let obs = Observations {
+        names: tracks.names.clone(),
+        frames: Vec::new(),
+    };
+    obs.check_counts_of(tracks.frames.len())?;
+    let units = Units::of_tracks(tracks)?;
+    let unit = Tracks {
+        names: tracks.names.clone(),
+        frames: tracks
+            .frames
+            .iter()
+            .map(|f| f.iter().map(|y| (y - units.centre) / units.scale).collect())
+            .collect(),
+    };
     let mut rec = unit_tomasi_kanade(&unit)?;
     units.back(&mut rec);
     Ok(rec)
