@@ -70,6 +70,23 @@ pub const FORMULA_DEGREE: f64 = 256.0;
 /// cancellation: terms of a sum add, of a product multiply, of a power raise).
 pub const FORMULA_TERMS: f64 = 1e6;
 
+/// The side of the Gram matrix `reconstruct` decomposes, min(2k, p) for p points in k frames:
+/// its eigen-decomposition costs about side³ (1,000 takes about a second).
+pub const RECONSTRUCT_GRAM: usize = 1_000;
+/// The work of one bundle-adjustment iteration, Σ over points of (frames seeing it)²: the
+/// Schur complement's accumulation costs about 75 flops per unit (10⁷ ≈ 0.1 s per
+/// iteration); beyond it `reconstruct` skips the adjustment and says so in `method`.
+pub const BUNDLE_WORK: usize = 10_000_000;
+/// Frames of a bundle adjustment: the reduced camera system is dense, 5k × 5k, factorised in
+/// about (5k)³/3 flops per iteration (k = 200: about 0.1 s); beyond it `reconstruct` skips
+/// the adjustment and says so in `method`.
+pub const BUNDLE_FRAMES: usize = 200;
+/// RANSAC samples at most (each costs one point intersection per point and frame).
+pub const RANSAC_SAMPLES: usize = 10_000;
+/// Observations (points × frames) of `reconstruct --robust`: every sample intersects every
+/// point, so the worst case (no good sample) costs samples × observations.
+pub const RANSAC_OBSERVATIONS: usize = 100_000;
+
 /// `Err` naming `what`, the value and the limit when `value > limit`.
 pub fn at_most(what: &str, value: usize, limit: usize) -> Result<(), String> {
     if value > limit {
