@@ -8,6 +8,7 @@ mod errata;
 mod examples;
 mod formula_size;
 mod identity;
+mod linearity;
 mod load;
 mod noise;
 mod paper;
@@ -24,6 +25,7 @@ pub use errata::{
 };
 pub use examples::*;
 pub use identity::*;
+pub use linearity::{LinearityBody, LinearityCase, PrintedRun, MAX_RANDOM_POINTS};
 pub(crate) use load::line_of;
 pub use load::{case_files, load_all, load_case, parse_case, parse_yaml, parse_yaml_limited};
 pub use noise::*;
@@ -90,6 +92,8 @@ pub enum CaseCheck {
     NoiseStudy(NoiseStudyCase),
     /// Errata of the text, each quoted at its lines of the LaTeX source.
     SourceErrata(SourceErrataCase),
+    /// §4's price of linearity: the paper's solvers against the standard method.
+    LinearityPrice(LinearityCase),
 }
 
 impl Case {
@@ -109,6 +113,7 @@ impl Case {
             CaseCheck::IdentityCensus(c) => vec![c.seed],
             CaseCheck::IdentityExample(c) => vec![c.seed],
             CaseCheck::NoiseStudy(c) => vec![c.seed],
+            CaseCheck::LinearityPrice(c) => vec![c.seed],
             CaseCheck::NotReproducible(_)
             | CaseCheck::Restatements(_)
             | CaseCheck::SourceErrata(_) => Vec::new(),

@@ -37,9 +37,10 @@ pub(super) fn check_sizes(case: &Case, v: &Validator) -> Result<()> {
         }
         CaseCheck::IdentityExample(c) => identity_example(c, v),
         CaseCheck::NoiseStudy(c) => noise_study(c, v),
-        CaseCheck::NotReproducible(_) | CaseCheck::Restatements(_) | CaseCheck::SourceErrata(_) => {
-            Ok(())
-        }
+        CaseCheck::NotReproducible(_)
+        | CaseCheck::Restatements(_)
+        | CaseCheck::SourceErrata(_)
+        | CaseCheck::LinearityPrice(_) => Ok(()),
     }
 }
 
@@ -312,6 +313,7 @@ pub(super) fn trials_positive(case: &Case, v: &Validator) -> Result<()> {
         }
         CaseCheck::TwoFrames(c) => zero("check.two_frames.trials", c.trials),
         CaseCheck::IdentityCensus(c) => zero("check.identity_census.trials", c.trials),
+        CaseCheck::LinearityPrice(c) => zero("check.linearity_price.trials", c.trials),
         _ => Ok(()),
     }
 }
