@@ -45,6 +45,7 @@ pub(super) fn figure(res: &Results, case: &LinearityCase) -> Figure {
                 y_label: "median largest edge-length error (%, log)".into(),
                 equal_aspect: false,
                 log_x: true,
+                log_y: true,
                 layers,
                 window: None,
             }
