@@ -61,7 +61,10 @@ pub struct LinearityBody {
 pub const MAX_RANDOM_POINTS: usize = 20;
 
 /// Checks serde cannot express: sizes, names, levels and the deciding subset.
-pub(super) fn validate(c: &LinearityCase, v: &super::validate::Validator) -> crate::error::Result<()> {
+pub(super) fn validate(
+    c: &LinearityCase,
+    v: &super::validate::Validator,
+) -> crate::error::Result<()> {
     v.limit(
         "check.linearity_price.trials",
         "trials",

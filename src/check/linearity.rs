@@ -8,8 +8,8 @@ use super::{ClaimResult, Power, ResultBuilder, Tolerance, ToleranceSource, Value
 use crate::cases::{LinearityBody, LinearityCase, Printed};
 use crate::error::Result;
 use crate::studies::linearity::{
-    self, length_error, Bound, BodySpec, Cell, Design, Method, MethodErrors, RatioBounds,
-    Results, Unavailable,
+    self, length_error, BodySpec, Bound, Cell, Design, Method, MethodErrors, RatioBounds, Results,
+    Unavailable,
 };
 
 mod figure;
@@ -25,8 +25,7 @@ pub(super) fn check(b: &ResultBuilder, case: &LinearityCase) -> Result<Vec<Claim
     let design = design_of(case)?;
     let res = linearity::run(&design);
     let alpha = case.alpha.to_f64();
-    let Some((_, _, cells)) = res.bodies.iter().find(|(n, _, _)| *n == case.deciding_body)
-    else {
+    let Some((_, _, cells)) = res.bodies.iter().find(|(n, _, _)| *n == case.deciding_body) else {
         // the loader checks that the deciding body is one of the bodies
         return Ok(Vec::new());
     };
@@ -35,8 +34,14 @@ pub(super) fn check(b: &ResultBuilder, case: &LinearityCase) -> Result<Vec<Claim
         .iter()
         .filter_map(|l| cells.iter().find(|c| c.level == l.to_f64()))
         .collect();
-    let price: Vec<_> = deciding.iter().map(|c| c.ratio(PRICE.0, PRICE.1, alpha)).collect();
-    let null: Vec<_> = deciding.iter().map(|c| c.ratio(NULL.0, NULL.1, alpha)).collect();
+    let price: Vec<_> = deciding
+        .iter()
+        .map(|c| c.ratio(PRICE.0, PRICE.1, alpha))
+        .collect();
+    let null: Vec<_> = deciding
+        .iter()
+        .map(|c| c.ratio(NULL.0, NULL.1, alpha))
+        .collect();
     let decision = decide(&price);
     let null_decision = decide(&null);
     let mut r = b
@@ -55,7 +60,11 @@ pub(super) fn check(b: &ResultBuilder, case: &LinearityCase) -> Result<Vec<Claim
         .detail("seed", Value::count(case.seed as usize))
         .detail("α (each one-sided bound)", Value::real(alpha));
     for (lv, p) in case.deciding_levels.iter().zip(&price) {
-        r = ratio_quantities(r, &format!("{} at {} %", case.deciding_body, percent(lv)), p);
+        r = ratio_quantities(
+            r,
+            &format!("{} at {} %", case.deciding_body, percent(lv)),
+            p,
+        );
     }
     r = printed_runs(r, case, cells);
     r = tables(r, &res, case, alpha);
@@ -108,10 +117,7 @@ fn decide(ratios: &[std::result::Result<RatioBounds, Unavailable>]) -> Decision 
     if ok.is_empty() {
         return Decision::Unavailable(Unavailable::NotApplicable("no deciding level"));
     }
-    if ok
-        .iter()
-        .any(|b| b.upper.finite().is_some_and(|u| u < 1.0))
-    {
+    if ok.iter().any(|b| b.upper.finite().is_some_and(|u| u < 1.0)) {
         Decision::Fails
     } else if ok.iter().all(|b| b.lower.exceeds(1.0)) {
         Decision::Holds
@@ -146,7 +152,10 @@ fn ratio_quantities<'a>(
                 .computed(&format!("{at}: lower bound"), bound_value(b.lower))
                 .computed(&format!("{at}: upper bound"), bound_value(b.upper));
             if let Some(d) = b.detectable {
-                r = r.detail(&format!("{at}: smallest ratio the trials resolve"), Value::real(d));
+                r = r.detail(
+                    &format!("{at}: smallest ratio the trials resolve"),
+                    Value::real(d),
+                );
             }
             r
         }
@@ -183,7 +192,10 @@ fn printed_runs<'a>(
         let cell = cells.iter().find(|c| c.level == run.level.to_f64());
         if let Some(v) = cell.and_then(|c| c.of(Method::P4f3).sorted()) {
             let rank = crate::derivations::rounding::rank_of(v, e);
-            r = r.detail(&format!("{at}: rank among the §4 solver's trials"), Value::real(rank));
+            r = r.detail(
+                &format!("{at}: rank among the §4 solver's trials"),
+                Value::real(rank),
+            );
         }
     }
     r
@@ -229,7 +241,10 @@ fn method_cells<'a>(
     match e.summary() {
         Some(s) => r
             .detail(&format!("{method}: {row} median"), bound_value(s.median))
-            .detail(&format!("{method}: {row} 90th percentile"), bound_value(s.p90))
+            .detail(
+                &format!("{method}: {row} 90th percentile"),
+                bound_value(s.p90),
+            )
             .detail(
                 &format!("{method}: {row} failures"),
                 Value::count_of(s.failures, s.trials),
@@ -285,9 +300,18 @@ mod tests {
 
     #[test]
     fn the_judge_needs_every_lower_bound_above_one() {
-        assert_eq!(decide(&[bounds(1.2, 3.0), bounds(1.01, 2.0)]), Decision::Holds);
-        assert_eq!(decide(&[bounds(1.2, 3.0), bounds(0.99, 2.0)]), Decision::TooClose);
-        assert_eq!(decide(&[bounds(1.2, 3.0), bounds(0.5, 0.99)]), Decision::Fails);
+        assert_eq!(
+            decide(&[bounds(1.2, 3.0), bounds(1.01, 2.0)]),
+            Decision::Holds
+        );
+        assert_eq!(
+            decide(&[bounds(1.2, 3.0), bounds(0.99, 2.0)]),
+            Decision::TooClose
+        );
+        assert_eq!(
+            decide(&[bounds(1.2, 3.0), bounds(0.5, 0.99)]),
+            Decision::Fails
+        );
         let unbounded = Ok(RatioBounds {
             point: Bound::Infinite,
             lower: Bound::Infinite,

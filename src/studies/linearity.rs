@@ -19,8 +19,8 @@ use rand::{Rng, SeedableRng};
 use rand_chacha::ChaCha8Rng;
 use rayon::prelude::*;
 
-use crate::derivations::p4f3::{self, edge_index};
 use crate::derivations::p3f4;
+use crate::derivations::p4f3::{self, edge_index};
 use crate::derivations::solver::SquaredLengths;
 use crate::model::{edges, random_rotation, Body, Motion, NoiseModel, Scene, Tracks};
 
@@ -83,13 +83,13 @@ impl Method {
     pub fn unavailable(self, points: usize) -> Option<Unavailable> {
         match self {
             Method::P3f4Triangles => None,
-            Method::P4f3 | Method::P4f3FreshNoise if points != 4 => {
-                Some(Unavailable::NotApplicable("the §4 linear solver takes exactly four points"))
-            }
+            Method::P4f3 | Method::P4f3FreshNoise if points != 4 => Some(
+                Unavailable::NotApplicable("the §4 linear solver takes exactly four points"),
+            ),
             Method::P4f3 | Method::P4f3FreshNoise => None,
-            Method::LeastSquares if points < 4 => {
-                Some(Unavailable::NotApplicable("the least-squares form needs four points or more"))
-            }
+            Method::LeastSquares if points < 4 => Some(Unavailable::NotApplicable(
+                "the least-squares form needs four points or more",
+            )),
             Method::LeastSquares => None,
             Method::TomasiKanade | Method::TomasiKanadeBa | Method::TomasiKanadeBa3 => {
                 if points < 4 {
@@ -295,7 +295,10 @@ fn run_cell(spec: &BodySpec, eps: f64, design: &Design, stream: u64) -> Cell {
             (m, errors)
         })
         .collect();
-    Cell { level: eps, methods }
+    Cell {
+        level: eps,
+        methods,
+    }
 }
 
 /// A random body: `p` points uniform in [−1, 1]³.
@@ -350,7 +353,10 @@ fn trial(spec: &BodySpec, eps: f64, g: &mut ChaCha8Rng) -> [f64; 7] {
         .iter()
         .map(|&(i, j)| scene.body.squared_distance(i, j))
         .collect();
-    let err = |s: Option<Vec<f64>>| s.and_then(|s| length_error(&s, &truth)).unwrap_or(f64::INFINITY);
+    let err = |s: Option<Vec<f64>>| {
+        s.and_then(|s| length_error(&s, &truth))
+            .unwrap_or(f64::INFINITY)
+    };
     let lengths = SquaredLengths::from_tracks(&tracks);
     let mut out = [f64::INFINITY; 7];
     for (k, m) in Method::ALL.iter().enumerate() {
@@ -444,7 +450,12 @@ mod tests {
     fn without_noise_every_paper_method_recovers_the_body() {
         let mut g = ChaCha8Rng::seed_from_u64(3);
         let e = trial(&BodySpec::Fixed(tetra()), 0.0, &mut g);
-        for m in [Method::P3f4Triangles, Method::P4f3, Method::LeastSquares, Method::P4f3FreshNoise] {
+        for m in [
+            Method::P3f4Triangles,
+            Method::P4f3,
+            Method::LeastSquares,
+            Method::P4f3FreshNoise,
+        ] {
             let k = Method::ALL.iter().position(|x| *x == m).unwrap();
             assert!(e[k] < 1e-8, "{m:?}: {}", e[k]);
         }
@@ -462,7 +473,10 @@ mod tests {
             seed: 5,
         };
         let a = run(&d);
-        let one = rayon::ThreadPoolBuilder::new().num_threads(1).build().unwrap();
+        let one = rayon::ThreadPoolBuilder::new()
+            .num_threads(1)
+            .build()
+            .unwrap();
         assert_eq!(a, one.install(|| run(&d)));
         // the null control sees the same scenes under other noise: not the same errors
         let c = &a.bodies[0].2[0];

@@ -7,9 +7,7 @@
 /// of the overflow of the binomial coefficient itself.
 fn ln_choose(n: usize, k: usize) -> f64 {
     let k = k.min(n - k);
-    (1..=k)
-        .map(|i| ((n - k + i) as f64 / i as f64).ln())
-        .sum()
+    (1..=k).map(|i| ((n - k + i) as f64 / i as f64).ln()).sum()
 }
 
 /// P(Bin(n, ½) ≤ k).
