@@ -13,6 +13,9 @@ use crate::cases::{line_of, parse_yaml_limited};
 use crate::error::{Error, InputLocation, Result};
 use crate::model::{default_names, Tracks};
 
+mod gaps;
+pub use gaps::{load_observations, parse_observations};
+
 /// How frames are matched point by point.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum PointOrder {

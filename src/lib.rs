@@ -14,6 +14,7 @@ pub mod numfmt;
 pub mod provenance;
 pub mod report;
 pub mod seeds;
+pub mod sfm;
 pub mod studies;
 
 pub use error::{Error, Result};

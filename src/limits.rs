@@ -67,6 +67,16 @@ pub const FORMULA_DEGREE: f64 = 256.0;
 /// cancellation: terms of a sum add, of a product multiply, of a power raise).
 pub const FORMULA_TERMS: f64 = 1e6;
 
+/// The side of the Gram matrix `reconstruct` decomposes, min(2k, p) for p points in k frames:
+/// its eigen-decomposition costs about side³ (2,000 takes a few seconds).
+pub const RECONSTRUCT_GRAM: usize = 2_000;
+/// The work of one bundle-adjustment iteration, Σ over points of (frames seeing it)²: the
+/// Schur complement's accumulation costs about 75 flops per unit (10⁷ ≈ 0.1 s per
+/// iteration); beyond it `reconstruct` skips the adjustment and says so in `method`.
+pub const BUNDLE_WORK: usize = 10_000_000;
+/// RANSAC samples at most (each costs one point intersection per point and frame).
+pub const RANSAC_SAMPLES: usize = 10_000;
+
 /// `Err` naming `what`, the value and the limit when `value > limit`.
 pub fn at_most(what: &str, value: usize, limit: usize) -> Result<(), String> {
     if value > limit {

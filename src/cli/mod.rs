@@ -11,6 +11,7 @@ mod family;
 mod identify;
 mod membership;
 mod noise;
+mod reconstruct;
 mod report;
 mod solve;
 mod synth;
@@ -45,6 +46,9 @@ pub enum Command {
     Family(family::Args),
     /// Write a tracks file of a seeded random scene, to try the solvers on.
     Synth(synth::Args),
+    /// Reconstruct the body and every camera from many points in many frames (Tomasi–Kanade,
+    /// bundle adjustment, gaps, RANSAC over the four-point solver).
+    Reconstruct(reconstruct::Args),
 }
 
 impl Command {
@@ -60,6 +64,7 @@ impl Command {
             Command::Membership(a) => membership::run(a),
             Command::Family(a) => family::run(a),
             Command::Synth(a) => synth::run(a),
+            Command::Reconstruct(a) => reconstruct::run(a),
         }
     }
 }

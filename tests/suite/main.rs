@@ -22,5 +22,7 @@ mod fuzz;
 mod inventory;
 /// The Markdown and HTML renderers on fixed claims.
 mod renderers;
+/// Orthographic structure from motion: `reconstruct` and the `sfm` library.
+mod sfm;
 /// Property tests of the solvers on seeded random scenes, generic and degenerate.
 mod solver_props;

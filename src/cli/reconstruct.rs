@@ -1,0 +1,66 @@
+//! `orthocheck reconstruct`: the body and every frame's camera from many points in many
+//! frames (Tomasi–Kanade, bundle adjustment, gaps, RANSAC).
+
+use std::path::PathBuf;
+
+use orthocheck::input::load_observations;
+use orthocheck::sfm::robust::{RansacOptions, DEFAULT_SEED};
+use orthocheck::sfm::{output, reconstruct, Options};
+use orthocheck::Error;
+
+use super::{in_file, out, to_json};
+
+/// Arguments of `reconstruct`.
+#[derive(clap::Args)]
+pub struct Args {
+    /// Tracks: YAML (`frames:` lists of [x, y], `null` for a missing point, optional
+    /// `points:`) or CSV (`frame,point,x,y`; a missing point has no row).
+    #[arg(long)]
+    input: PathBuf,
+    /// JSON output.
+    #[arg(long)]
+    json: bool,
+    /// RANSAC over the paper's four-point solver before the fit (needs --threshold).
+    #[arg(long, requires = "threshold")]
+    robust: bool,
+    /// Inlier threshold of --robust: the largest distance, in image units, from an image
+    /// point to its reprojection.
+    #[arg(long)]
+    threshold: Option<f64>,
+    /// Seed of --robust's sample generator.
+    #[arg(long, default_value_t = DEFAULT_SEED)]
+    seed: u64,
+    /// Skip the bundle adjustment (Tomasi–Kanade only).
+    #[arg(long)]
+    no_bundle: bool,
+}
+
+/// Load the tracks, reconstruct, print.
+pub fn run(a: Args) -> Result<(), Error> {
+    let obs = load_observations(&a.input)?;
+    let side = (2 * obs.frames.len()).min(obs.names.len());
+    orthocheck::limits::at_most(
+        "the Gram matrix side min(2 × frames, points)",
+        side,
+        orthocheck::limits::RECONSTRUCT_GRAM,
+    )
+    .map_err(|m| in_file(&a.input, Error::InvalidInput(m)))?;
+    let robust = match (a.robust, a.threshold) {
+        (true, Some(t)) => Some(RansacOptions {
+            seed: a.seed,
+            ..RansacOptions::new(t)
+        }),
+        _ => None,
+    };
+    let options = Options {
+        bundle: !a.no_bundle,
+        robust,
+        ..Options::default()
+    };
+    let outcome = reconstruct(&obs, &options).map_err(|e| in_file(&a.input, e.into()))?;
+    if a.json {
+        out(&format!("{}\n", to_json(&output::Json(&outcome))))
+    } else {
+        out(&output::text(&outcome))
+    }
+}

@@ -1,0 +1,86 @@
+//! Tracks that may have gaps: a point may be absent from some frames.
+
+use nalgebra::Vector2;
+
+use super::{Error, MIN_FRAMES, MIN_POINTS};
+use crate::model::Tracks;
+
+/// Image points with gaps: `frames[i][j]` is point `j` in frame `i`, `None` where unseen.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Observations {
+    /// Point names, one per column.
+    pub names: Vec<String>,
+    /// Frames, each with one optional image point per name.
+    pub frames: Vec<Vec<Option<Vector2<f64>>>>,
+}
+
+impl Observations {
+    /// Complete tracks as observations.
+    pub fn from_tracks(t: &Tracks) -> Observations {
+        Observations {
+            names: t.names.clone(),
+            frames: t
+                .frames
+                .iter()
+                .map(|f| f.iter().map(|y| Some(*y)).collect())
+                .collect(),
+        }
+    }
+
+    /// The tracks, when no point is missing from any frame.
+    pub fn complete(&self) -> Option<Tracks> {
+        let frames: Option<Vec<Vec<Vector2<f64>>>> = self
+            .frames
+            .iter()
+            .map(|f| f.iter().copied().collect())
+            .collect();
+        Tracks::new(self.names.clone(), frames?).ok()
+    }
+
+    /// Every observation: (frame, point, image).
+    pub fn seen(&self) -> impl Iterator<Item = (usize, usize, Vector2<f64>)> + '_ {
+        self.frames.iter().enumerate().flat_map(|(i, f)| {
+            f.iter()
+                .enumerate()
+                .filter_map(move |(j, y)| y.map(|y| (i, j, y)))
+        })
+    }
+
+    /// The number of observations.
+    pub fn count(&self) -> usize {
+        self.frames.iter().flatten().filter(|y| y.is_some()).count()
+    }
+
+    /// The observations of the points `keep` (indices, in the order given).
+    pub fn select_points(&self, keep: &[usize]) -> Observations {
+        Observations {
+            names: keep.iter().map(|&j| self.names[j].clone()).collect(),
+            frames: self
+                .frames
+                .iter()
+                .map(|f| keep.iter().map(|&j| f[j]).collect())
+                .collect(),
+        }
+    }
+
+    /// At least [`MIN_POINTS`] points in at least [`MIN_FRAMES`] frames.
+    pub fn check_counts(&self) -> Result<(), Error> {
+        if self.frames.len() < MIN_FRAMES {
+            return Err(Error::TooFewFrames {
+                frames: self.frames.len(),
+            });
+        }
+        if self.names.len() < MIN_POINTS {
+            return Err(Error::TooFewPoints {
+                points: self.names.len(),
+            });
+        }
+        Ok(())
+    }
+}
+
+impl From<&Tracks> for Observations {
+    fn from(t: &Tracks) -> Observations {
+        Observations::from_tracks(t)
+    }
+}
