@@ -447,10 +447,13 @@ mod tests {
     }
 
     #[test]
-    fn without_noise_every_paper_method_recovers_the_body() {
+    fn without_noise_every_method_recovers_the_body() {
         let mut g = ChaCha8Rng::seed_from_u64(3);
         let e = trial(&BodySpec::Fixed(tetra()), 0.0, &mut g);
         for m in [
+            Method::TomasiKanade,
+            Method::TomasiKanadeBa,
+            Method::TomasiKanadeBa3,
             Method::P3f4Triangles,
             Method::P4f3,
             Method::LeastSquares,
