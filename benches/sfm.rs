@@ -20,13 +20,7 @@ fn sfm(c: &mut Criterion) {
     let obs = Observations::from_tracks(&noisy);
     // goal: < 50 ms
     g.bench_function("bundle_adjust_100x20", |b| {
-        b.iter(|| {
-            bundle_adjust(
-                &obs,
-                std::hint::black_box(&start),
-                &BundleOptions::default(),
-            )
-        })
+        b.iter(|| bundle_adjust(&obs, std::hint::black_box(&start), &BundleOptions::default()))
     });
     g.finish();
 }
