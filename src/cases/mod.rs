@@ -9,6 +9,7 @@ mod errata;
 mod examples;
 mod formula_size;
 mod identity;
+mod linearity;
 mod load;
 mod noise;
 mod paper;
@@ -26,6 +27,7 @@ pub use errata::{
 };
 pub use examples::*;
 pub use identity::*;
+pub use linearity::{LinearityBody, LinearityCase, PrintedRun, MAX_RANDOM_POINTS};
 pub(crate) use load::line_of;
 pub use load::{case_files, load_all, load_case, parse_case, parse_yaml, parse_yaml_limited};
 pub use noise::*;
@@ -94,6 +96,8 @@ pub enum CaseCheck {
     SourceErrata(SourceErrataCase),
     /// Exact solution counts of three and four points in three frames, and the literature's.
     SolutionCount(SolutionCountCase),
+    /// §4's price of linearity: the paper's solvers against the standard method.
+    LinearityPrice(LinearityCase),
 }
 
 impl Case {
@@ -114,6 +118,7 @@ impl Case {
             CaseCheck::IdentityExample(c) => vec![c.seed],
             CaseCheck::NoiseStudy(c) => vec![c.seed],
             CaseCheck::SolutionCount(c) => vec![c.seed],
+            CaseCheck::LinearityPrice(c) => vec![c.seed],
             CaseCheck::NotReproducible(_)
             | CaseCheck::Restatements(_)
             | CaseCheck::SourceErrata(_) => Vec::new(),

@@ -43,6 +43,12 @@ pub(super) fn check_sizes(case: &Case, v: &Validator) -> Result<()> {
             c.instances,
             limits::COUNT_INSTANCES,
         ),
+        CaseCheck::LinearityPrice(c) => v.limit(
+            "check.linearity_price.trials",
+            "trials",
+            c.trials,
+            limits::CASE_TRIALS,
+        ),
         CaseCheck::NotReproducible(_) | CaseCheck::Restatements(_) | CaseCheck::SourceErrata(_) => {
             Ok(())
         }
@@ -319,6 +325,7 @@ pub(super) fn trials_positive(case: &Case, v: &Validator) -> Result<()> {
         CaseCheck::TwoFrames(c) => zero("check.two_frames.trials", c.trials),
         CaseCheck::IdentityCensus(c) => zero("check.identity_census.trials", c.trials),
         CaseCheck::SolutionCount(c) => zero("check.solution_count.instances", c.instances),
+        CaseCheck::LinearityPrice(c) => zero("check.linearity_price.trials", c.trials),
         _ => Ok(()),
     }
 }

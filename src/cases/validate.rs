@@ -104,6 +104,7 @@ pub(super) fn validate(case: &Case, text: &str, path: &Path) -> Result<()> {
         CaseCheck::P3f3Example(c) => p3f3_example(c, v),
         CaseCheck::SourceErrata(c) => source_errata(c, v),
         CaseCheck::SolutionCount(c) => solution_count(c, v),
+        CaseCheck::LinearityPrice(c) => super::linearity::validate(c, v),
     }
 }
 

@@ -116,6 +116,7 @@ fn figure(b: &ResultBuilder, case: &DofIdentifiabilityCase, grid: &[Identifiabil
             y_label: "frames k".into(),
             equal_aspect: false,
             log_x: false,
+            log_y: false,
             layers: vec![
                 Layer::new("more df than information", Shape::Points, Style::Other, cat(&|r| r.count.balance < 0)),
                 Layer::new("balance holds, not recoverable", Shape::Points, Style::Mark, cat(&|r| r.count.balance >= 0 && r.deficiency > 0)),

@@ -119,6 +119,9 @@ pub struct Plot {
     pub equal_aspect: bool,
     /// Logarithmic x axis.
     pub log_x: bool,
+    /// Logarithmic y axis.
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    pub log_y: bool,
     /// Layers, drawn in order.
     pub layers: Vec<Layer>,
     /// The region shown, ([x₀, x₁], [y₀, y₁]); by default the layers' extent. Every point
@@ -135,6 +138,7 @@ impl Plot {
             y_label: "y".into(),
             equal_aspect: true,
             log_x: false,
+            log_y: false,
             layers,
             window: None,
         }

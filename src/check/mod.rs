@@ -7,6 +7,7 @@ mod errata;
 pub mod figure;
 mod identity;
 mod identity_example;
+mod linearity;
 mod noise;
 mod p3f3;
 mod p3f3_restricted;
@@ -202,6 +203,7 @@ fn dispatch(b: &ResultBuilder, case: &Case) -> Result<Vec<ClaimResult>> {
         CaseCheck::IdentityExample(c) => identity_example::check(b, c),
         CaseCheck::SourceErrata(c) => errata::check(b, c),
         CaseCheck::SolutionCount(c) => solution_count::check(b, c),
+        CaseCheck::LinearityPrice(c) => linearity::check(b, c),
         CaseCheck::Restatements(_) => Err(crate::error::Error::InvalidInput(format!(
             "case {}: restatements are decided from the other cases' results (run_all)",
             case.id

@@ -465,6 +465,7 @@ fn rounding_figure(b: &ResultBuilder, case: &P3f3ExampleCase, s: &Study, targets
         y_label: "c²".into(),
         equal_aspect: false,
         log_x: false,
+        log_y: false,
         window,
         layers,
     };

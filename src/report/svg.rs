@@ -101,7 +101,7 @@ fn marker(s: Style, r: f64) -> (String, bool) {
     }
 }
 
-/// A panel placed on the page: its data window (x in log₁₀ on a logarithmic axis) and the
+/// A panel placed on the page: its data window (in log₁₀ on a logarithmic axis) and the
 /// pixel rectangle of its plot area.
 struct Axes {
     x: [f64; 2],
@@ -111,6 +111,7 @@ struct Axes {
     w: f64,
     h: f64,
     log_x: bool,
+    log_y: bool,
 }
 
 impl Axes {
@@ -121,10 +122,15 @@ impl Axes {
         } else {
             q[0]
         };
-        (xv.is_finite() && q[1].is_finite()).then(|| {
+        let yv = if self.log_y {
+            (q[1] > 0.0).then(|| q[1].log10())?
+        } else {
+            q[1]
+        };
+        (xv.is_finite() && yv.is_finite()).then(|| {
             (
                 self.left + (xv - self.x[0]) / (self.x[1] - self.x[0]) * self.w,
-                self.top + self.h - (q[1] - self.y[0]) / (self.y[1] - self.y[0]) * self.h,
+                self.top + self.h - (yv - self.y[0]) / (self.y[1] - self.y[0]) * self.h,
             )
         })
     }
@@ -134,18 +140,19 @@ impl Axes {
 /// extent.
 fn extent(p: &Plot) -> ([f64; 2], [f64; 2]) {
     let tx = |v: f64| if p.log_x { v.log10() } else { v };
+    let ty = |v: f64| if p.log_y { v.log10() } else { v };
     let (x, y) = match p.window {
-        Some((x, y)) => ([tx(x[0]), tx(x[1])], y),
+        Some((x, y)) => ([tx(x[0]), tx(x[1])], [ty(y[0]), ty(y[1])]),
         None => {
             let mut x = [f64::INFINITY, f64::NEG_INFINITY];
             let mut y = x;
             for l in &p.layers {
                 for q in &l.points {
-                    let xv = tx(q[0]);
-                    if xv.is_finite() && q[1].is_finite() {
+                    let (xv, yv) = (tx(q[0]), ty(q[1]));
+                    if xv.is_finite() && yv.is_finite() {
                         x = [x[0].min(xv), x[1].max(xv)];
                         if l.shape != Shape::Verticals {
-                            y = [y[0].min(q[1]), y[1].max(q[1])];
+                            y = [y[0].min(yv), y[1].max(yv)];
                         }
                     }
                 }
@@ -266,7 +273,11 @@ fn draw_axes(s: &mut String, p: &Plot, a: &Axes) {
             escape(&text)
         );
     }
-    let yt = ticks(a.y[0], a.y[1], (h / 45.0).max(3.0));
+    let yt = if a.log_y {
+        log_ticks(a.y[0], a.y[1])
+    } else {
+        ticks(a.y[0], a.y[1], (h / 45.0).max(3.0))
+    };
     let step = yt.get(1).zip(yt.first()).map_or(1.0, |(b, a)| b - a);
     for v in &yt {
         let py = t + h - (v - a.y[0]) / (a.y[1] - a.y[0]) * h;
@@ -277,7 +288,11 @@ fn draw_axes(s: &mut String, p: &Plot, a: &Axes) {
             l - 4.0,
             l - 6.0,
             py + 4.0,
-            escape(&tick_text(*v, step))
+            escape(&if a.log_y {
+                sig(10f64.powf(*v))
+            } else {
+                tick_text(*v, step)
+            })
         );
     }
     let _ = write!(
@@ -433,6 +448,7 @@ pub fn figure_svg(f: &Figure, standalone: bool) -> String {
             w,
             h,
             log_x: p.log_x,
+            log_y: p.log_y,
         };
         let _ = write!(
             body,

@@ -13,6 +13,7 @@ pub mod ex4_joint;
 pub mod family_samples;
 pub mod figure_labels;
 pub mod identity_census;
+pub mod linearity;
 pub mod noise;
 pub mod noise_request;
 pub mod panels;

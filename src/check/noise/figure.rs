@@ -47,6 +47,7 @@ pub(super) fn figure(
             y_label: "fraction of trials with error ≤ x".into(),
             equal_aspect: false,
             log_x: true,
+            log_y: false,
             layers,
             window: None,
         }
