@@ -406,32 +406,57 @@ impl fmt::Display for RefPoly {
     }
 }
 
-/// Differential tests: the packed engine against this one, on random polynomials with
-/// small and word-overflowing coefficients. Both print canonically, so equal text is
-/// equal polynomials (and the printed forms the snapshots hold stay the same).
+/// Differential tests: the packed engine against this one, on random polynomials in up to
+/// eight variables (sparse, with exponents that force wider packings) and in three
+/// variables at high degree (dense), with small and word-overflowing coefficients. Both
+/// print canonically, so equal text is equal polynomials.
 #[cfg(test)]
 mod differential {
     use super::RefPoly;
     use crate::algebra::mpoly::{mul_array, mul_heap};
-    use crate::algebra::{Monomial, Poly};
+    use crate::algebra::{Monomial, Poly, RatFn};
     use num_bigint::BigInt;
     use num_rational::BigRational;
     use proptest::prelude::*;
     use std::collections::BTreeMap;
 
-    const VARS: [&str; 4] = ["a", "b", "c", "d_1"];
+    const VARS: [&str; 8] = ["a", "b", "c", "d_1", "u", "v", "w", "x"];
 
-    type Terms = Vec<(i64, i64, bool, [u32; 4])>;
+    type Terms = Vec<(i64, i64, bool, Vec<u32>)>;
 
-    fn terms(max: usize) -> impl Strategy<Value = Terms> {
+    /// `PROPTEST_CASES` when set (a long run), else `default`.
+    fn cases(default: u32) -> u32 {
+        std::env::var("PROPTEST_CASES")
+            .ok()
+            .and_then(|s| s.parse().ok())
+            .unwrap_or(default)
+    }
+
+    /// Sparse terms in the eight variables: most exponents 0, some up to 3, a few up to
+    /// `high` (130: total degrees past 127 need 16-bit fields, their products more).
+    fn sparse(max: usize, high: u32) -> impl Strategy<Value = Terms> {
+        let e = prop_oneof![12 => Just(0u32), 6 => 1u32..=3, 1 => 4u32..=high];
         prop::collection::vec(
             (
                 (-9i64..=9),
                 (1i64..=4),
                 prop::bool::weighted(0.2),
-                [0u32..=3, 0u32..=2, 0u32..=2, 0u32..=1],
+                prop::collection::vec(e, 8),
             ),
             0..max,
+        )
+    }
+
+    /// Dense terms in three variables of degree up to 10 each.
+    fn dense(min: usize, max: usize) -> impl Strategy<Value = Terms> {
+        prop::collection::vec(
+            (
+                (-9i64..=9),
+                (1i64..=3),
+                prop::bool::weighted(0.1),
+                prop::collection::vec(0u32..=10, 3),
+            ),
+            min..max,
         )
     }
 
@@ -462,71 +487,152 @@ mod differential {
         Ok(())
     }
 
+    fn point(x: &[(i64, i64)]) -> BTreeMap<String, BigRational> {
+        VARS.iter()
+            .zip(x)
+            .map(|(n, (a, b))| (n.to_string(), BigRational::new((*a).into(), (*b).into())))
+            .collect()
+    }
+
+    /// Ring operations, powers, coefficients and ratios of `a`, `b` in both engines.
+    fn ring_agrees(a: &Terms, b: &Terms, e: u32) -> Result<(), TestCaseError> {
+        let ((pa, ra), (pb, rb)) = (both(a), both(b));
+        same(&pa, &ra)?;
+        same(&(&pa * &pb), &(&ra * &rb))?;
+        same(&(&pa + &pb), &(&ra + &rb))?;
+        same(&(&pa - &pb), &(&ra - &rb))?;
+        same(&pa.pow(e), &ra.pow(e))?;
+        for v in VARS {
+            prop_assert_eq!(pa.degree_in(v), ra.degree_in(v));
+            let (pc, rc) = (pa.coefficients_in(v), ra.coefficients_in(v));
+            prop_assert_eq!(pc.len(), rc.len());
+            for (x, y) in pc.iter().zip(&rc) {
+                same(x, y)?;
+            }
+        }
+        prop_assert_eq!(pa.ratio_to(&pb), ra.ratio_to(&rb));
+        let k = BigRational::new((-3).into(), 7.into());
+        prop_assert_eq!(pa.scale(&k).ratio_to(&pa), ra.scale(&k).ratio_to(&ra));
+        Ok(())
+    }
+
+    /// `a·b / b = a`; `(a·b + c) / b` refused when `c ≠ 0` has lower degree than `b` (then b
+    /// cannot divide c, so not the sum either).
+    fn division_agrees(a: &Terms, b: &Terms, c: &Terms) -> Result<(), TestCaseError> {
+        let ((pa, ra), (pb, rb), (pc, rc)) = (both(a), both(b), both(c));
+        let (pab, rab) = (&pa * &pb, &ra * &rb);
+        let (pq, rq) = (pab.div_exact(&pb), rab.div_exact(&rb));
+        prop_assert_eq!(pq.is_some(), rq.is_some());
+        prop_assert_eq!(pq.is_some(), !pb.is_zero());
+        if let (Some(pq), Some(rq)) = (&pq, &rq) {
+            same(pq, rq)?;
+            prop_assert!(pb.is_zero() || *pq == pa);
+        }
+        let (pn, rn) = (&pab + &pc, &rab + &rc);
+        let (x, y) = (pn.div_exact(&pb), rn.div_exact(&rb));
+        prop_assert_eq!(
+            x.as_ref().map(|p| p.to_string()),
+            y.as_ref().map(|p| p.to_string())
+        );
+        if !pc.is_zero() && pc.degree() < pb.degree() {
+            prop_assert!(x.is_none(), "{} / {} accepted", pn, pb);
+        }
+        Ok(())
+    }
+
+    /// The gcd of `a·c` and `b·c` is divisible by `c` and divides both; `(a·c)/(b·c)` in
+    /// lowest terms is the same function with a denominator no larger than `b`'s.
+    fn gcd_agrees(a: &Terms, b: &Terms, c: &Terms) -> Result<(), TestCaseError> {
+        let ((pa, ra), (pb, rb), (pc, rc)) = (both(a), both(b), both(c));
+        let (x, y) = (&pa * &pc, &pb * &pc);
+        let Some(g) = x.gcd(&y) else {
+            return Ok(());
+        };
+        let rg = RefPoly::from_text(&g);
+        if !x.is_zero() || !y.is_zero() {
+            prop_assert!((&ra * &rc).div_exact(&rg).is_some(), "{} ∤ {}", g, x);
+            prop_assert!((&rb * &rc).div_exact(&rg).is_some(), "{} ∤ {}", g, y);
+        }
+        if !x.is_zero() {
+            prop_assert!(rg.div_exact(&rc).is_some(), "{} ∤ {}", pc, g);
+        }
+        if !y.is_zero() {
+            let f = RatFn { num: x.clone(), den: y.clone() };
+            let r = f.reduced();
+            let (rn, rd) = (RefPoly::from_text(&r.num), RefPoly::from_text(&r.den));
+            let (rx, ry) = (&ra * &rc, &rb * &rc);
+            prop_assert_eq!((&rn * &ry).to_string(), (&rx * &rd).to_string());
+            prop_assert!(r.den.degree() <= pb.degree(), "{} not cancelled by {}", y, pc);
+        }
+        Ok(())
+    }
+
+    fn eval_agrees(a: &Terms, q: &Terms, v: usize, x: &[(i64, i64)]) -> Result<(), TestCaseError> {
+        let ((pa, ra), (pq, rq)) = (both(a), both(q));
+        same(&pa.substitute(VARS[v], &pq), &ra.substitute(VARS[v], &rq))?;
+        let at = point(x);
+        prop_assert_eq!(pa.eval(&at), ra.eval(&at));
+        let atf: BTreeMap<String, f64> = VARS
+            .iter()
+            .zip(x)
+            .map(|(n, (a, b))| (n.to_string(), *a as f64 / *b as f64))
+            .collect();
+        prop_assert_eq!(
+            pa.eval_f64(&atf).map(f64::to_bits),
+            ra.eval_f64(&atf).map(f64::to_bits)
+        );
+        Ok(())
+    }
+
+    fn rationals() -> impl Strategy<Value = Vec<(i64, i64)>> {
+        prop::collection::vec(((-30i64..30), (1i64..=9)), 8)
+    }
+
     proptest! {
-        #![proptest_config(ProptestConfig { cases: 192, rng_seed: proptest::test_runner::RngSeed::Fixed(11), ..ProptestConfig::default() })]
+        #![proptest_config(ProptestConfig { cases: cases(128), rng_seed: proptest::test_runner::RngSeed::Fixed(11), ..ProptestConfig::default() })]
 
         #[test]
-        fn ring_operations_agree(a in terms(7), b in terms(7), e in 0u32..4) {
-            let ((pa, ra), (pb, rb)) = (both(&a), both(&b));
-            same(&pa, &ra)?;
-            same(&(&pa * &pb), &(&ra * &rb))?;
-            same(&(&pa - &pb), &(&ra - &rb))?;
-            same(&pa.pow(e), &ra.pow(e))?;
-            for v in VARS {
-                prop_assert_eq!(pa.degree_in(v), ra.degree_in(v));
-                let (pc, rc) = (pa.coefficients_in(v), ra.coefficients_in(v));
-                prop_assert_eq!(pc.len(), rc.len());
-                for (x, y) in pc.iter().zip(&rc) {
-                    same(x, y)?;
-                }
-            }
-            prop_assert_eq!(pa.ratio_to(&pb), ra.ratio_to(&rb));
-            let k = BigRational::new((-3).into(), 7.into());
-            prop_assert_eq!(pa.scale(&k).ratio_to(&pa), ra.scale(&k).ratio_to(&ra));
+        fn ring_operations_agree(a in sparse(8, 130), b in sparse(8, 130), e in 0u32..4) {
+            ring_agrees(&a, &b, e)?;
         }
 
         #[test]
-        fn substitution_and_evaluation_agree(a in terms(6), q in terms(4), v in 0usize..4, x in prop::array::uniform4(-30i64..30)) {
-            let ((pa, ra), (pq, rq)) = (both(&a), both(&q));
-            same(&pa.substitute(VARS[v], &pq), &ra.substitute(VARS[v], &rq))?;
-            let at: BTreeMap<String, BigRational> = VARS.iter().zip(x).map(|(n, k)| (n.to_string(), BigRational::new(k.into(), 3.into()))).collect();
-            prop_assert_eq!(pa.eval(&at), ra.eval(&at));
-            let atf: BTreeMap<String, f64> = VARS.iter().zip(x).map(|(n, k)| (n.to_string(), k as f64 / 3.0)).collect();
-            prop_assert_eq!(pa.eval_f64(&atf).map(f64::to_bits), ra.eval_f64(&atf).map(f64::to_bits));
+        fn dense_ring_operations_agree(a in dense(4, 24), b in dense(4, 24), e in 0u32..3) {
+            ring_agrees(&a, &b, e)?;
         }
 
         #[test]
-        fn exact_division_agrees(a in terms(6), b in terms(5), c in terms(2)) {
-            let ((pa, ra), (pb, rb), (pc, rc)) = (both(&a), both(&b), both(&c));
-            let (pab, rab) = (&pa * &pb, &ra * &rb);
-            let (pq, rq) = (pab.div_exact(&pb), rab.div_exact(&rb));
-            prop_assert_eq!(pq.is_some(), rq.is_some());
-            if let (Some(pq), Some(rq)) = (&pq, &rq) {
-                same(pq, rq)?;
-            }
-            let (pn, rn) = (&pab + &pc, &rab + &rc);
-            let (x, y) = (pn.div_exact(&pb), rn.div_exact(&rb));
-            prop_assert_eq!(x.as_ref().map(|p| p.to_string()), y.as_ref().map(|p| p.to_string()));
+        fn substitution_and_evaluation_agree(a in sparse(7, 8), q in sparse(4, 6), v in 0usize..8, x in rationals()) {
+            eval_agrees(&a, &q, v, &x)?;
         }
 
         #[test]
-        fn gcd_is_a_common_divisor_the_factor_divides(a in terms(5), b in terms(5), c in terms(4)) {
-            let ((pa, ra), (pb, rb), (pc, rc)) = (both(&a), both(&b), both(&c));
-            let (x, y) = (&pa * &pc, &pb * &pc);
-            if let Some(g) = x.gcd(&y) {
-                let rg = RefPoly::from_text(&g);
-                if !x.is_zero() || !y.is_zero() {
-                    prop_assert!((&ra * &rc).div_exact(&rg).is_some());
-                    prop_assert!((&rb * &rc).div_exact(&rg).is_some());
-                }
-                if !pc.is_zero() && !x.is_zero() {
-                    prop_assert!(g.div_exact(&pc).is_some(), "{} ∤ {}", pc, g);
-                }
-            }
+        fn dense_substitution_and_evaluation_agree(a in dense(3, 12), q in dense(1, 4), v in 0usize..3, x in rationals()) {
+            eval_agrees(&a, &q, v, &x)?;
         }
 
         #[test]
-        fn heap_and_array_products_agree(a in terms(12), b in terms(12)) {
+        fn exact_division_agrees(a in sparse(7, 130), b in sparse(6, 130), c in sparse(3, 130)) {
+            division_agrees(&a, &b, &c)?;
+        }
+
+        #[test]
+        fn dense_exact_division_agrees(a in dense(2, 20), b in dense(2, 16), c in dense(1, 6)) {
+            division_agrees(&a, &b, &c)?;
+        }
+
+        #[test]
+        fn gcd_is_a_common_divisor_the_factor_divides(a in sparse(5, 130), b in sparse(5, 130), c in sparse(4, 130)) {
+            gcd_agrees(&a, &b, &c)?;
+        }
+
+        #[test]
+        fn dense_gcd_is_a_common_divisor_the_factor_divides(a in dense(1, 6), b in dense(1, 6), c in dense(1, 5)) {
+            gcd_agrees(&a, &b, &c)?;
+        }
+
+        #[test]
+        fn heap_and_array_products_agree(a in dense(4, 30), b in dense(4, 30)) {
             let ((pa, _), (pb, _)) = (both(&a), both(&b));
             let (x, y) = (pa.primitive().1.clone(), pb.primitive().1.clone());
             // in a common ring: the product of the Polys aligns them
