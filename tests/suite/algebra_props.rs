@@ -340,7 +340,7 @@ mod oracles {
     }
 
     proptest! {
-        #![proptest_config(ProptestConfig { cases: cases(128), rng_seed: proptest::test_runner::RngSeed::Fixed(11), ..ProptestConfig::default() })]
+        #![proptest_config(ProptestConfig { cases: cases(64), rng_seed: proptest::test_runner::RngSeed::Fixed(11), ..ProptestConfig::default() })]
 
         #[test]
         fn ring_operations_match_evaluation(a in sparse(8, 130), b in sparse(8, 130), e in 0u32..4, pts in points()) {
@@ -367,7 +367,7 @@ mod oracles {
         }
 
         #[test]
-        fn dense_substitution_matches_evaluation(a in dense(3, 12, 10), q in dense(1, 4, 10), v in 0usize..3, pts in points()) {
+        fn dense_substitution_matches_evaluation(a in dense(3, 12, 6), q in dense(1, 3, 4), v in 0usize..3, pts in points()) {
             substitution(&poly(&a), &poly(&q), VARS[v], &pts)?;
         }
 
