@@ -14,8 +14,6 @@ mod poly;
 mod procrustes;
 mod rank;
 mod ratfn;
-#[cfg(test)]
-mod reference;
 mod sturm;
 
 pub use diff::central_jacobian;

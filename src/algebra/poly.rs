@@ -393,19 +393,21 @@ impl Poly {
     }
 
     /// The greatest common divisor with content one and a positive leading coefficient (in
-    /// the order of [`Poly::primitive`]); `None` when the heuristic gcd gives up.
+    /// the order of [`Poly::primitive`]): always exact (the heuristic gcd, and a primitive
+    /// remainder sequence when that gives up). The gcd with zero is the other side made
+    /// monic in this sense; gcd(0, 0) = 0.
     ///
     /// # Example
     /// ```
     /// use orthocheck::algebra::Poly;
     /// let a = Poly::parse("(x + y)^2 (x - 1)/3").unwrap();
     /// let b = Poly::parse("6(x + y)(y + 2)").unwrap();
-    /// assert_eq!(a.gcd(&b), Some(Poly::parse("x + y").unwrap()));
+    /// assert_eq!(a.gcd(&b), Poly::parse("x + y").unwrap());
     /// ```
-    pub fn gcd(&self, other: &Poly) -> Option<Poly> {
+    pub fn gcd(&self, other: &Poly) -> Poly {
         let (ring, pa, pb) = Poly::align(self, other);
-        let g = pa.gcd(&pb)?;
-        Some(Poly::from_parts(ring, BigRational::one(), g.primitive().1))
+        let g = pa.gcd(&pb);
+        Poly::from_parts(ring, BigRational::one(), g.primitive().1)
     }
 
     /// If `self = k · other` for a non-zero rational `k`, return `k`.

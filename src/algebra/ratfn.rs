@@ -250,8 +250,7 @@ impl RatFn {
 
     /// The same function in lowest terms: numerator and denominator divided by their gcd
     /// (each quotient checked by exact division), the denominator with content one and a
-    /// positive leading coefficient, so equal functions get equal parts. When the
-    /// heuristic gcd gives up, only the denominator is normalised.
+    /// positive leading coefficient, so equal functions get equal parts.
     ///
     /// The arithmetic operators keep the forms they build (a displayed derivation shows the
     /// factors its steps produced); call this where smallness matters more.
@@ -266,13 +265,12 @@ impl RatFn {
         if self.num.is_zero() {
             return RatFn::default();
         }
-        let (num, den) = match self.num.gcd(&self.den) {
-            Some(g) if g.degree() > 0 => match (self.num.div_exact(&g), self.den.div_exact(&g)) {
-                (Some(n), Some(d)) => (n, d),
+        let g = self.num.gcd(&self.den);
+        let (num, den) =
+            match (g.degree() > 0).then(|| (self.num.div_exact(&g), self.den.div_exact(&g))) {
+                Some((Some(n), Some(d))) => (n, d),
                 _ => (self.num.clone(), self.den.clone()),
-            },
-            _ => (self.num.clone(), self.den.clone()),
-        };
+            };
         let c = den.primitive().0.recip();
         RatFn {
             num: num.scale(&c),
@@ -373,10 +371,10 @@ fn homogenise_all(p: &Poly, used: &BTreeMap<&str, &RatFn>, d: &Poly) -> (Poly, u
 /// A row of rational functions over their common denominator: polynomials, the same
 /// equation multiplied through.
 fn polynomial_row(row: &[RatFn]) -> Vec<Poly> {
-    // l = lcm of the denominators (their product when the gcd gives up)
+    // l = lcm of the denominators
     let mut l = Poly::int(1);
     for f in row {
-        let g = l.gcd(&f.den).unwrap_or_else(|| Poly::int(1));
+        let g = l.gcd(&f.den);
         l = &l * &f.den.div_exact(&g).unwrap_or_else(|| f.den.clone());
     }
     row.iter()

@@ -107,3 +107,288 @@ proptest! {
         prop_assert_eq!(svd_rank(&f).rank, r);
     }
 }
+
+/// The polynomial engine against oracles that share none of its code: exact evaluation at
+/// random rational points from the printed terms (`Σ c · Π xᵉ`, term by term), and
+/// evaluation at random points of 𝔽ₚ (p = 2⁶¹ − 1). A product, power, substitution or
+/// quotient that is wrong differs from its oracle at a random point with probability at
+/// least 1 − d/p (Schwartz–Zippel) over 𝔽ₚ, and at almost every rational point.
+mod oracles {
+    use std::collections::BTreeMap;
+
+    use num_bigint::BigInt;
+    use num_rational::BigRational;
+    use num_traits::{One, Zero};
+    use orthocheck::algebra::modp::{eval_poly, Fp, PRIME};
+    use orthocheck::algebra::mpoly::Scalar;
+    use orthocheck::algebra::{Poly, RatFn};
+    use proptest::prelude::*;
+
+    const VARS: [&str; 8] = ["a", "b", "c", "d_1", "u", "v", "w", "x"];
+
+    type Terms = Vec<(i64, i64, bool, Vec<u32>)>;
+
+    /// `PROPTEST_CASES` when set (a long run), else `default`.
+    fn cases(default: u32) -> u32 {
+        std::env::var("PROPTEST_CASES")
+            .ok()
+            .and_then(|s| s.parse().ok())
+            .unwrap_or(default)
+    }
+
+    /// Sparse terms in eight variables: most exponents 0, some up to 3, a few up to `high`
+    /// (130: total degrees past 127 need 16-bit fields, their products more).
+    fn sparse(max: usize, high: u32) -> impl Strategy<Value = Terms> {
+        let e = prop_oneof![12 => Just(0u32), 6 => 1u32..=3, 1 => 4u32..=high];
+        prop::collection::vec(
+            (
+                -9i64..=9,
+                1i64..=4,
+                prop::bool::weighted(0.2),
+                prop::collection::vec(e, 8),
+            ),
+            0..max,
+        )
+    }
+
+    /// Dense terms in the first three variables, each exponent up to `deg`.
+    fn dense(min: usize, max: usize, deg: u32) -> impl Strategy<Value = Terms> {
+        prop::collection::vec(
+            (
+                -9i64..=9,
+                1i64..=3,
+                prop::bool::weighted(0.1),
+                prop::collection::vec(0u32..=deg, 3),
+            ),
+            min..max,
+        )
+    }
+
+    /// The polynomial of the terms; a flagged coefficient is multiplied by 2⁶³ + 1 (past
+    /// the machine-word fast path).
+    fn poly(t: &Terms) -> Poly {
+        t.iter().fold(Poly::zero(), |acc, (n, d, big, e)| {
+            let mut c = BigRational::new((*n).into(), (*d).into());
+            if *big {
+                c *= BigRational::from_integer(BigInt::from(i64::MAX) + 2);
+            }
+            let m = VARS
+                .iter()
+                .zip(e)
+                .fold(Poly::constant(c), |m, (v, k)| &m * &Poly::var(v).pow(*k));
+            &acc + &m
+        })
+    }
+
+    /// A point: a rational and a residue per variable.
+    #[derive(Clone, Debug)]
+    struct Point {
+        q: BTreeMap<String, BigRational>,
+        p: BTreeMap<String, Fp>,
+    }
+
+    fn points() -> impl Strategy<Value = Vec<Point>> {
+        let one = (
+            prop::collection::vec((-40i64..40, 1i64..=11), 8),
+            prop::collection::vec(0u64..PRIME, 8),
+        )
+            .prop_map(|(q, p)| Point {
+                q: VARS
+                    .iter()
+                    .zip(q)
+                    .map(|(v, (n, d))| (v.to_string(), BigRational::new(n.into(), d.into())))
+                    .collect(),
+                p: VARS
+                    .iter()
+                    .zip(p)
+                    .map(|(v, r)| (v.to_string(), Fp(r)))
+                    .collect(),
+            });
+        prop::collection::vec(one, 2)
+    }
+
+    /// The oracle: Σ c · Π xᵉ over the printed terms, powers by repeated multiplication.
+    fn naive(p: &Poly, at: &BTreeMap<String, BigRational>) -> BigRational {
+        p.terms()
+            .map(|(m, c)| {
+                m.factors()
+                    .iter()
+                    .fold(c, |t, (v, e)| (0..*e).fold(t, |t, _| t * &at[v]))
+            })
+            .fold(<BigRational as Zero>::zero(), |s, t| s + t)
+    }
+
+    /// The value over 𝔽ₚ (the content's denominator is a product of small numbers and
+    /// powers of 2⁶³ + 1, never a multiple of p).
+    fn modp(p: &Poly, at: &BTreeMap<String, Fp>) -> Fp {
+        let xs: Vec<Fp> = p.variables().iter().map(|v| at[v]).collect();
+        eval_poly(p, &xs).unwrap_or(Fp(0))
+    }
+
+    fn pow_q(x: &BigRational, e: u32) -> BigRational {
+        (0..e).fold(<BigRational as One>::one(), |t, _| t * x)
+    }
+
+    /// Sum, difference, product, power and coefficients of `a`, `b` at every point.
+    fn ring_at(a: &Poly, b: &Poly, e: u32, pts: &[Point]) -> Result<(), TestCaseError> {
+        let (ab, ap) = (a * b, a.pow(e));
+        let (s, d) = (a + b, a - b);
+        for pt in pts {
+            let (x, y) = (naive(a, &pt.q), naive(b, &pt.q));
+            prop_assert_eq!(naive(&ab, &pt.q), &x * &y);
+            prop_assert_eq!(naive(&s, &pt.q), &x + &y);
+            prop_assert_eq!(naive(&d, &pt.q), &x - &y);
+            prop_assert_eq!(naive(&ap, &pt.q), pow_q(&x, e));
+            prop_assert_eq!(ab.eval(&pt.q), Some(&x * &y));
+            let (xp, yp) = (modp(a, &pt.p), modp(b, &pt.p));
+            prop_assert_eq!(modp(&ab, &pt.p), xp.mul(&yp));
+            prop_assert_eq!(modp(&d, &pt.p), xp.sub(&yp));
+            prop_assert_eq!(modp(&ap, &pt.p), xp.pow(u64::from(e)));
+            for v in ["a", "c", "x"] {
+                let k = a.coefficients_in(v);
+                let back = k
+                    .iter()
+                    .enumerate()
+                    .fold(<BigRational as Zero>::zero(), |t, (i, c)| {
+                        t + naive(c, &pt.q) * pow_q(&pt.q[v], i as u32)
+                    });
+                prop_assert_eq!(back, x.clone());
+            }
+        }
+        prop_assert_eq!(&ab, &(b * a));
+        prop_assert_eq!(Poly::parse(&ab.to_string()).ok(), Some(ab.clone()));
+        Ok(())
+    }
+
+    /// `a·b / b = a`; `(a·b + c) / b` refused when `c ≠ 0` has lower degree than `b` (b
+    /// cannot divide c, so not the sum); any quotient given is exact.
+    fn division(a: &Poly, b: &Poly, c: &Poly, pts: &[Point]) -> Result<(), TestCaseError> {
+        let ab = a * b;
+        prop_assert_eq!(ab.div_exact(b), (!b.is_zero()).then(|| a.clone()));
+        let n = &ab + c;
+        let q = n.div_exact(b);
+        if !c.is_zero() && c.degree() < b.degree() {
+            prop_assert!(q.is_none(), "{} / {} accepted", n, b);
+        }
+        if let Some(q) = q {
+            for pt in pts {
+                prop_assert_eq!(naive(&q, &pt.q) * naive(b, &pt.q), naive(&n, &pt.q));
+            }
+        }
+        Ok(())
+    }
+
+    /// Substituting `q` for `v` then evaluating = evaluating with v := q(point).
+    fn substitution(a: &Poly, q: &Poly, v: &str, pts: &[Point]) -> Result<(), TestCaseError> {
+        let s = a.substitute(v, q);
+        for pt in pts {
+            let mut at = pt.q.clone();
+            at.insert(v.into(), naive(q, &pt.q));
+            prop_assert_eq!(naive(&s, &pt.q), naive(a, &at));
+            let mut ap = pt.p.clone();
+            ap.insert(v.into(), modp(q, &pt.p));
+            prop_assert_eq!(modp(&s, &pt.p), modp(a, &ap));
+        }
+        Ok(())
+    }
+
+    /// g = gcd(a·c, b·c): c divides g, g divides both (quotients exact, checked by
+    /// multiplying back); (a·c)/(b·c) in lowest terms is the same function at every point
+    /// and its denominator is no larger than b's.
+    fn gcd_planted(a: &Poly, b: &Poly, c: &Poly, pts: &[Point]) -> Result<(), TestCaseError> {
+        let (x, y) = (a * c, b * c);
+        let g = x.gcd(&y);
+        if x.is_zero() && y.is_zero() {
+            prop_assert!(g.is_zero());
+            return Ok(());
+        }
+        for side in [&x, &y] {
+            let q = side.div_exact(&g);
+            prop_assert!(
+                q.as_ref().is_some_and(|q| &(q * &g) == side),
+                "{} ∤ {}",
+                g,
+                side
+            );
+        }
+        if !c.is_zero() {
+            prop_assert!(g.div_exact(c).is_some(), "{} ∤ {}", c, g);
+        }
+        let (hx, hy) = (x.primitive().1, y.primitive().1);
+        if x.ring() == y.ring() && x.len() + y.len() <= 40 {
+            if let Some(h) = hx.gcd_heuristic(hy) {
+                prop_assert_eq!(h.primitive().1, hx.gcd_prs(hy).primitive().1);
+            }
+        }
+        if y.is_zero() {
+            return Ok(());
+        }
+        let r = RatFn {
+            num: x.clone(),
+            den: y.clone(),
+        }
+        .reduced();
+        prop_assert!(r.den.degree() <= b.degree(), "{} not cancelled by {}", y, c);
+        prop_assert_eq!(&r.num * b, a * &r.den);
+        for pt in pts {
+            let dy = naive(&y, &pt.q);
+            if !dy.is_zero() {
+                prop_assert_eq!(r.eval(&pt.q), Some(naive(&x, &pt.q) / dy));
+            }
+        }
+        Ok(())
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig { cases: cases(64), rng_seed: proptest::test_runner::RngSeed::Fixed(11), ..ProptestConfig::default() })]
+
+        #[test]
+        fn ring_operations_match_evaluation(a in sparse(8, 130), b in sparse(8, 130), e in 0u32..4, pts in points()) {
+            ring_at(&poly(&a), &poly(&b), e, &pts)?;
+        }
+
+        #[test]
+        fn dense_ring_operations_match_evaluation(a in dense(4, 24, 10), b in dense(4, 24, 10), e in 0u32..3, pts in points()) {
+            ring_at(&poly(&a), &poly(&b), e, &pts)?;
+        }
+
+        #[test]
+        fn evaluation_matches_the_printed_terms(a in sparse(10, 130), d in dense(1, 30, 12), pts in points()) {
+            for p in [poly(&a), poly(&d)] {
+                for pt in &pts {
+                    prop_assert_eq!(p.eval(&pt.q), Some(naive(&p, &pt.q)));
+                }
+            }
+        }
+
+        #[test]
+        fn substitution_matches_evaluation(a in sparse(7, 8), q in sparse(4, 6), v in 0usize..8, pts in points()) {
+            substitution(&poly(&a), &poly(&q), VARS[v], &pts)?;
+        }
+
+        #[test]
+        fn dense_substitution_matches_evaluation(a in dense(3, 12, 6), q in dense(1, 3, 4), v in 0usize..3, pts in points()) {
+            substitution(&poly(&a), &poly(&q), VARS[v], &pts)?;
+        }
+
+        #[test]
+        fn exact_division_recovers_the_factor(a in sparse(7, 130), b in sparse(6, 130), c in sparse(3, 130), pts in points()) {
+            division(&poly(&a), &poly(&b), &poly(&c), &pts)?;
+        }
+
+        #[test]
+        fn dense_exact_division_recovers_the_factor(a in dense(2, 20, 10), b in dense(2, 16, 10), c in dense(1, 6, 10), pts in points()) {
+            division(&poly(&a), &poly(&b), &poly(&c), &pts)?;
+        }
+
+        #[test]
+        fn gcd_contains_the_planted_factor(a in sparse(5, 12), b in sparse(5, 12), c in sparse(4, 12), pts in points()) {
+            gcd_planted(&poly(&a), &poly(&b), &poly(&c), &pts)?;
+        }
+
+        #[test]
+        fn dense_gcd_contains_the_planted_factor(a in dense(1, 4, 5), b in dense(1, 4, 5), c in dense(1, 4, 5), pts in points()) {
+            gcd_planted(&poly(&a), &poly(&b), &poly(&c), &pts)?;
+        }
+    }
+}

@@ -5,7 +5,8 @@
 //! ξ-adic digits of its coefficients. A candidate that divides both inputs exactly is the
 //! gcd (ξ > 2·min(‖A‖∞, ‖B‖∞) + 2 makes the lifting faithful); otherwise ξ grows and the
 //! attempt repeats. The images grow by a factor of the degree per variable, so a size
-//! limit gives up (`None`) rather than compute with huge integers.
+//! limit gives up rather than compute with huge integers; [`MPoly::gcd`] then falls back to
+//! the primitive remainder sequences of [`super::prs`], which always answer.
 
 use num_bigint::BigInt;
 use num_integer::Integer;
@@ -20,8 +21,9 @@ const IMAGE_BITS: u64 = 1 << 14;
 const ATTEMPTS: usize = 6;
 
 impl MPoly {
-    /// The gcd with a positive leading coefficient (integer content included), or `None`
-    /// when the heuristic gives up (images too large, or every ξ tried was unlucky).
+    /// The gcd with a positive leading coefficient (integer content included): the
+    /// heuristic gcd when it answers, else the primitive remainder sequence
+    /// ([`MPoly::gcd_prs`]), so there is always an answer and it is always exact.
     ///
     /// # Example
     /// ```
@@ -31,9 +33,22 @@ impl MPoly {
     /// let g = &x + &y;
     /// let a = &g * &(&x - &y);
     /// let b = &g * &(&x * &y);
-    /// assert_eq!(a.gcd(&b), Some(g));
+    /// assert_eq!(a.gcd(&b), g);
     /// ```
-    pub fn gcd(&self, other: &MPoly) -> Option<MPoly> {
+    pub fn gcd(&self, other: &MPoly) -> MPoly {
+        self.gcd_heuristic(other)
+            .unwrap_or_else(|| super::prs::gcd_prs(self, other))
+    }
+
+    /// The gcd by primitive polynomial remainder sequences alone (the fallback of
+    /// [`MPoly::gcd`]; public so that the two can be compared).
+    pub fn gcd_prs(&self, other: &MPoly) -> MPoly {
+        super::prs::gcd_prs(self, other)
+    }
+
+    /// The heuristic gcd alone: `None` when it gives up (images too large, or every ξ
+    /// tried was unlucky). An answer is always right: it divides both inputs, checked.
+    pub fn gcd_heuristic(&self, other: &MPoly) -> Option<MPoly> {
         // gcd(0, b) = b with a positive leading coefficient
         let normal = |p: &MPoly| {
             let (c, pp) = p.primitive();
@@ -81,7 +96,7 @@ fn heu(a: &MPoly, b: &MPoly) -> Option<MPoly> {
         }
         let (ea, eb) = (a.eval_var(i, &xi), b.eval_var(i, &xi));
         // the images only grow with ξ: a level below that gave up gives up again
-        let g = ea.gcd(&eb)?;
+        let g = ea.gcd_heuristic(&eb)?;
         let cand = lift(&g, i, &xi).primitive().1;
         if !cand.is_zero() && a.div_exact(&cand).is_some() && b.div_exact(&cand).is_some() {
             return Some(cand);

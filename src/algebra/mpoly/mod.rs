@@ -3,7 +3,8 @@
 //! words (graded lexicographic order = integer order), terms sit in arrays sorted in
 //! descending order, coefficients are machine integers until they overflow. Products use a
 //! heap (Johnson / Monagan–Pearce) or, when the product is dense, an array of accumulators;
-//! exact quotients use a heap as well.
+//! exact quotients use a heap as well; gcds are heuristic (GCDHEU) with a primitive
+//! remainder sequence behind them when the heuristic gives up.
 //!
 //! [`crate::algebra::Poly`] (over ℚ, with named variables) is a rational content times one
 //! of these primitive integer polynomials.
@@ -16,6 +17,7 @@ mod heap;
 mod monomial;
 mod mul;
 mod ops;
+mod prs;
 mod ring;
 
 pub use coeff::{content, Acc, Coef};
@@ -239,13 +241,32 @@ mod tests {
         let g = &(&v("a") * &v("b")) - &(&two * &v("c"));
         let a = &g.pow(2) * &(&v("a") + &two);
         let b = &g * &(&v("b") - &v("c")).pow(2);
-        assert_eq!(a.gcd(&b), Some(g.clone()));
+        assert_eq!(a.gcd(&b), g.clone());
+        assert_eq!(a.gcd_prs(&b), g.clone());
         let six = MPoly::constant(3, Coef::Small(6));
-        assert_eq!((&a * &six).gcd(&(&b * &(&two * &two))), Some(&g * &two));
-        assert_eq!(
-            v("a").gcd(&v("b")),
-            Some(MPoly::constant(3, Coef::Small(1)))
-        );
+        assert_eq!((&a * &six).gcd(&(&b * &(&two * &two))), &g * &two);
+        assert_eq!((&a * &six).gcd_prs(&(&b * &(&two * &two))), &g * &two);
+        assert_eq!(v("a").gcd(&v("b")), MPoly::constant(3, Coef::Small(1)));
+        assert_eq!(v("a").gcd_prs(&v("b")), MPoly::constant(3, Coef::Small(1)));
+    }
+
+    /// Degree 300 with 64-bit coefficients: the first image would pass the heuristic's size
+    /// limit, so it gives up at once, and the answer comes from the remainder sequence.
+    #[test]
+    fn gcd_falls_back_when_the_heuristic_gives_up() {
+        let r = Ring::new(&["x", "y"]);
+        let (x, y) = (r.var("x").unwrap(), r.var("y").unwrap());
+        let one = MPoly::constant(2, Coef::Small(1));
+        let k = MPoly::constant(2, Coef::Small(1 << 62));
+        let g = &(&x + &y) + &one;
+        let a = &g * &(&(&k * &x.pow(300)) + &y);
+        let b = &g * &(&x.pow(300) - &(&k * &y));
+        assert_eq!(a.gcd_heuristic(&b), None);
+        assert_eq!(a.gcd(&b), g.clone());
+        assert_eq!(a.gcd(&(&b * &y)), g.clone());
+        assert_eq!((&a * &y.pow(2)).gcd(&(&b * &y)), &g * &y);
+        // coprime after the planted factor is removed
+        assert_eq!(a.gcd(&(&b + &one)), one);
     }
 
     #[test]
