@@ -277,6 +277,20 @@ impl UPoly {
         )
     }
 
+    /// Whether the polynomial has no repeated root: proved modulo a prime when it can be (a
+    /// constant gcd of p and p′ there), else decided by the exact gcd over ℚ, whose rational
+    /// remainders grow fast with the degree.
+    pub fn is_square_free(&self) -> bool {
+        match self.degree() {
+            None => false,
+            Some(0) => true,
+            Some(_) => {
+                square_free_mod_prime(&integer_coeffs(self))
+                    || self.gcd(&self.derivative()).degree() == Some(0)
+            }
+        }
+    }
+
     /// Yun's square-free decomposition: `self = c · Π fᵢ^i`; returns `(i, fᵢ)` for non-constant fᵢ.
     pub fn square_free_factors(&self) -> Vec<(u32, UPoly)> {
         let mut out = Vec::new();

@@ -186,6 +186,9 @@ fn linear_xy(l: &[[BigRational; 3]; 3]) -> Option<(Poly, Poly)> {
 /// Square-free degree of a non-zero univariate polynomial: deg p − deg gcd(p, p′).
 pub fn square_free_degree(p: &UPoly) -> usize {
     let d = p.degree().unwrap_or(0);
+    if p.is_square_free() {
+        return d;
+    }
     d - p.gcd(&p.derivative()).degree().unwrap_or(0)
 }
 
