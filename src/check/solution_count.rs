@@ -177,8 +177,7 @@ fn literature(
         .computed("up to the global reflection", common(three.instances.iter().map(|i| i.sm_up_to_reflection)).unwrap_or(0))
         .computed("hypothesis: preimages, the reflection counted (the four-point ratio's convention)", fibre3.unwrap_or(0))
         .computed("hypothesis: preimages up to the global reflection", common(three.instances.iter().map(|i| i.sm_up_to_reflection)).unwrap_or(0))
-        .computed("hypothesis: branches of the lines-first construction (two lines, four unit directions per camera pair, three pairs)", Value::count(4usize.pow(3)))
-        .power(Power::exact_value("exact integer comparison; the four-point ratio, counted the same way, reproduces; missing: the publication's definition of what 64 counts (only its abstract was read), so 64 = 4³ branches is a reading, not a count of preimages"))
+        .power(Power::exact_value("exact integer comparison; the four-point ratio, counted the same way, reproduces; missing: the publication's definition of what 64 counts (only its abstract was read); a reading not computed here: the lines-first construction's branches, two intersection lines per camera pair with two directions each, over three pairs"))
         .method("the three-point count of solution-count/p3f3, in the convention that reproduces the four-point ratio: points and proper camera frames modulo proper rigid motions, the reflection counted")
         .detail("printed ÷ computed", Value::exact(num_rational::Ratio::new(printed3, fibre3.unwrap_or(1).max(1))))
         .verdict(ratio_verdict(printed3, fibre3));
