@@ -67,6 +67,17 @@ pub const FORMULA_DEGREE: f64 = 256.0;
 /// cancellation: terms of a sum add, of a product multiply, of a power raise).
 pub const FORMULA_TERMS: f64 = 1e6;
 
+/// Points per frame of `identify --method epipolar`: every ordered choice of four frame-2
+/// points is tried, n⁴ of them; n = 40 takes about 2 s on two cores (n = 60 about 10 s).
+/// `identify --max-points` raises it.
+pub const IDENTIFY_POINTS_EPIPOLAR: usize = 40;
+/// Points per frame of `identify --method four` (the paper's four-point test, n⁴ tries at
+/// about 20 times epipolar's cost each): n = 20 takes about 2 s.
+pub const IDENTIFY_POINTS_FOUR: usize = 20;
+/// Points per frame of `identify --method five` (the five-point line, n⁵ tries): n = 30
+/// takes about 1 s.
+pub const IDENTIFY_POINTS_FIVE: usize = 30;
+
 /// `Err` naming `what`, the value and the limit when `value > limit`.
 pub fn at_most(what: &str, value: usize, limit: usize) -> Result<(), String> {
     if value > limit {

@@ -50,6 +50,7 @@ pub enum Command {
 impl Command {
     /// Run the subcommand.
     pub fn run(self) -> Result<(), Error> {
+        let _ = COMMAND.set(self.name());
         match self {
             Command::Report(a) => report::run(a),
             Command::Dof(a) => dof::run(a),
@@ -64,6 +65,31 @@ impl Command {
     }
 }
 
+/// The running subcommand's name, for the output guard's message.
+static COMMAND: std::sync::OnceLock<&'static str> = std::sync::OnceLock::new();
+
+/// The running subcommand's name (`orthocheck` before one runs).
+fn command_name() -> &'static str {
+    COMMAND.get().copied().unwrap_or("orthocheck")
+}
+
+impl Command {
+    /// The subcommand's name as typed.
+    fn name(&self) -> &'static str {
+        match self {
+            Command::Report(_) => "report",
+            Command::Dof(_) => "dof",
+            Command::Audit(_) => "audit",
+            Command::Solve(_) => "solve",
+            Command::Noise(_) => "noise",
+            Command::Identify(_) => "identify",
+            Command::Membership(_) => "membership",
+            Command::Family(_) => "family",
+            Command::Synth(_) => "synth",
+        }
+    }
+}
+
 /// Print `value` as pretty JSON when `json`, else as `text` renders it.
 fn emit<T: serde::Serialize>(
     json: bool,
@@ -71,10 +97,28 @@ fn emit<T: serde::Serialize>(
     text: impl FnOnce(&T) -> String,
 ) -> Result<(), Error> {
     if json {
-        out(&format!("{}\n", to_json(value)))
+        json_out(value)
     } else {
         out(&text(value))
     }
+}
+
+/// Print `value` as pretty JSON through the output guard: serde_json writes a non-finite
+/// number as `null`, which the text guard cannot tell from an honest `null`, so the value is
+/// walked first ([`orthocheck::report::finite`]) and a NaN or inf is an error (exit 1).
+fn json_out<T: serde::Serialize>(value: &T) -> Result<(), Error> {
+    if let Some(bad) = orthocheck::report::finite::first_non_finite(value) {
+        return Err(non_finite(&bad.to_string()));
+    }
+    out(&format!("{}\n", to_json(value)))
+}
+
+/// The output guard's error: which command, which value.
+fn non_finite(what: &str) -> Error {
+    Error::Numerical(format!(
+        "{}: a non-finite number ({what}) reached the output; nothing was printed",
+        command_name()
+    ))
 }
 
 /// Write to standard output through the output guard: a non-finite number in the text is an
@@ -83,9 +127,7 @@ fn emit<T: serde::Serialize>(
 fn out(text: &str) -> Result<(), Error> {
     use std::io::Write as _;
     if let Some(bad) = orthocheck::report::values::non_finite_token(text) {
-        return Err(Error::Numerical(format!(
-            "a non-finite value (`{bad}`) reached the output; nothing was printed"
-        )));
+        return Err(non_finite(&format!("`{bad}`")));
     }
     let mut stdout = std::io::stdout().lock();
     match stdout
