@@ -11,6 +11,7 @@ mod family;
 mod identify;
 mod membership;
 mod noise;
+pub mod progress;
 mod report;
 mod solve;
 mod synth;
@@ -185,10 +186,27 @@ fn write_new(path: &Path, text: &str) -> Result<(), Error> {
         path: path.to_path_buf(),
         source,
     };
-    let mut f = std::fs::OpenOptions::new()
+    // refuse an existing file before writing anything
+    if std::fs::symlink_metadata(path).is_ok() {
+        return Err(io(std::io::Error::from(std::io::ErrorKind::AlreadyExists)));
+    }
+    // written whole under a temporary name, then linked to its name (a hard link fails if
+    // the name exists, so nothing is overwritten): an interrupt or a full disk never leaves
+    // a half-written file under the user's name
+    let dir = path.parent().filter(|d| !d.as_os_str().is_empty());
+    let name = path
+        .file_name()
+        .map(|n| n.to_string_lossy())
+        .unwrap_or_default();
+    let temp = dir
+        .unwrap_or(Path::new("."))
+        .join(format!(".{name}.{}.tmp", std::process::id()));
+    let written = std::fs::OpenOptions::new()
         .write(true)
         .create_new(true)
-        .open(path)
-        .map_err(io)?;
-    f.write_all(text.as_bytes()).map_err(io)
+        .open(&temp)
+        .and_then(|mut f| f.write_all(text.as_bytes()).and_then(|()| f.sync_all()))
+        .and_then(|()| std::fs::hard_link(&temp, path));
+    let _ = std::fs::remove_file(&temp);
+    written.map_err(io)
 }

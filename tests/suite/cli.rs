@@ -347,6 +347,12 @@ fn noise_is_seeded_and_agrees_with_itself() {
         String::from_utf8_lossy(&a.stderr)
     );
     assert_eq!(a.stdout, orthocheck(&args).stdout);
+    // the progress bar is drawn only on a terminal: piped, standard error stays empty
+    assert!(
+        a.stderr.is_empty(),
+        "{}",
+        String::from_utf8_lossy(&a.stderr)
+    );
     let v = json(&a);
     let rows = v.as_array().unwrap();
     assert_eq!(rows.len(), 1);
@@ -363,6 +369,71 @@ fn noise_is_seeded_and_agrees_with_itself() {
             .code(),
         Some(2)
     );
+}
+
+/// Ctrl-C stops a long run cleanly: one line "interrupted", exit 130, nothing on standard
+/// output and no output file under its name (files are written whole, then renamed).
+#[cfg(unix)]
+#[test]
+fn an_interrupted_run_exits_130_and_writes_nothing() {
+    use std::process::Stdio;
+    use std::time::{Duration, Instant};
+    let interrupt = |args: &[&str], after: Duration| {
+        let child = Command::new(env!("CARGO_BIN_EXE_orthocheck"))
+            .args(args)
+            .current_dir(env!("CARGO_MANIFEST_DIR"))
+            .stdout(Stdio::piped())
+            .stderr(Stdio::piped())
+            .spawn()
+            .unwrap();
+        std::thread::sleep(after);
+        let start = Instant::now();
+        let killed = Command::new("kill")
+            .args(["-INT", &child.id().to_string()])
+            .status()
+            .unwrap();
+        assert!(killed.success());
+        let out = child.wait_with_output().unwrap();
+        assert!(
+            start.elapsed() < Duration::from_secs(5),
+            "it stops promptly"
+        );
+        out
+    };
+    // a noise study of 10⁶ trials per level and model runs for minutes
+    let out = interrupt(
+        &[
+            "noise",
+            "--case",
+            "ex2-noise",
+            "--trials",
+            "1000000",
+            "--json",
+        ],
+        Duration::from_millis(1500),
+    );
+    assert_eq!(
+        out.status.code(),
+        Some(130),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(out.stdout.is_empty());
+    assert!(String::from_utf8_lossy(&out.stderr).contains("interrupted"));
+    // the report: either it had finished (every file whole) or nothing is there
+    let dir = tempfile::tempdir().unwrap();
+    let folder = dir.path().join("out");
+    let out = interrupt(
+        &["report", "--out", folder.to_str().unwrap()],
+        Duration::from_millis(1000),
+    );
+    match out.status.code() {
+        Some(130) => {
+            assert!(!folder.join("report.md").exists() && !folder.join("report.json").exists())
+        }
+        Some(0) => assert!(folder.join("report.json").exists()),
+        c => panic!("exit {c:?}: {}", String::from_utf8_lossy(&out.stderr)),
+    }
 }
 
 #[test]
