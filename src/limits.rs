@@ -86,6 +86,16 @@ pub const RANSAC_SAMPLES: usize = 10_000;
 /// Observations (points × frames) of `reconstruct --robust`: every sample intersects every
 /// point, so the worst case (no good sample) costs samples × observations.
 pub const RANSAC_OBSERVATIONS: usize = 100_000;
+/// Points per frame of `identify --method epipolar`: every ordered choice of four frame-2
+/// points is tried, n⁴ of them; n = 40 takes about 2 s on two cores (n = 60 about 10 s).
+/// `identify --max-points` raises it.
+pub const IDENTIFY_POINTS_EPIPOLAR: usize = 40;
+/// Points per frame of `identify --method four` (the paper's four-point test, n⁴ tries at
+/// about 20 times epipolar's cost each): n = 20 takes about 2 s.
+pub const IDENTIFY_POINTS_FOUR: usize = 20;
+/// Points per frame of `identify --method five` (the five-point line, n⁵ tries): n = 30
+/// takes about 1 s.
+pub const IDENTIFY_POINTS_FIVE: usize = 30;
 
 /// `Err` naming `what`, the value and the limit when `value > limit`.
 pub fn at_most(what: &str, value: usize, limit: usize) -> Result<(), String> {

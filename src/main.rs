@@ -2,7 +2,8 @@
 //! maps errors to exit codes.
 //!
 //! Exit codes: 0 the command ran (whatever the verdicts); 1 a check could not be carried out
-//! (a numerical failure, a write that failed); 2 bad input or usage (clap exits with 2 on usage errors itself).
+//! (a numerical failure, a write that failed); 2 bad input or usage (clap exits with 2 on usage errors itself);
+//! 130 interrupted by Ctrl-C (`cli::progress`).
 
 mod cli;
 
@@ -32,6 +33,7 @@ fn exit_code(e: &Error) -> u8 {
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
+    cli::progress::on_interrupt_stop();
     match cli.command.run() {
         // a reader that stopped reading is the Unix way of saying "enough"
         Ok(()) | Err(Error::ClosedOutput) => ExitCode::SUCCESS,

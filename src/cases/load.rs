@@ -64,6 +64,7 @@ fn parse_yaml_budget<T: serde::de::DeserializeOwned>(
     budget.max_nodes = max_nodes;
     budget.max_aliases = max_aliases;
     budget.max_events = max_nodes.saturating_mul(2).max(budget.max_events);
+    let limits = budget.clone();
     let options = serde_saphyr::options! { with_snippet: false, budget: Some(budget) };
     let mut field: Option<String> = None;
     let parsed = serde_saphyr::with_deserializer_from_str_with_options(text, options, |de| {
@@ -85,13 +86,15 @@ fn parse_yaml_budget<T: serde::de::DeserializeOwned>(
                 column: loc.map(|l| l.column()),
                 field: field.or_else(|| field_of(&message)),
             },
-            message: plain_message(&strip_location(&message)),
+            message: plain_message(&strip_location(&message), &limits),
         }
     })
 }
 
-/// The parser's messages in this tool's words: no advice about the parser's own options.
-fn plain_message(message: &str) -> String {
+/// The parser's messages in this tool's words: no advice about the parser's own options, no
+/// parser terms ("scalar"), and a breached budget stated as the limit that was set (the
+/// parser reports the count that breached it, one more).
+fn plain_message(message: &str, limits: &serde_saphyr::Budget) -> String {
     if let Some(rest) = message.strip_prefix("duplicate mapping key") {
         let key = rest
             .trim_start_matches(": ")
@@ -107,20 +110,36 @@ fn plain_message(message: &str) -> String {
     }
     if let Some(breach) = message.strip_prefix("budget breached: ") {
         let what = breach.split([' ', '{']).next().unwrap_or(breach);
-        let limit = breach
+        let reached = breach
             .split(|c: char| !c.is_ascii_digit())
             .find(|d| !d.is_empty())
             .unwrap_or("?");
-        let kind = match what {
-            "Nodes" => "values",
-            "Events" => "parser events",
-            "Depth" => "levels of nesting",
-            "Aliases" => "aliases",
-            "Anchors" => "anchors",
-            "Documents" => "documents",
-            _ => "elements",
+        let (kind, limit) = match what {
+            "Nodes" => ("values", Some(limits.max_nodes)),
+            "Events" => ("parser events", Some(limits.max_events)),
+            "Depth" => ("levels of nesting", Some(limits.max_depth)),
+            "Aliases" => ("aliases", Some(limits.max_aliases)),
+            "Anchors" => ("anchors", Some(limits.max_anchors)),
+            "Documents" => ("documents", Some(limits.max_documents)),
+            _ => ("elements", None),
         };
-        return format!("the file is too large: more than {limit} {kind}");
+        return match limit {
+            Some(l) => format!("the file is too large: more than {l} {kind} (see docs/limits.md)"),
+            None => format!("the file is too large: {reached} {kind}"),
+        };
+    }
+    if let Some(what) = message
+        .strip_prefix("expected ")
+        .and_then(|m| m.strip_suffix(" scalar"))
+    {
+        return format!(
+            "expected a single {} value here, not a list or a map (or an unclosed bracket)",
+            if what == "string" {
+                "text or number"
+            } else {
+                what
+            }
+        );
     }
     for int in [
         "u8", "u16", "u32", "u64", "usize", "i8", "i16", "i32", "i64",
@@ -334,5 +353,37 @@ fn collect_claims(v: &serde_json::Value, out: &mut std::collections::BTreeSet<St
         }
         serde_json::Value::Array(a) => a.iter().for_each(|x| collect_claims(x, out)),
         _ => {}
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::collections::BTreeMap;
+
+    type Any = BTreeMap<String, serde::de::IgnoredAny>;
+
+    #[test]
+    fn an_alias_bomb_is_refused_naming_the_limit_set() {
+        let n = crate::limits::CASE_YAML_ALIASES;
+        let text = format!("a: &x 1\nb: [{}]\n", vec!["*x"; n + 1].join(", "));
+        let e = parse_yaml::<Any>(&text, Path::new("bomb.yaml"))
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains(&format!("more than {n} aliases")), "{e}");
+    }
+
+    #[test]
+    fn a_list_where_a_value_belongs_is_said_without_parser_terms() {
+        #[derive(Debug, serde::Deserialize)]
+        #[allow(dead_code)]
+        struct S {
+            seed: String,
+        }
+        let e = parse_yaml::<S>("seed: [1, 2]\n", Path::new("s.yaml"))
+            .unwrap_err()
+            .to_string();
+        assert!(!e.contains("scalar"), "{e}");
+        assert!(e.contains("s.yaml") && e.contains("seed"), "{e}");
     }
 }

@@ -12,6 +12,7 @@ mod identify;
 mod membership;
 mod noise;
 mod reconstruct;
+pub mod progress;
 mod report;
 mod solve;
 mod synth;
@@ -54,6 +55,7 @@ pub enum Command {
 impl Command {
     /// Run the subcommand.
     pub fn run(self) -> Result<(), Error> {
+        let _ = COMMAND.set(self.name());
         match self {
             Command::Report(a) => report::run(a),
             Command::Dof(a) => dof::run(a),
@@ -69,6 +71,31 @@ impl Command {
     }
 }
 
+/// The running subcommand's name, for the output guard's message.
+static COMMAND: std::sync::OnceLock<&'static str> = std::sync::OnceLock::new();
+
+/// The running subcommand's name (`orthocheck` before one runs).
+fn command_name() -> &'static str {
+    COMMAND.get().copied().unwrap_or("orthocheck")
+}
+
+impl Command {
+    /// The subcommand's name as typed.
+    fn name(&self) -> &'static str {
+        match self {
+            Command::Report(_) => "report",
+            Command::Dof(_) => "dof",
+            Command::Audit(_) => "audit",
+            Command::Solve(_) => "solve",
+            Command::Noise(_) => "noise",
+            Command::Identify(_) => "identify",
+            Command::Membership(_) => "membership",
+            Command::Family(_) => "family",
+            Command::Synth(_) => "synth",
+        }
+    }
+}
+
 /// Print `value` as pretty JSON when `json`, else as `text` renders it.
 fn emit<T: serde::Serialize>(
     json: bool,
@@ -76,10 +103,28 @@ fn emit<T: serde::Serialize>(
     text: impl FnOnce(&T) -> String,
 ) -> Result<(), Error> {
     if json {
-        out(&format!("{}\n", to_json(value)))
+        json_out(value)
     } else {
         out(&text(value))
     }
+}
+
+/// Print `value` as pretty JSON through the output guard: serde_json writes a non-finite
+/// number as `null`, which the text guard cannot tell from an honest `null`, so the value is
+/// walked first ([`orthocheck::report::finite`]) and a NaN or inf is an error (exit 1).
+fn json_out<T: serde::Serialize>(value: &T) -> Result<(), Error> {
+    if let Some(bad) = orthocheck::report::finite::first_non_finite(value) {
+        return Err(non_finite(&bad.to_string()));
+    }
+    out(&format!("{}\n", to_json(value)))
+}
+
+/// The output guard's error: which command, which value.
+fn non_finite(what: &str) -> Error {
+    Error::Numerical(format!(
+        "{}: a non-finite number ({what}) reached the output; nothing was printed",
+        command_name()
+    ))
 }
 
 /// Write to standard output through the output guard: a non-finite number in the text is an
@@ -88,9 +133,7 @@ fn emit<T: serde::Serialize>(
 fn out(text: &str) -> Result<(), Error> {
     use std::io::Write as _;
     if let Some(bad) = orthocheck::report::values::non_finite_token(text) {
-        return Err(Error::Numerical(format!(
-            "a non-finite value (`{bad}`) reached the output; nothing was printed"
-        )));
+        return Err(non_finite(&format!("`{bad}`")));
     }
     let mut stdout = std::io::stdout().lock();
     match stdout
@@ -148,10 +191,27 @@ fn write_new(path: &Path, text: &str) -> Result<(), Error> {
         path: path.to_path_buf(),
         source,
     };
-    let mut f = std::fs::OpenOptions::new()
+    // refuse an existing file before writing anything
+    if std::fs::symlink_metadata(path).is_ok() {
+        return Err(io(std::io::Error::from(std::io::ErrorKind::AlreadyExists)));
+    }
+    // written whole under a temporary name, then linked to its name (a hard link fails if
+    // the name exists, so nothing is overwritten): an interrupt or a full disk never leaves
+    // a half-written file under the user's name
+    let dir = path.parent().filter(|d| !d.as_os_str().is_empty());
+    let name = path
+        .file_name()
+        .map(|n| n.to_string_lossy())
+        .unwrap_or_default();
+    let temp = dir
+        .unwrap_or(Path::new("."))
+        .join(format!(".{name}.{}.tmp", std::process::id()));
+    let written = std::fs::OpenOptions::new()
         .write(true)
         .create_new(true)
-        .open(path)
-        .map_err(io)?;
-    f.write_all(text.as_bytes()).map_err(io)
+        .open(&temp)
+        .and_then(|mut f| f.write_all(text.as_bytes()).and_then(|()| f.sync_all()))
+        .and_then(|()| std::fs::hard_link(&temp, path));
+    let _ = std::fs::remove_file(&temp);
+    written.map_err(io)
 }

@@ -1,8 +1,6 @@
 //! `orthocheck noise`: a paper case's noise study with the user's levels, trials and seed.
 
-use std::io::{IsTerminal, Write as _};
 use std::path::PathBuf;
-use std::sync::atomic::{AtomicUsize, Ordering};
 
 use clap::ValueEnum;
 use orthocheck::studies::noise_request::{ModelChoice, NoiseRequest, RequestError};
@@ -78,20 +76,9 @@ pub fn run(a: Args) -> Result<(), Error> {
         }
         RequestError::Study(e) => e,
     })?;
-    let total = study.total_trials();
-    let done = AtomicUsize::new(0);
-    let show = std::io::stderr().is_terminal();
-    let progress = |n: usize| {
-        let d = done.fetch_add(n, Ordering::Relaxed) + n;
-        if show {
-            eprint!("\r{d}/{total} trials");
-            let _ = std::io::stderr().flush();
-        }
-    };
-    let summaries = study.run(&progress);
-    if show {
-        eprintln!();
-    }
+    let bar = super::progress::bar(study.total_trials() as u64, "trials");
+    let summaries = study.run(&|n: usize| bar.inc(n as u64));
+    bar.finish_and_clear();
     emit(a.json, &summaries, |s| report::noise_text(&a.case, s))?;
     Ok(())
 }

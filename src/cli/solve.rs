@@ -7,7 +7,7 @@ use orthocheck::derivations::solver::{solve_tracks, Method};
 use orthocheck::input::{load_tracks, PointOrder};
 use orthocheck::{report, Error};
 
-use super::{in_file, out, to_json};
+use super::{in_file, json_out, non_finite, out};
 
 /// Arguments of `solve`.
 #[derive(clap::Args)]
@@ -52,7 +52,11 @@ pub fn run(a: Args) -> Result<(), Error> {
     let tracks = load_tracks(&a.input, PointOrder::ByName)?;
     let solved = solve_tracks(&tracks, a.method.into()).map_err(|e| in_file(&a.input, e))?;
     if a.json {
-        out(&format!("{}\n", to_json(&report::solve_json(&solved))))?;
+        // the guard walks what was solved: the JSON built from it would hold `null`s
+        if let Some(bad) = orthocheck::report::finite::first_non_finite(&solved) {
+            return Err(non_finite(&bad.to_string()));
+        }
+        json_out(&report::solve_json(&solved))?;
     } else {
         out(&report::solve_text(&solved))?;
     }

@@ -1,6 +1,7 @@
 //! Presentation: renderers of claim results. No computation happens here.
 
 pub mod evidence;
+pub mod finite;
 pub mod glance;
 pub mod html;
 pub mod layout;
@@ -155,6 +156,12 @@ impl Report {
     /// report whole; a name in `dir` that is a symbolic link is refused rather than followed.
     pub fn write(&self, dir: &Path) -> Result<()> {
         prepare_output_dir(dir)?;
+        // serde_json would write a NaN as `null`: refuse before any file is touched
+        if let Some(bad) = finite::first_non_finite(self) {
+            return Err(crate::error::Error::Numerical(format!(
+                "report: a non-finite number ({bad}) would reach report.json; nothing was written"
+            )));
+        }
         let svgs = svg::figure_files(&self.figures)?;
         let mut files = vec![
             ("report.md", self.to_markdown()),

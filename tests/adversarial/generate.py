@@ -40,6 +40,23 @@ put("tracks", "negative_zero.yaml", yaml_tracks(GOOD).replace("-0.195", "-0.0"),
 put("tracks", "negative_zero.csv", csv_tracks(GOOD).replace("-0.195", "-0.0"), "ok")
 put("tracks", "big_1e308.yaml", yaml_tracks(GOOD, fmt=lambda v: f"{v}e308"), "ok-or-refused")
 put("tracks", "big_1e308.csv", csv_tracks(GOOD, fmt=lambda v: f"{v}e308"), "ok-or-refused")
+# Found by the tracks fuzzer (tests/suite/fuzz.rs): three points in four frames, one
+# coordinate 1e308. Squared lengths overflow to inf, and nalgebra's SVD of a matrix holding
+# inf looped without end (no iteration limit): p3f4's rank test hung for minutes.
+put("tracks", "fuzz_p3f4_one_1e308.csv", """frame,point,x,y
+1,Q′,3.4644830770184263,-8.10412328129776
+1,Q,8.62317878496598,-5.083411630430485
+1,P,-4.382773413942291,3.835323089568262
+2,Q′,1.9913068788623491,1e308
+2,Q,2.0911721627322017,2.603825010168203
+2,P,-9.649126351148404,0.8203985246642481
+3,Q′,9.496477476704335,0.6424993703514533
+3,Q,-9.581021148785657,-7.96008099964605
+3,P,-1.4861620824497572,0.12563017413675867
+4,Q′,9.851483353071222,8.742709229935203
+4,Q,-0.10377545394522408,-6.921699184285756
+4,P,1.9811811321562922,5.947570551179307
+""", "ok-or-refused")
 put("tracks", "tiny_1e-300.yaml", yaml_tracks(GOOD, fmt=lambda v: f"{v}e-300"), "ok-or-refused")
 put("tracks", "overflow_1e309.yaml", yaml_tracks(GOOD, fmt=lambda v: f"{v}e309"), "refused")
 put("tracks", "overflow_1e309.csv", csv_tracks(GOOD, fmt=lambda v: f"{v}e309"), "refused")

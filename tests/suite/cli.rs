@@ -347,6 +347,12 @@ fn noise_is_seeded_and_agrees_with_itself() {
         String::from_utf8_lossy(&a.stderr)
     );
     assert_eq!(a.stdout, orthocheck(&args).stdout);
+    // the progress bar is drawn only on a terminal: piped, standard error stays empty
+    assert!(
+        a.stderr.is_empty(),
+        "{}",
+        String::from_utf8_lossy(&a.stderr)
+    );
     let v = json(&a);
     let rows = v.as_array().unwrap();
     assert_eq!(rows.len(), 1);
@@ -363,6 +369,71 @@ fn noise_is_seeded_and_agrees_with_itself() {
             .code(),
         Some(2)
     );
+}
+
+/// Ctrl-C stops a long run cleanly: one line "interrupted", exit 130, nothing on standard
+/// output and no output file under its name (files are written whole, then renamed).
+#[cfg(unix)]
+#[test]
+fn an_interrupted_run_exits_130_and_writes_nothing() {
+    use std::process::Stdio;
+    use std::time::{Duration, Instant};
+    let interrupt = |args: &[&str], after: Duration| {
+        let child = Command::new(env!("CARGO_BIN_EXE_orthocheck"))
+            .args(args)
+            .current_dir(env!("CARGO_MANIFEST_DIR"))
+            .stdout(Stdio::piped())
+            .stderr(Stdio::piped())
+            .spawn()
+            .unwrap();
+        std::thread::sleep(after);
+        let start = Instant::now();
+        let killed = Command::new("kill")
+            .args(["-INT", &child.id().to_string()])
+            .status()
+            .unwrap();
+        assert!(killed.success());
+        let out = child.wait_with_output().unwrap();
+        assert!(
+            start.elapsed() < Duration::from_secs(5),
+            "it stops promptly"
+        );
+        out
+    };
+    // a noise study of 10⁶ trials per level and model runs for minutes
+    let out = interrupt(
+        &[
+            "noise",
+            "--case",
+            "ex2-noise",
+            "--trials",
+            "1000000",
+            "--json",
+        ],
+        Duration::from_millis(1500),
+    );
+    assert_eq!(
+        out.status.code(),
+        Some(130),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(out.stdout.is_empty());
+    assert!(String::from_utf8_lossy(&out.stderr).contains("interrupted"));
+    // the report: either it had finished (every file whole) or nothing is there
+    let dir = tempfile::tempdir().unwrap();
+    let folder = dir.path().join("out");
+    let out = interrupt(
+        &["report", "--out", folder.to_str().unwrap()],
+        Duration::from_millis(1000),
+    );
+    match out.status.code() {
+        Some(130) => {
+            assert!(!folder.join("report.md").exists() && !folder.join("report.json").exists())
+        }
+        Some(0) => assert!(folder.join("report.json").exists()),
+        c => panic!("exit {c:?}: {}", String::from_utf8_lossy(&out.stderr)),
+    }
 }
 
 #[test]
@@ -487,6 +558,59 @@ fn identify_membership_and_family_on_two_frames() {
     assert_eq!(out.status.code(), Some(2));
 }
 
+/// identify's time grows as n⁴ (n⁵ for five): beyond the method's limit it refuses before any
+/// work (exit 2), naming the limit and the override; `--max-points` moves the limit.
+#[test]
+fn identify_refuses_more_points_than_its_limit() {
+    let dir = tempfile::tempdir().unwrap();
+    let big = dir.path().join("big.yaml");
+    let n = orthocheck::limits::IDENTIFY_POINTS_EPIPOLAR + 1;
+    let t = orthocheck::model::Scene::random(n, 2, 5).tracks();
+    std::fs::write(&big, orthocheck::input::tracks_to_yaml(&t)).unwrap();
+    let start = std::time::Instant::now();
+    let out = orthocheck(&["identify", "--input", big.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(2));
+    let e = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        e.contains(&format!("is {n}, more than the limit of {}", n - 1))
+            && e.contains("--max-points"),
+        "{e}"
+    );
+    assert!(e.contains("big.yaml"), "the message names the file: {e}");
+    assert!(start.elapsed() < std::time::Duration::from_secs(5));
+    for (method, limit) in [
+        ("four", orthocheck::limits::IDENTIFY_POINTS_FOUR),
+        ("five", orthocheck::limits::IDENTIFY_POINTS_FIVE),
+    ] {
+        let e = orthocheck(&[
+            "identify",
+            "--input",
+            big.to_str().unwrap(),
+            "--method",
+            method,
+        ]);
+        assert_eq!(e.status.code(), Some(2));
+        assert!(String::from_utf8_lossy(&e.stderr).contains(&format!("limit of {limit}")));
+    }
+    // the override lowers it as well as raising it
+    let small = dir.path().join("small.yaml");
+    let t = orthocheck::model::Scene::random(5, 2, 5).tracks();
+    std::fs::write(&small, orthocheck::input::tracks_to_yaml(&t)).unwrap();
+    let s = small.to_str().unwrap();
+    assert_eq!(
+        orthocheck(&["identify", "--input", s, "--max-points", "4"])
+            .status
+            .code(),
+        Some(2)
+    );
+    assert_eq!(
+        orthocheck(&["identify", "--input", s, "--max-points", "5"])
+            .status
+            .code(),
+        Some(0)
+    );
+}
+
 /// The page a reviewer opens: every claim of report.json is on it, every figure is a
 /// well-formed SVG, and nothing is fetched from anywhere.
 fn check_html(html: &str, report: &serde_json::Value) {
@@ -552,6 +676,36 @@ fn report_refuses_a_symlinked_output_file() {
     assert!(e.contains("symbolic link"), "{e}");
     assert_eq!(std::fs::read_to_string(&outside).unwrap(), "keep me");
     assert!(!out.join("report.md").exists());
+}
+
+/// The output guard: serde_json would write a NaN as `null`, so a report holding one is
+/// refused (a numerical failure, exit 1) before any file is written.
+#[test]
+fn report_refuses_a_non_finite_number_before_writing() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("out");
+    let plot = orthocheck::check::figure::Plot {
+        title: "t".into(),
+        x_label: "x".into(),
+        y_label: "y".into(),
+        equal_aspect: false,
+        log_x: false,
+        layers: Vec::new(),
+        window: Some(([0.0, f64::NAN], [1.0, 1.0])),
+    };
+    let figure = orthocheck::check::figure::Figure {
+        id: "fig-nan".into(),
+        claim: "c".into(),
+        title: "t".into(),
+        caption: "c".into(),
+        panels: vec![plot],
+    };
+    let r = orthocheck::report::Report::with(Vec::new(), vec![figure], Default::default());
+    let e = r.write(&out).unwrap_err();
+    assert!(matches!(e, orthocheck::Error::Numerical(_)), "{e}");
+    let e = e.to_string();
+    assert!(e.contains("NaN at `figures[0].panels[0].window"), "{e}");
+    assert!(!out.join("report.json").exists());
 }
 
 /// A figure whose id is not a plain file name is refused, never written outside the folder.
