@@ -11,8 +11,8 @@ mod family;
 mod identify;
 mod membership;
 mod noise;
-mod reconstruct;
 pub mod progress;
+mod reconstruct;
 mod report;
 mod solve;
 mod synth;
@@ -92,6 +92,7 @@ impl Command {
             Command::Membership(_) => "membership",
             Command::Family(_) => "family",
             Command::Synth(_) => "synth",
+            Command::Reconstruct(_) => "reconstruct",
         }
     }
 }

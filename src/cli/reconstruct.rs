@@ -8,7 +8,7 @@ use orthocheck::sfm::robust::{RansacOptions, DEFAULT_SEED};
 use orthocheck::sfm::{output, reconstruct, Options};
 use orthocheck::Error;
 
-use super::{in_file, out, to_json};
+use super::{in_file, json_out, out};
 
 /// Arguments of `reconstruct`.
 #[derive(clap::Args)]
@@ -74,7 +74,7 @@ pub fn run(a: Args) -> Result<(), Error> {
     };
     let outcome = reconstruct(&obs, &options).map_err(|e| in_file(&a.input, e.into()))?;
     if a.json {
-        out(&format!("{}\n", to_json(&output::Json(&outcome))))
+        json_out(&output::Json(&outcome))
     } else {
         out(&output::text(&outcome))
     }

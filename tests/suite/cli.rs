@@ -690,6 +690,7 @@ fn report_refuses_a_non_finite_number_before_writing() {
         y_label: "y".into(),
         equal_aspect: false,
         log_x: false,
+        log_y: false,
         layers: Vec::new(),
         window: Some(([0.0, f64::NAN], [1.0, 1.0])),
     };
