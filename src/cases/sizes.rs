@@ -43,15 +43,11 @@ pub(super) fn check_sizes(case: &Case, v: &Validator) -> Result<()> {
             c.instances,
             limits::COUNT_INSTANCES,
         ),
-        CaseCheck::LinearityPrice(c) => v.limit(
-            "check.linearity_price.trials",
-            "trials",
-            c.trials,
-            limits::CASE_TRIALS,
-        ),
-        CaseCheck::NotReproducible(_) | CaseCheck::Restatements(_) | CaseCheck::SourceErrata(_) => {
-            Ok(())
-        }
+        // the study's trials, bodies and levels are limited in `cases::linearity::validate`
+        CaseCheck::NotReproducible(_)
+        | CaseCheck::Restatements(_)
+        | CaseCheck::SourceErrata(_)
+        | CaseCheck::LinearityPrice(_) => Ok(()),
     }
 }
 
