@@ -61,6 +61,12 @@ pub const MAX_TRACKS_BYTES: u64 = 64 << 20;
 /// assert_eq!(t.frames[1][1].y, 1.0);
 /// ```
 pub fn load_tracks(path: &Path, order: PointOrder) -> Result<Tracks> {
+    parse_tracks(&read_text(path)?, path, order)
+}
+
+/// A tracks file's text, read through the size limit (never more than the limit plus one
+/// byte is read, so `/dev/zero` is refused, not exhausted).
+pub(crate) fn read_text(path: &Path) -> Result<String> {
     let io = |source| Error::Io {
         path: path.to_path_buf(),
         source,
@@ -78,9 +84,7 @@ pub fn load_tracks(path: &Path, order: PointOrder) -> Result<Tracks> {
             format!("larger than the limit of {MAX_TRACKS_BYTES} bytes"),
         ));
     }
-    let text = String::from_utf8(bytes)
-        .map_err(|_| located(path, None, "file", "not UTF-8 text".into()))?;
-    parse_tracks(&text, path, order)
+    String::from_utf8(bytes).map_err(|_| located(path, None, "file", "not UTF-8 text".into()))
 }
 
 /// Parse tracks text; `path` names the file in errors and its extension picks the format.

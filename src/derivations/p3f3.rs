@@ -15,7 +15,7 @@ use crate::error::{Error, Result};
 use crate::model::Tracks;
 
 mod exact;
-pub use exact::{exact_elimination, exact_equations, validate, Validation};
+pub use exact::{exact_elimination, exact_equations, exact_linear_part, validate, Validation};
 
 /// The unknowns as affine functions of the free one, t: v = slope·t + intercept.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -4,7 +4,6 @@
 //! [`load_tracks`](super::load_tracks) reads them.
 
 use std::collections::HashMap;
-use std::io::Read as _;
 use std::path::Path;
 
 use nalgebra::Vector2;
@@ -12,7 +11,7 @@ use serde::Deserialize;
 
 use super::{csv_rows, located, name_problem, MAX_TRACKS_BYTES};
 use crate::cases::{line_of, parse_yaml_limited};
-use crate::error::{Error, Result};
+use crate::error::Result;
 use crate::model::default_names;
 use crate::sfm::Observations;
 
@@ -27,26 +26,7 @@ struct YamlGaps {
 /// Read a tracks file that may have gaps; the extension (`.csv`, otherwise YAML) picks the
 /// format. Every error names the file, the line and the field.
 pub fn load_observations(path: &Path) -> Result<Observations> {
-    let io = |source| Error::Io {
-        path: path.to_path_buf(),
-        source,
-    };
-    let file = std::fs::File::open(path).map_err(io)?;
-    let mut bytes = Vec::new();
-    file.take(MAX_TRACKS_BYTES + 1)
-        .read_to_end(&mut bytes)
-        .map_err(io)?;
-    if bytes.len() as u64 > MAX_TRACKS_BYTES {
-        return Err(located(
-            path,
-            None,
-            "file",
-            format!("larger than the limit of {MAX_TRACKS_BYTES} bytes"),
-        ));
-    }
-    let text = String::from_utf8(bytes)
-        .map_err(|_| located(path, None, "file", "not UTF-8 text".into()))?;
-    parse_observations(&text, path)
+    parse_observations(&super::read_text(path)?, path)
 }
 
 /// Parse tracks text that may have gaps; `path` names the file in errors.

@@ -207,35 +207,18 @@ pub struct Units {
 impl Units {
     /// The units of `obs`; an error when its size cannot be represented.
     pub fn of(obs: &Observations) -> Result<Units, Error> {
-        let (mut sum, mut n) = (Vector2::zeros(), 0.0);
-        // a first pass by the largest magnitude keeps the sum from overflowing
-        let big = obs.seen().fold(0.0_f64, |m, (_, _, y)| m.max(y.amax()));
-        let pre = if big > 0.0 { pow2_floor(big) } else { 1.0 };
-        for (_, _, y) in obs.seen() {
-            sum += y / pre;
-            n += 1.0;
-        }
-        let centre = if n > 0.0 { sum / n * pre } else { sum };
-        let extent = obs
-            .seen()
-            .fold(0.0_f64, |m, (_, _, y)| m.max((y - centre).amax()));
-        let scale = if extent > 0.0 {
-            pow2_floor(extent)
-        } else {
-            1.0
-        };
-        if !scale.is_finite() || !centre.iter().all(|v| v.is_finite()) {
-            return Err(Error::Numerical(
-                "the coordinates' size cannot be represented".into(),
-            ));
-        }
-        Ok(Units { centre, scale })
+        Units::of_points(|| obs.seen().map(|(_, _, y)| y))
     }
 
     /// The units of complete tracks (as [`Units::of`] of their observations, without the
     /// copy).
     pub fn of_tracks(t: &crate::model::Tracks) -> Result<Units, Error> {
-        let all = || t.frames.iter().flatten();
+        Units::of_points(|| t.frames.iter().flatten().copied())
+    }
+
+    /// The units of the points `all()` yields (three passes over them).
+    fn of_points<I: Iterator<Item = Vector2<f64>>>(all: impl Fn() -> I) -> Result<Units, Error> {
+        // a first pass by the largest magnitude keeps the sum from overflowing
         let big = all().fold(0.0_f64, |m, y| m.max(y.amax()));
         let pre = if big > 0.0 { pow2_floor(big) } else { 1.0 };
         let n = all().count().max(1) as f64;

@@ -167,13 +167,17 @@ pub struct JointFit {
 /// A configuration unpacked: squared edges, the three frames' image points, the views.
 type Unpacked = (Vec<f64>, Vec<Vec<[f64; 2]>>, Vec<[f64; 3]>);
 
-fn unpack(inp: &JointInput, p: &[f64]) -> Option<Unpacked> {
-    let squares: Vec<f64> = inp
-        .edges
+/// The squared edges at parameters `p`: each edge offset is in half-widths of its interval.
+fn squares_at(inp: &JointInput, p: &[f64]) -> Vec<f64> {
+    inp.edges
         .iter()
         .zip(p)
         .map(|((lo, hi), u)| (lo + hi) / 2.0 + u * (hi - lo) / 2.0)
-        .collect();
+        .collect()
+}
+
+fn unpack(inp: &JointInput, p: &[f64]) -> Option<Unpacked> {
+    let squares = squares_at(inp, p);
     let body = tetrahedron(&squares)?;
     let mut frames = Vec::new();
     let mut views = Vec::new();

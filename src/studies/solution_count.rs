@@ -18,7 +18,7 @@ use num_traits::{One, Signed, Zero};
 use rand::Rng;
 
 use crate::algebra::{Poly, UPoly};
-use crate::derivations::p3f3::{exact_elimination, exact_equations};
+use crate::derivations::p3f3::{exact_elimination, exact_linear_part};
 
 mod p4;
 pub use p4::{p4f3_count, P4f3Count, P4f3Instance};
@@ -160,29 +160,6 @@ pub struct P3f3Count {
     pub identical_frames_edge_degree: Option<usize>,
 }
 
-/// The rational linear part of the elimination: x and y as polynomials in z, from
-/// F₁ − F₃ = F₂ − F₃ = 0 (the route of [`exact_elimination`]).
-fn linear_xy(l: &[[BigRational; 3]; 3]) -> Option<(Poly, Poly)> {
-    let [f1, f2, f3] = exact_equations(l);
-    let (l1, l2) = (&f1 - &f3, &f2 - &f3);
-    let coef = |p: &Poly, v: &str| {
-        p.coefficients_in(v)
-            .get(1)
-            .and_then(|c| c.terms().next().map(|(_, k)| k))
-            .unwrap_or_else(BigRational::zero)
-    };
-    let rest = |p: &Poly| p.coefficients_in("x")[0].coefficients_in("y")[0].clone();
-    let (a1, b1, r1) = (coef(&l1, "x"), coef(&l1, "y"), rest(&l1));
-    let (a2, b2, r2) = (coef(&l2, "x"), coef(&l2, "y"), rest(&l2));
-    let det = &a1 * &b2 - &a2 * &b1;
-    if det.is_zero() {
-        return None;
-    }
-    let xz = &(-&r1).scale(&(&b2 / &det)) + &r2.scale(&(&b1 / &det));
-    let yz = &(-&r2).scale(&(&a1 / &det)) + &r1.scale(&(&a2 / &det));
-    Some((xz, yz))
-}
-
 /// Square-free degree of a non-zero univariate polynomial: deg p − deg gcd(p, p′).
 pub fn square_free_degree(p: &UPoly) -> usize {
     let d = p.degree().unwrap_or(0);
@@ -299,7 +276,7 @@ fn positive_at(w: &Poly, root: &crate::algebra::RealRoot, q: &UPoly) -> Option<b
 pub fn p3f3_instance(scene: &RationalScene, seed: u64) -> Option<P3f3Instance> {
     let l = scene.triangle_squares();
     let q = exact_elimination(&l)?;
-    let (xz, yz) = linear_xy(&l)?;
+    let (xz, yz) = exact_linear_part(&l)?;
     let zz = Poly::var("z");
     let depths: Vec<Vec<Poly>> = (0..3)
         .map(|i| {

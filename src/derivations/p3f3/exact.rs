@@ -22,11 +22,12 @@ pub fn exact_equations(l: &[[num_rational::BigRational; 3]; 3]) -> [crate::algeb
     })
 }
 
-/// Direct elimination over ℚ: solve F₁ − F₃ = F₂ − F₃ = 0 for x and y as polynomials in z,
-/// substitute into F₃, and return the resulting polynomial in z (exact), or `None` when the
-/// differences do not determine x and y.
-pub fn exact_elimination(l: &[[num_rational::BigRational; 3]; 3]) -> Option<crate::algebra::UPoly> {
-    use crate::algebra::{Poly, UPoly};
+/// The linear part of the elimination: x and y as polynomials in z from F₁ − F₃ = F₂ − F₃ = 0,
+/// or `None` when the differences do not determine them.
+pub fn exact_linear_part(
+    l: &[[num_rational::BigRational; 3]; 3],
+) -> Option<(crate::algebra::Poly, crate::algebra::Poly)> {
+    use crate::algebra::Poly;
     use num_traits::Zero;
     let [f1, f2, f3] = exact_equations(l);
     let l1 = &f1 - &f3;
@@ -49,6 +50,17 @@ pub fn exact_elimination(l: &[[num_rational::BigRational; 3]; 3]) -> Option<crat
     let inv = <num_rational::BigRational as num_traits::One>::one() / &det;
     let xz = &(-&r1).scale(&(&b2 * &inv)) + &r2.scale(&(&b1 * &inv));
     let yz = &(-&r2).scale(&(&a1 * &inv)) + &r1.scale(&(&a2 * &inv));
+    Some((xz, yz))
+}
+
+/// Direct elimination over ℚ: solve F₁ − F₃ = F₂ − F₃ = 0 for x and y as polynomials in z,
+/// substitute into F₃, and return the resulting polynomial in z (exact), or `None` when the
+/// differences do not determine x and y.
+pub fn exact_elimination(l: &[[num_rational::BigRational; 3]; 3]) -> Option<crate::algebra::UPoly> {
+    use crate::algebra::UPoly;
+    use num_traits::Zero;
+    let (xz, yz) = exact_linear_part(l)?;
+    let [_, _, f3] = exact_equations(l);
     let q = f3.substitute("x", &xz).substitute("y", &yz);
     let coeffs = q.coefficients_in("z");
     let c: Vec<num_rational::BigRational> = coeffs

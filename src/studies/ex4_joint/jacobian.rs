@@ -121,12 +121,7 @@ fn left_jacobian(w: &Vector3<f64>) -> Matrix3<f64> {
 
 /// d(flat image coordinates)/d(parameters): 2·POINTS·cameras rows, `p.len()` columns.
 fn projection_jacobian(inp: &JointInput, p: &[f64]) -> Option<DMatrix<f64>> {
-    let squares: Vec<f64> = inp
-        .edges
-        .iter()
-        .zip(p)
-        .map(|((lo, hi), u)| (lo + hi) / 2.0 + u * (hi - lo) / 2.0)
-        .collect();
+    let squares = super::squares_at(inp, p);
     let body = tetrahedron(&squares)?;
     let db = body_gradient(inp, p)?;
     let cameras = (p.len() - EDGES) / 5;
