@@ -182,6 +182,14 @@ fn name_problem(names: &[String]) -> Option<String> {
 }
 
 fn parse_csv(text: &str, path: &Path, order: PointOrder) -> Result<Tracks> {
+    let (hline, frame_ids, rows) = csv_table(text, path)?;
+    csv_frames(&frame_ids, &rows, path, hline, order)
+}
+
+/// A CSV tracks file read as a table: the header's line (checked to be `frame,point,x,y`),
+/// the frame ids in order of first appearance, and each frame's rows. Blank lines and `#`
+/// comments are skipped.
+fn csv_table(text: &str, path: &Path) -> Result<(u64, Vec<String>, Vec<Vec<CsvRow>>)> {
     let mut lines = text
         .lines()
         .enumerate()
@@ -200,7 +208,7 @@ fn parse_csv(text: &str, path: &Path, order: PointOrder) -> Result<Tracks> {
         ));
     }
     let (frame_ids, rows) = csv_rows(lines, path)?;
-    csv_frames(&frame_ids, &rows, path, hline, order)
+    Ok((hline, frame_ids, rows))
 }
 
 /// One CSV row: a point's name, its image position and its line.

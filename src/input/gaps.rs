@@ -9,7 +9,7 @@ use std::path::Path;
 use nalgebra::Vector2;
 use serde::Deserialize;
 
-use super::{csv_rows, located, name_problem, MAX_TRACKS_BYTES};
+use super::{located, name_problem, MAX_TRACKS_BYTES};
 use crate::cases::{line_of, parse_yaml_limited};
 use crate::error::Result;
 use crate::model::default_names;
@@ -106,24 +106,7 @@ fn parse_yaml(text: &str, path: &Path) -> Result<Observations> {
 }
 
 fn parse_csv(text: &str, path: &Path) -> Result<Observations> {
-    let mut lines = text
-        .lines()
-        .enumerate()
-        .map(|(i, l)| (i as u64 + 1, l.trim()))
-        .filter(|(_, l)| !l.is_empty() && !l.starts_with('#'));
-    let Some((hline, header)) = lines.next() else {
-        return Err(located(path, Some(1), "header", "the file is empty".into()));
-    };
-    let cols: Vec<&str> = header.split(',').map(str::trim).collect();
-    if cols != ["frame", "point", "x", "y"] {
-        return Err(located(
-            path,
-            Some(hline),
-            "header",
-            format!("expected `frame,point,x,y`, found `{header}`"),
-        ));
-    }
-    let (_, rows) = csv_rows(lines, path)?;
+    let (hline, _, rows) = super::csv_table(text, path)?;
     if rows.is_empty() {
         return Err(located(path, Some(hline), "frame", "no rows".into()));
     }
