@@ -26,6 +26,18 @@ pub struct InputLocation {
     pub field: Option<String>,
 }
 
+impl InputLocation {
+    /// A whole file: no line, column or field.
+    pub fn file(path: &std::path::Path) -> InputLocation {
+        InputLocation {
+            file: path.to_path_buf(),
+            line: None,
+            column: None,
+            field: None,
+        }
+    }
+}
+
 impl fmt::Display for InputLocation {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         write!(f, "{}", self.file.display())?;

@@ -87,9 +87,9 @@ pub(crate) fn read_text(path: &Path) -> Result<String> {
     String::from_utf8(bytes).map_err(|_| located(path, None, "file", "not UTF-8 text".into()))
 }
 
-/// Parse tracks text; `path` names the file in errors and its extension picks the format.
-pub fn parse_tracks(text: &str, path: &Path, order: PointOrder) -> Result<Tracks> {
-    // a byte-order mark is no data, in either format
+/// The text without a byte-order mark (no data, in either format) and whether the file is
+/// CSV (by its extension; YAML otherwise); an empty file is an error.
+pub(crate) fn text_and_format<'t>(text: &'t str, path: &Path) -> Result<(&'t str, bool)> {
     let text = text.strip_prefix('\u{feff}').unwrap_or(text);
     if text.trim().is_empty() {
         return Err(located(path, Some(1), "frames", "the file is empty".into()));
@@ -97,6 +97,12 @@ pub fn parse_tracks(text: &str, path: &Path, order: PointOrder) -> Result<Tracks
     let is_csv = path
         .extension()
         .is_some_and(|e| e.eq_ignore_ascii_case("csv"));
+    Ok((text, is_csv))
+}
+
+/// Parse tracks text; `path` names the file in errors and its extension picks the format.
+pub fn parse_tracks(text: &str, path: &Path, order: PointOrder) -> Result<Tracks> {
+    let (text, is_csv) = text_and_format(text, path)?;
     if is_csv {
         parse_csv(text, path, order)
     } else {

@@ -302,12 +302,7 @@ fn read_case_text(path: &Path) -> Result<String> {
 /// An error about a whole file (no line, no field).
 fn whole_file(path: &Path, message: String) -> Error {
     Error::Input {
-        location: InputLocation {
-            file: path.to_path_buf(),
-            line: None,
-            column: None,
-            field: None,
-        },
+        location: InputLocation::file(path),
         message,
     }
 }

@@ -174,12 +174,7 @@ fn two_frames(path: &Path, order: PointOrder) -> Result<Tracks, Error> {
 fn in_file(path: &Path, e: Error) -> Error {
     match e {
         Error::InvalidInput(message) => Error::Input {
-            location: InputLocation {
-                file: path.to_path_buf(),
-                line: None,
-                column: None,
-                field: None,
-            },
+            location: InputLocation::file(path),
             message,
         },
         e => e,

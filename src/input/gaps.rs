@@ -40,13 +40,7 @@ pub fn load_observations(path: &Path) -> Result<Observations> {
 /// assert_eq!(o.frames[1][1], None);
 /// ```
 pub fn parse_observations(text: &str, path: &Path) -> Result<Observations> {
-    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
-    if text.trim().is_empty() {
-        return Err(located(path, Some(1), "frames", "the file is empty".into()));
-    }
-    let is_csv = path
-        .extension()
-        .is_some_and(|e| e.eq_ignore_ascii_case("csv"));
+    let (text, is_csv) = super::text_and_format(text, path)?;
     if is_csv {
         parse_csv(text, path)
     } else {

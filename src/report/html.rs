@@ -89,22 +89,7 @@ impl<'a> Page<'a> {
         {
             return escape(&quantities_shown(qs, trials));
         }
-        match qs {
-            [q] if q.name == "paper" || q.name == "computed" => {
-                self.value(&q.name, &q.value, trials)
-            }
-            _ => qs
-                .iter()
-                .map(|q| {
-                    format!(
-                        "{}: {}",
-                        escape(&q.name),
-                        self.value(&q.name, &q.value, trials)
-                    )
-                })
-                .collect::<Vec<_>>()
-                .join("; "),
-        }
+        super::values::quantities_line(qs, escape, |q| self.value(&q.name, &q.value, trials))
     }
 }
 

@@ -54,22 +54,7 @@ impl Ctx<'_> {
     }
 
     fn quantities(&self, qs: &[Quantity], trials: Option<u64>) -> String {
-        match qs {
-            [q] if q.name == "paper" || q.name == "computed" => {
-                self.value(&q.name, &q.value, trials)
-            }
-            _ => qs
-                .iter()
-                .map(|q| {
-                    format!(
-                        "{}: {}",
-                        md_escape(&q.name),
-                        self.value(&q.name, &q.value, trials)
-                    )
-                })
-                .collect::<Vec<_>>()
-                .join("; "),
-        }
+        super::values::quantities_line(qs, md_escape, |q| self.value(&q.name, &q.value, trials))
     }
 }
 

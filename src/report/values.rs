@@ -188,11 +188,25 @@ pub fn shown_text(name: &str, v: &Value, trials: Option<u64>) -> String {
 
 /// Named values as one line, like [`quantities_text`], each shown with [`shown_text`].
 pub fn quantities_shown(qs: &[Quantity], trials: Option<u64>) -> String {
+    quantities_line(
+        qs,
+        |n| n.to_string(),
+        |q| shown_text(&q.name, &q.value, trials),
+    )
+}
+
+/// Named values as one line, `name: value; …`, the name dropped when the only value is the
+/// paper's or the computed one; each renderer passes its own escape and value rendering.
+pub fn quantities_line(
+    qs: &[Quantity],
+    name: impl Fn(&str) -> String,
+    value: impl Fn(&Quantity) -> String,
+) -> String {
     match qs {
-        [q] if q.name == "paper" || q.name == "computed" => shown_text(&q.name, &q.value, trials),
+        [q] if q.name == "paper" || q.name == "computed" => value(q),
         _ => qs
             .iter()
-            .map(|q| format!("{}: {}", q.name, shown_text(&q.name, &q.value, trials)))
+            .map(|q| format!("{}: {}", name(&q.name), value(q)))
             .collect::<Vec<_>>()
             .join("; "),
     }
