@@ -87,6 +87,32 @@ pub(crate) fn read_text(path: &Path) -> Result<String> {
     String::from_utf8(bytes).map_err(|_| located(path, None, "file", "not UTF-8 text".into()))
 }
 
+/// The names a CSV tracks file gives each frame's points, frame by frame in the order the
+/// rows list them (what [`PointOrder::AsListed`] keeps of them is frame 1's); `None` for a
+/// YAML file, whose `points:` name frame 1's points only.
+///
+/// # Example
+/// ```
+/// let dir = tempfile::tempdir().unwrap();
+/// let path = dir.path().join("t.csv");
+/// std::fs::write(&path, "frame,point,x,y\n1,P,0,0\n1,Q,1,0\n2,B,0,1\n2,A,1,1\n").unwrap();
+/// let names = orthocheck::input::listed_names(&path).unwrap().unwrap();
+/// assert_eq!(names, [["P", "Q"], ["B", "A"]]);
+/// ```
+pub fn listed_names(path: &Path) -> Result<Option<Vec<Vec<String>>>> {
+    let raw = read_text(path)?;
+    let (text, is_csv) = text_and_format(&raw, path)?;
+    if !is_csv {
+        return Ok(None);
+    }
+    let (_, _, rows) = csv_table(text, path)?;
+    Ok(Some(
+        rows.iter()
+            .map(|r| r.iter().map(|(n, _, _)| n.clone()).collect())
+            .collect(),
+    ))
+}
+
 /// The text without a byte-order mark (no data, in either format) and whether the file is
 /// CSV (by its extension; YAML otherwise); an empty file is an error.
 pub(crate) fn text_and_format<'t>(text: &'t str, path: &Path) -> Result<(&'t str, bool)> {

@@ -13,6 +13,7 @@ pub fn report_provenance() -> Provenance {
         revision: revision(),
         date: date(),
         command: REPORT_COMMAND.into(),
+        transcription: String::new(),
         seeds: Vec::new(),
     }
 }

@@ -2,6 +2,11 @@
 //! snapshotted under `snapshots/`; every `tests/bad_cases/*.yaml` must fail with the error its
 //! first line (`# expect: …`) names (a trailing `…` there matches any rest). The paper runs
 //! once for the whole binary (`common::report`); each case's test snapshots its share.
+//!
+//! The errata of the text are decided against the paper's LaTeX source (`ORTHOCHECK_PAPER`):
+//! with it their snapshot is `case__source_errata`, without it `case__source_errata__unverified`
+//! (each finding inconclusive), and likewise the restatements, which inherit their verdicts. Bad cases that start `# needs: the paper's source` are skipped,
+//! with one line, without it.
 
 use std::path::Path;
 
@@ -31,7 +36,15 @@ fn paper_case(path: &Path) -> datatest_stable::Result<()> {
         .and_then(|s| s.to_str())
         .ok_or("case file name is not UTF-8")?;
     let json = serde_json::to_string_pretty(&results)?;
-    snapshot_settings().bind(|| insta::assert_snapshot!(format!("case__{stem}"), json));
+    let verified = common::inputs()?.verification.is_some();
+    let name = match case.check {
+        // the restatements inherit the errata's verdicts
+        cases::CaseCheck::SourceErrata(_) | cases::CaseCheck::Restatements(_) if !verified => {
+            format!("case__{stem}__unverified")
+        }
+        _ => format!("case__{stem}"),
+    };
+    snapshot_settings().bind(|| insta::assert_snapshot!(name, json));
     Ok(())
 }
 
@@ -41,7 +54,18 @@ fn bad_case(path: &Path, text: String) -> datatest_stable::Result<()> {
         .next()
         .and_then(|l| l.strip_prefix("# expect: "))
         .ok_or("a bad case must start with '# expect: …'")?;
-    match cases::load_case(path) {
+    let latex = if text.lines().nth(1) == Some("# needs: the paper's source") {
+        let Some(source) = common::paper_source() else {
+            common::skipped_without_source(&path.display().to_string());
+            return Ok(());
+        };
+        let paper = cases::paper_of(&cases::CaseOrigin::Embedded)?;
+        let record = paper.source.ok_or("paper.yml records no source")?;
+        Some(cases::LatexSource::read(&source, &record)?)
+    } else {
+        None
+    };
+    match cases::load_case_with(path, latex.as_ref()) {
         Ok(_) => Err(format!("{} loaded, but it must fail", path.display()).into()),
         Err(e @ Error::Input { .. }) => {
             let shown = e.to_string();

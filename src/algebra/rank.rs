@@ -19,6 +19,16 @@ pub enum ExactRankMethod {
     FractionFree,
 }
 
+impl ExactRankMethod {
+    /// How the rank was proven, in words.
+    pub fn describe(self) -> &'static str {
+        match self {
+            ExactRankMethod::ModularFull => "full rank modulo a prime (so full over ℚ)",
+            ExactRankMethod::FractionFree => "fraction-free elimination over the integers",
+        }
+    }
+}
+
 /// Exact rank of a rational matrix (rows of equal length).
 ///
 /// The rank modulo a large prime is a lower bound; when it is already min(m, n) it is the

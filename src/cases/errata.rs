@@ -1,7 +1,7 @@
 //! Errata of the text: findings of a line-by-line reading of the LaTeX source, each quoted
 //! exactly at its lines, with the correction and, where one exists, the computation that
-//! decides it. The source is read beside the cases (`latex`, relative to the case file), so
-//! that every quote can be verified against it.
+//! decides it. Given the paper's LaTeX source (`--paper FILE`), every quote is verified at
+//! its lines as the case is read; without it the findings stand on the transcription alone.
 
 use std::path::Path;
 
@@ -11,18 +11,16 @@ use serde::Deserialize;
 
 use super::load::invalid;
 use super::{ClaimRef, Printed};
-use crate::error::{Error, Result};
+use crate::error::Result;
 
 /// The errata of the text.
 #[derive(Clone, Debug, Deserialize, PartialEq)]
 #[serde(deny_unknown_fields)]
 pub struct SourceErrataCase {
-    /// The LaTeX source, relative to the case file's folder.
-    pub latex: String,
     /// The findings, in the order of the source.
     pub findings: Vec<Finding>,
-    /// The source's lines, read by [`load_case`](super::load_case) (absent when a case is
-    /// only parsed).
+    /// The source's lines, attached by [`load_case_with`](super::load_case_with) when the
+    /// source is given (absent otherwise: the quotes are then unverified).
     #[serde(skip)]
     pub text: Option<SourceText>,
 }
@@ -247,22 +245,16 @@ fn collapse(s: &str) -> String {
     s.split_whitespace().collect::<Vec<_>>().join(" ")
 }
 
-/// Read the case's LaTeX source (relative to `case_path`'s folder) and verify every quote at
-/// its lines: a quote that is not there is an input error naming the field.
+/// Verify every quote of the case at its lines of `latex` and attach the source's lines: a
+/// quote that is not there is an input error naming the field.
 pub(super) fn attach_source(
     c: &mut SourceErrataCase,
     case_text: &str,
     case_path: &Path,
+    latex: &super::LatexSource,
 ) -> Result<()> {
-    let dir = case_path.parent().unwrap_or_else(|| Path::new("."));
-    let path = dir.join(&c.latex);
-    let raw = std::fs::read_to_string(&path).map_err(|source| Error::Io {
-        path: path.clone(),
-        source,
-    })?;
-    let text = SourceText {
-        lines: raw.split('\n').map(str::to_string).collect(),
-    };
+    let path = &latex.path;
+    let text = latex.text.clone();
     let base = "check.source_errata.findings";
     for (i, f) in c.findings.iter().enumerate() {
         let mut places = vec![(

@@ -2,21 +2,27 @@
 
 use std::path::{Path, PathBuf};
 
-use super::{validate::validate, Case};
+use super::{validate::validate, Case, CaseOrigin, LatexSource};
 use crate::error::{Error, InputLocation, Result};
 
-/// Read and validate one case file.
+/// Read and validate one case file (its quotes unverified: no LaTeX source).
 pub fn load_case(path: &Path) -> Result<Case> {
+    load_case_with(path, None)
+}
+
+/// Read and validate one case file; with `latex`, its errata's quotes are verified at their
+/// lines of the source.
+pub fn load_case_with(path: &Path, latex: Option<&LatexSource>) -> Result<Case> {
     let text = read_case_text(path)?;
-    case_from_text(&text, path)
+    case_from_text(&text, path, latex)
 }
 
 /// Parse, validate and complete one case read from `path`.
-fn case_from_text(text: &str, path: &Path) -> Result<Case> {
+fn case_from_text(text: &str, path: &Path, latex: Option<&LatexSource>) -> Result<Case> {
     let mut case = parse_case(text, path)?;
-    if let super::CaseCheck::SourceErrata(c) = &mut case.check {
+    if let (super::CaseCheck::SourceErrata(c), Some(latex)) = (&mut case.check, latex) {
         // the quotes are verified against the source as it is read
-        super::errata::attach_source(c, text, path)?;
+        super::errata::attach_source(c, text, path, latex)?;
     }
     case.file = Some(path.to_path_buf());
     Ok(case)
@@ -246,14 +252,18 @@ pub fn case_files(dir: &Path) -> Result<Vec<PathBuf>> {
     Ok(files)
 }
 
-/// Load every case of a folder: each file valid on its own, no id twice, and every claim a
-/// restatement restates checked by some case of the folder.
+/// Load every case of a folder (quotes unverified: no LaTeX source).
 pub fn load_all(dir: &Path) -> Result<Vec<Case>> {
+    load_cases(&CaseOrigin::Folder(dir.to_path_buf()), None)
+}
+
+/// Load every case: each file valid on its own, no id twice, and every claim a restatement
+/// restates checked by some case. With `latex`, the errata's quotes are verified against it.
+pub fn load_cases(origin: &CaseOrigin, latex: Option<&LatexSource>) -> Result<Vec<Case>> {
     let mut cases = Vec::new();
     let mut texts = Vec::new();
-    for p in case_files(dir)? {
-        let text = read_case_text(&p)?;
-        let case = case_from_text(&text, &p)?;
+    for (p, text) in origin.case_texts()? {
+        let case = case_from_text(&text, &p, latex)?;
         if let Some(first) = cases.iter().position(|c: &Case| c.id == case.id) {
             let other = cases[first].file.as_deref().unwrap_or(Path::new("?"));
             return Err(invalid(
@@ -274,8 +284,8 @@ pub fn load_all(dir: &Path) -> Result<Vec<Case>> {
     Ok(cases)
 }
 
-/// A case file's text, read through the input size limit.
-fn read_case_text(path: &Path) -> Result<String> {
+/// A case file's text, refused beyond the size limit or when it is not UTF-8.
+pub(super) fn read_case_text(path: &Path) -> Result<String> {
     use std::io::Read as _;
     let io = |source| Error::Io {
         path: path.to_path_buf(),

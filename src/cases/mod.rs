@@ -9,15 +9,18 @@ mod errata;
 mod examples;
 mod formula_size;
 mod identity;
+mod latex;
 mod linearity;
 mod load;
 mod noise;
+mod origin;
 mod paper;
 mod printed;
 mod restate;
 mod sizes;
 mod source;
 mod validate;
+mod verify;
 
 pub use audit::*;
 pub use counts::{LiteratureCount, PaperCount, SolutionCountCase};
@@ -27,15 +30,21 @@ pub use errata::{
 };
 pub use examples::*;
 pub use identity::*;
+pub use latex::{sha256_hex, source_path, LatexSource, SourceRecord, PAPER_ENV};
 pub use linearity::{LinearityBody, LinearityCase, PrintedRun, MAX_RANDOM_POINTS};
 pub(crate) use load::line_of;
-pub use load::{case_files, load_all, load_case, parse_case, parse_yaml, parse_yaml_limited};
+pub use load::{
+    case_files, load_all, load_case, load_case_with, load_cases, parse_case, parse_yaml,
+    parse_yaml_limited,
+};
 pub use noise::*;
-pub use paper::{load_paper, parse_paper, Paper, SectionTitle, PAPER_FILE};
+pub use origin::CaseOrigin;
+pub use paper::{load_paper, paper_of, parse_paper, Paper, SectionTitle, PAPER_FILE};
 pub use printed::Printed;
 pub use restate::*;
 pub use source::{ClaimRef, Source};
 pub use validate::parse_signs;
+pub use verify::{load_inputs, unverified_sentence, verify, PaperInputs, Verification};
 
 use std::path::PathBuf;
 

@@ -8,7 +8,7 @@ use std::path::Path;
 use serde::{Deserialize, Serialize};
 
 use super::load::{invalid, parse_yaml};
-use crate::error::{Error, Result};
+use crate::error::Result;
 
 /// The file of a cases folder that names the paper.
 pub const PAPER_FILE: &str = "paper.yml";
@@ -21,6 +21,9 @@ pub struct Paper {
     pub title: String,
     /// Author.
     pub author: String,
+    /// The LaTeX source the transcription was made from (its name, hash and length).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub source: Option<super::SourceRecord>,
     /// The paper's sections in reading order, with their titles (the report's table of
     /// contents).
     #[serde(default)]
@@ -55,11 +58,12 @@ impl Paper {
 
 /// Read [`PAPER_FILE`] of the cases folder `dir`.
 pub fn load_paper(dir: &Path) -> Result<Paper> {
-    let path = dir.join(PAPER_FILE);
-    let text = std::fs::read_to_string(&path).map_err(|source| Error::Io {
-        path: path.clone(),
-        source,
-    })?;
+    paper_of(&super::CaseOrigin::Folder(dir.to_path_buf()))
+}
+
+/// Read [`PAPER_FILE`] of the cases, embedded or in a folder.
+pub fn paper_of(origin: &super::CaseOrigin) -> Result<Paper> {
+    let (path, text) = origin.file(PAPER_FILE)?;
     parse_paper(&text, &path)
 }
 

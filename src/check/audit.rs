@@ -58,11 +58,13 @@ struct Shown {
 /// The tolerance of a random-point check: the Schwartz–Zippel bound on the probability that
 /// a false identity agrees at every point.
 pub(super) fn points_tolerance(p: &PointCheck) -> Tolerance {
-    Tolerance::bound(
-        p.failure_bound(),
-        ToleranceSource::ErrorBound,
-        "Schwartz–Zippel: a false identity passes with probability at most (degree of the difference / size of the sample set) per point, to the power of the number of points",
-    )
+    Tolerance {
+        bound: None,
+        source: ToleranceSource::FalsePass {
+            log10: super::Real(p.log10_failure_bound()),
+        },
+        how: "Schwartz–Zippel: a false identity passes with probability at most (degree of the difference / size of the sample set) per point, to the power of the number of points".into(),
+    }
 }
 
 /// The random-point check's numbers, as details.

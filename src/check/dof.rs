@@ -21,7 +21,7 @@ fn rank_evidence(e: Evidence, r: &Identifiability) -> Evidence {
         .with("jacobian columns", r.parameters)
         .with("svd rank", r.jacobian_rank)
         .with("exact rank", r.exact_rank)
-        .with("exact rank method", format!("{:?}", r.exact_method))
+        .with("exact rank method", Value::label(r.exact_method.describe()))
         .with("deficiency (dimension of the ambiguity)", r.deficiency);
     let e = match r.condition {
         Some(c) => e.with("condition number", Value::real(c)),

@@ -9,18 +9,36 @@ use crate::cases::{
     SourceErrataCase, SourceText,
 };
 use crate::derivations::dof;
-use crate::error::{Error, Result};
+use crate::error::Result;
 use labels::labels_decision;
 
-/// Every finding of the case as a claim result.
+/// Every finding of the case as a claim result; without the paper's source (none attached
+/// when the case was read) each finding is unverified.
 pub(super) fn check(b: &ResultBuilder, case: &SourceErrataCase) -> Result<Vec<ClaimResult>> {
-    let text = case.text.as_ref().ok_or_else(|| {
-        Error::InvalidInput(format!(
-            "the LaTeX source {} is not loaded: read the case with load_case",
-            case.latex
+    match case.text.as_ref() {
+        Some(text) => case.findings.iter().map(|f| finding(b, text, f)).collect(),
+        None => Ok(case.findings.iter().map(|f| unverified(b, f)).collect()),
+    }
+}
+
+/// A finding without the source: its quote is the transcription's, and nothing was checked
+/// that could have failed, so the finding is not established (`inconclusive`).
+fn unverified(b: &ResultBuilder, f: &Finding) -> ClaimResult {
+    b.claim(&f.claim)
+        .suffix(&f.id)
+        .printed("source text", Value::quote(f.claim.quote.clone()))
+        .computed(
+            "quote at the stated lines",
+            Value::label("not checked: the paper's source was not given (--paper FILE)"),
+        )
+        .correction(f.corrected.clone())
+        .detail("defect", Value::label(f.defect.clone()))
+        .method("the quote as transcribed; its place in the source not checked")
+        .power(Power::mutant(
+            false,
+            "none without the paper's source: the quote's place is checked only against it",
         ))
-    })?;
-    case.findings.iter().map(|f| finding(b, text, f)).collect()
+        .verdict(Verdict::Inconclusive)
 }
 
 /// Where a quote is looked for: its own lines, then the mutant ranges that must miss it.
@@ -187,7 +205,7 @@ fn finding(b: &ResultBuilder, text: &SourceText, f: &Finding) -> Result<ClaimRes
     let mut r = b
         .claim(&f.claim)
         .suffix(&f.id)
-        .printed("source text", Value::label(f.claim.quote.clone()))
+        .printed("source text", Value::quote(f.claim.quote.clone()))
         .computed("quote at the stated lines", Value::flag(own.at_lines))
         .correction(f.corrected.clone())
         .detail("defect", Value::label(f.defect.clone()));

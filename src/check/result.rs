@@ -67,6 +67,23 @@ impl Verdict {
         }
     }
 
+    /// What the verdict means, in one sentence a reader of the report needs.
+    pub fn meaning(self) -> &'static str {
+        match self {
+            Verdict::Reproduced => "the recomputed value agrees with the printed one within its printed precision",
+            Verdict::ReproducedWithinRounding => "agrees once the rounding of the paper's printed inputs is carried through the computation",
+            Verdict::IdentityVerified => "the printed formula equals its derivation exactly, by exact polynomial arithmetic",
+            Verdict::HoldsGenerically => "true except on a special set of configurations the paper does not name (the evidence names it)",
+            Verdict::StatisticalHolds => "a claim about noise that holds against a seeded distribution of trials, under every reasonable reading of its words",
+            Verdict::StatisticalFails => "a claim about noise that the seeded distribution of trials does not bear out",
+            Verdict::Erratum => "the paper prints something wrong; the corrected form is stated and checked: a finding, not a failure of the tool",
+            Verdict::Note => "a slip of form with one possible reading (a subscript, a header): listed, not counted as an erratum",
+            Verdict::Inconclusive => "the check could not have failed on values the paper would call wrong, so it decides nothing",
+            Verdict::NotReproducible => "the paper lacks the data to decide the claim; the evidence says what is missing and what was tried",
+            Verdict::Contradicted => "the paper asserts something that the computation shows to be false",
+        }
+    }
+
     /// A positive verdict says the paper's claim was confirmed by a check that could fail.
     pub fn is_positive(&self) -> bool {
         matches!(
@@ -107,8 +124,9 @@ impl Serialize for Real {
         let shown = crate::numfmt::sig(self.0);
         match shown.parse::<f64>() {
             Ok(v) if v.is_finite() => s.serialize_f64(v),
-            // non-finite values are refused by the output guard before they get here
-            _ => s.serialize_str(&shown),
+            // a non-finite number stays a number, so that the output guard
+            // (`report::finite`) sees it and refuses the output: never "inf" as text
+            _ => s.serialize_f64(self.0),
         }
     }
 }
@@ -175,6 +193,11 @@ pub enum Value {
     /// A name, an id, a method, a statement of the paper: never a number.
     Label {
         /// The text.
+        text: String,
+    },
+    /// The paper's own words, quoted from its LaTeX source (read as running text).
+    Quote {
+        /// The source text.
         text: String,
     },
 }
@@ -252,6 +275,11 @@ impl Value {
     /// A label.
     pub fn label(t: impl Into<String>) -> Value {
         Value::Label { text: t.into() }
+    }
+
+    /// A quote of the paper's source.
+    pub fn quote(t: impl Into<String>) -> Value {
+        Value::Quote { text: t.into() }
     }
 
     /// Every float this value holds (for the output guard).
@@ -333,6 +361,12 @@ pub enum ToleranceSource {
     Propagated,
     /// A floating-point error bound the code derives (condition × unit roundoff × size).
     ErrorBound,
+    /// A random-point screen of an identity: a false identity passes it with probability at
+    /// most `10^log10` (Schwartz–Zippel); the comparison itself is exact.
+    FalsePass {
+        /// log₁₀ of the false-pass probability bound.
+        log10: Real,
+    },
     /// A percentile of a seeded Monte Carlo distribution.
     MonteCarlo {
         /// The percentile (0–100).

@@ -19,9 +19,14 @@ pub struct Args {
     /// Every item.
     #[arg(long, conflicts_with = "id")]
     all: bool,
-    /// Folder of case files (the printed formulas are read from there).
-    #[arg(long, default_value = "paper_cases")]
-    cases: PathBuf,
+    /// Folder of case files (the printed formulas are read from there), instead of the
+    /// paper's cases built into the binary.
+    #[arg(long)]
+    cases: Option<PathBuf>,
+    /// The paper's LaTeX source: verifies the transcription, and decides the errata of the
+    /// text in `--markdown` (default: the file ORTHOCHECK_PAPER names, else none).
+    #[arg(long, value_name = "FILE")]
+    paper: Option<PathBuf>,
     /// JSON output.
     #[arg(long)]
     json: bool,
@@ -113,7 +118,9 @@ fn twofold_case<'a>(loaded: &'a [Case], id: &str) -> Option<&'a TwofoldCase> {
 
 /// One twofold-squared case in full, the errata list, or the items an id names.
 pub fn run(a: Args) -> Result<(), Error> {
-    let loaded = cases::load_all(&a.cases)?;
+    let origin = cases::CaseOrigin::from_arg(a.cases.as_deref());
+    let source = cases::source_path(a.paper.as_deref());
+    let loaded = cases::load_inputs(&origin, source.as_deref())?.cases;
     if let Some(dir) = &a.out {
         return export(&loaded, &a, dir);
     }

@@ -3,7 +3,8 @@
 //! The command line lives in the binary crate, not in the library: argument parsing (clap),
 //! progress on standard error and printing are the binary's business, so the library carries
 //! no clap types and never prints. A `run` only validates its arguments, calls the library
-//! and prints through the `report` renderers; it computes nothing itself.
+//! and prints through the `report` renderers (`solve`, `identify` and `noise` lay out their
+//! own text tables); it computes nothing itself.
 
 mod audit;
 mod dof;
@@ -181,15 +182,16 @@ fn in_file(path: &Path, e: Error) -> Error {
     }
 }
 
-/// Write a file that must not exist yet: a user's file is never overwritten.
+/// Write a file that must not exist yet: a user's file is never overwritten (an existing
+/// name is refused with [`would_overwrite`], exit 2; a failed write is exit 1).
 fn write_new(path: &Path, text: &str) -> Result<(), Error> {
-    let io = |source| Error::Io {
+    let failed = |e: std::io::Error| Error::Write {
         path: path.to_path_buf(),
-        source,
+        message: e.to_string(),
     };
-    // refuse an existing file before writing anything
+    // refuse an existing file (or a link, even a dangling one) before writing anything
     if std::fs::symlink_metadata(path).is_ok() {
-        return Err(io(std::io::Error::from(std::io::ErrorKind::AlreadyExists)));
+        return Err(would_overwrite(path));
     }
     // written whole under a temporary name, then linked to its name (a hard link fails if
     // the name exists, so nothing is overwritten): an interrupt or a full disk never leaves
@@ -207,7 +209,25 @@ fn write_new(path: &Path, text: &str) -> Result<(), Error> {
         .create_new(true)
         .open(&temp)
         .and_then(|mut f| f.write_all(text.as_bytes()).and_then(|()| f.sync_all()))
-        .and_then(|()| std::fs::hard_link(&temp, path));
+        .map_err(failed)
+        .and_then(|()| {
+            std::fs::hard_link(&temp, path).map_err(|e| match e.kind() {
+                // the name appeared while the file was being written
+                std::io::ErrorKind::AlreadyExists => would_overwrite(path),
+                _ => failed(e),
+            })
+        });
     let _ = std::fs::remove_file(&temp);
-    written.map_err(io)
+    written
+}
+
+/// The refusal to write over an existing file: usage, not a failure (exit 2).
+fn would_overwrite(path: &Path) -> Error {
+    Error::Input {
+        location: InputLocation::file(path),
+        message: format!(
+            "the file exists and `{} --out` would overwrite it; nothing was written (choose another name, or remove the file first)",
+            command_name()
+        ),
+    }
 }

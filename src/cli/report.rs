@@ -14,16 +14,22 @@ pub struct Args {
     /// Output folder.
     #[arg(long, default_value = "target/orthocheck-report")]
     out: PathBuf,
-    /// Folder of case files.
-    #[arg(long, default_value = "paper_cases")]
-    cases: PathBuf,
+    /// Folder of case files, instead of the paper's cases built into the binary.
+    #[arg(long)]
+    cases: Option<PathBuf>,
+    /// The paper's LaTeX source: verifies the transcription (its SHA-256 must be the one
+    /// paper.yml records). Default: the file ORTHOCHECK_PAPER names, else none.
+    #[arg(long, value_name = "FILE")]
+    paper: Option<PathBuf>,
 }
 
 /// Run every case, write report.md, report.json, report.html and one SVG file per figure,
 /// print the verdict counts.
 pub fn run(args: Args) -> Result<(), Error> {
-    let all = cases::load_all(&args.cases)?;
-    let paper = cases::load_paper(&args.cases)?;
+    let origin = cases::CaseOrigin::from_arg(args.cases.as_deref());
+    let source = cases::source_path(args.paper.as_deref());
+    let inputs = cases::load_inputs(&origin, source.as_deref())?;
+    let all = &inputs.cases;
     // an unwritable folder is found before the report is computed
     orthocheck::report::prepare_output_dir(&args.out)?;
     let started = Instant::now();
@@ -35,7 +41,9 @@ pub fn run(args: Args) -> Result<(), Error> {
             let _ = std::io::stderr().flush();
         }
     };
-    let r = Report::run(&all, provenance::report_provenance(), &progress)?.with_paper(paper);
+    let mut prov = provenance::report_provenance();
+    prov.transcription = inputs.transcription_sentence();
+    let r = Report::run(all, prov, &progress)?.with_paper(inputs.paper.clone());
     if show() {
         eprintln!();
     }

@@ -1,11 +1,14 @@
 //! `orthocheck synth`: a tracks file of a seeded random scene, to try the solvers on.
 
+use std::fmt::Write as _;
 use std::path::PathBuf;
 
 use clap::ValueEnum;
 use orthocheck::input::{tracks_to_csv, tracks_to_yaml};
+use orthocheck::model::Tracks;
 use orthocheck::seeds::synthetic;
 use orthocheck::{report, Error};
+use rand::seq::SliceRandom as _;
 
 use super::{out, write_new};
 
@@ -30,6 +33,14 @@ pub struct Args {
     /// Write to this file (refused if it exists); standard output otherwise.
     #[arg(long)]
     out: Option<PathBuf>,
+    /// Shuffle the order of the points in every frame after the first (seeded by --seed),
+    /// for `identify`, which finds which point is which between two frames listed in
+    /// different orders (so use it with --frames 2). The header names the order each frame
+    /// lists the points in, to check identify's answer against; CSV rows of a shuffled frame
+    /// are labelled X1, X2, … so that their names do not give the answer away. A shuffled
+    /// file is not for `solve`, which needs the points in the same order in every frame.
+    #[arg(long)]
+    shuffle: bool,
 }
 
 /// The tracks file formats.
@@ -44,11 +55,25 @@ pub fn run(a: Args) -> Result<(), Error> {
     check_limits(&a).map_err(Error::InvalidInput)?;
     let s = synthetic(a.points, a.frames, a.seed, a.noise);
     let header = report::synth_header(&s.scene, a.seed, a.noise);
-    let body = match a.format {
-        FormatArg::Yaml => tracks_to_yaml(&s.tracks),
-        FormatArg::Csv => tracks_to_csv(&s.tracks),
+    let text = if a.shuffle {
+        let orders = shuffled_orders(a.points, a.frames, a.seed);
+        let tracks = reorder(&s.tracks, &orders)?;
+        let body = match a.format {
+            FormatArg::Yaml => tracks_to_yaml(&tracks),
+            FormatArg::Csv => shuffled_csv(&tracks),
+        };
+        let csv = matches!(a.format, FormatArg::Csv);
+        format!(
+            "{}{body}",
+            shuffled_header(&header, &s.tracks.names, &orders, a.seed, csv)
+        )
+    } else {
+        let body = match a.format {
+            FormatArg::Yaml => tracks_to_yaml(&s.tracks),
+            FormatArg::Csv => tracks_to_csv(&s.tracks),
+        };
+        format!("{header}{body}")
     };
-    let text = format!("{header}{body}");
     match a.out {
         Some(path) => write_new(&path, &text),
         None => {
@@ -56,6 +81,89 @@ pub fn run(a: Args) -> Result<(), Error> {
             Ok(())
         }
     }
+}
+
+/// The random stream of `--shuffle`: apart from the scene's (`seed`) and its noise's
+/// (`seed + 1`, [`orthocheck::seeds::noise_seed`]), so that shuffling moves no point.
+fn shuffle_seed(seed: u64) -> u64 {
+    seed.wrapping_add(2)
+}
+
+/// For every frame after the first, the order it lists the points in: `orders[f][k]` is the
+/// point (index into frame 1's) listed `k`-th in frame `f + 2`.
+fn shuffled_orders(points: usize, frames: usize, seed: u64) -> Vec<Vec<usize>> {
+    let mut g = orthocheck::model::rng(shuffle_seed(seed));
+    (1..frames)
+        .map(|_| {
+            let mut order: Vec<usize> = (0..points).collect();
+            order.shuffle(&mut g);
+            order
+        })
+        .collect()
+}
+
+/// The tracks with every frame after the first listed in its order; frame 1 and the names
+/// (frame 1's) as they were.
+fn reorder(t: &Tracks, orders: &[Vec<usize>]) -> Result<Tracks, Error> {
+    let frames = t
+        .frames
+        .iter()
+        .enumerate()
+        .map(
+            |(i, f)| match i.checked_sub(1).and_then(|k| orders.get(k)) {
+                Some(order) => order.iter().map(|&j| f[j]).collect(),
+                None => f.clone(),
+            },
+        )
+        .collect();
+    Tracks::new(t.names.clone(), frames)
+}
+
+/// Shuffled tracks as CSV: frame 1's rows named, every later frame's rows labelled X1, X2, …
+/// in the order listed (a name there would tell which point is which).
+fn shuffled_csv(t: &Tracks) -> String {
+    let mut s = String::from("frame,point,x,y\n");
+    for (i, f) in t.frames.iter().enumerate() {
+        for (k, p) in f.iter().enumerate() {
+            let name = if i == 0 {
+                t.names[k].clone()
+            } else {
+                format!("X{}", k + 1)
+            };
+            let _ = writeln!(s, "{},{name},{:?},{:?}", i + 1, p.x, p.y);
+        }
+    }
+    s
+}
+
+/// The header of a shuffled file: the command with `--shuffle`, the truth, and the order
+/// every later frame lists the points in.
+fn shuffled_header(
+    header: &str,
+    names: &[String],
+    orders: &[Vec<usize>],
+    seed: u64,
+    csv: bool,
+) -> String {
+    // the header's first line is the command that makes the file again
+    let mut s = match header.split_once('\n') {
+        Some((command, rest)) => format!("{command} --shuffle\n{rest}"),
+        None => format!("{header} --shuffle\n"),
+    };
+    let labels = if csv {
+        " (rows X1, X2, … in this order)"
+    } else {
+        ""
+    };
+    let _ = writeln!(
+        s,
+        "# shuffled (seed {seed}): every frame after the first lists the points in another order, for `orthocheck identify`{labels}"
+    );
+    for (f, order) in orders.iter().enumerate() {
+        let listed: Vec<&str> = order.iter().map(|&j| names[j].as_str()).collect();
+        let _ = writeln!(s, "# frame {} lists: {}", f + 2, listed.join(" "));
+    }
+    s
 }
 
 /// The sizes within `docs/limits.md`, and ε in range, before the scene is made.
@@ -68,6 +176,12 @@ fn check_limits(a: &Args) -> Result<(), String> {
         a.points.saturating_mul(a.frames),
         SYNTH_POINTS_TIMES_FRAMES,
     )?;
+    if a.shuffle && a.frames < 2 {
+        return Err(format!(
+            "--shuffle reorders the frames after the first, and --frames {} has none (identify takes --frames 2)",
+            a.frames
+        ));
+    }
     a.noise
         .map_or(Ok(()), |e| orthocheck::limits::noise_level("--noise", e))
 }

@@ -5,7 +5,7 @@
 use std::fmt::Write as _;
 
 use super::html::{anchor, badge, escape, Page};
-use super::math::math_html;
+use super::math::{math_html, prose_html, quote_html};
 use super::values::power_phrase;
 use crate::check::{ClaimResult, ToleranceSource, Value, Verdict};
 
@@ -39,6 +39,7 @@ pub fn printed_side(c: &ClaimResult) -> Vec<&crate::check::Quantity> {
 fn side(page: &Page, qs: &[&crate::check::Quantity]) -> String {
     qs.iter()
         .map(|q| match &q.value {
+            Value::Quote { text } => quote_html(text, &page.macros),
             Value::Formula { text } | Value::Label { text } => {
                 format!(
                     "<span class=\"math\">{}</span>",
@@ -51,15 +52,125 @@ fn side(page: &Page, qs: &[&crate::check::Quantity]) -> String {
         .join("; ")
 }
 
-/// An erratum's printed and corrected forms side by side.
-pub(crate) fn fix_html(page: &Page, c: &ClaimResult) -> String {
+/// Whether a claim's correction is words rather than a formula: none of what it printed is
+/// a formula.
+pub(crate) fn correction_is_prose(c: &ClaimResult) -> bool {
+    !c.printed
+        .iter()
+        .any(|q| matches!(q.value, Value::Formula { .. }))
+}
+
+/// A claim's correction as HTML: words as running text, a formula as mathematics.
+pub(crate) fn correction_html(page: &Page, c: &ClaimResult) -> String {
     let corrected = c.correction.as_deref().unwrap_or("");
+    if correction_is_prose(c) {
+        prose_html(corrected, &page.macros)
+    } else {
+        format!(
+            "<span class=\"math\">{}</span>",
+            math_html(corrected, &page.macros, true)
+        )
+    }
+}
+
+/// An erratum's printed and corrected forms side by side, what changed marked on both sides.
+pub(crate) fn fix_html(page: &Page, c: &ClaimResult) -> String {
+    let (printed, corrected) =
+        mark_change(&side(page, &printed_side(c)), &correction_html(page, c));
     format!(
-        "<div class=\"fix\"><div><span class=\"label\">printed</span>{}</div><div class=\"arrow\" aria-label=\"corrected to\">→</div>\
-         <div><span class=\"label\">corrected</span><span class=\"math\">{}</span></div></div>",
-        side(page, &printed_side(c)),
-        math_html(corrected, &page.macros, true)
+        "<div class=\"fix\"><div><span class=\"label\">printed</span>{printed}</div><div class=\"arrow\" aria-label=\"corrected to\">→</div>\
+         <div><span class=\"label\">corrected</span>{corrected}</div></div>"
     )
+}
+
+/// The visible characters of an HTML fragment (outside tags, entities as one), with their
+/// byte offsets, spaces left out: what a reader compares.
+fn visible(html: &str) -> Vec<(usize, &str)> {
+    let mut out = Vec::new();
+    let mut i = 0;
+    while i < html.len() {
+        let rest = &html[i..];
+        let c = rest.chars().next().unwrap_or(' ');
+        let len = match c {
+            '<' => {
+                i += rest.find('>').map_or(rest.len(), |e| e + 1);
+                continue;
+            }
+            '&' => rest.find(';').map_or(1, |e| e + 1),
+            c => c.len_utf8(),
+        };
+        if !c.is_whitespace() {
+            out.push((i, &rest[..len]));
+        }
+        i += len;
+    }
+    out
+}
+
+/// Scripts (`<sub>`, `<sup>`) open at byte `at` of `html`.
+fn open_scripts(html: &str, at: usize) -> usize {
+    let h = &html[..at];
+    let open = h.matches("<sub>").count() + h.matches("<sup>").count();
+    open.saturating_sub(h.matches("</sub>").count() + h.matches("</sup>").count())
+}
+
+/// Byte offset in `html` of a cut before visible character `k` (`back`), or just after it,
+/// moved out of any script: back before it, or forward past its end.
+fn cut(html: &str, vis: &[(usize, &str)], k: usize, back: bool) -> usize {
+    let mut at = match (back, vis.get(k)) {
+        (true, Some(v)) => v.0,
+        (false, Some(v)) => v.0 + v.1.len(),
+        (_, None) => html.len(),
+    };
+    while open_scripts(html, at) > 0 {
+        at = if back {
+            html[..at].rfind("<su").unwrap_or(0)
+        } else {
+            html[at..]
+                .find("</su")
+                .map_or(html.len(), |e| at + e + "</sub>".len())
+        };
+    }
+    at
+}
+
+/// `a` and `b` with the part between their common beginning and common end (in visible
+/// characters) wrapped in `<mark>`; unchanged when they are the same or share nothing.
+pub(crate) fn mark_change(a: &str, b: &str) -> (String, String) {
+    let (va, vb) = (visible(a), visible(b));
+    let same = |x: &(usize, &str), y: &(usize, &str)| x.1 == y.1;
+    let pre = va.iter().zip(&vb).take_while(|(x, y)| same(x, y)).count();
+    let max_suf = va.len().min(vb.len()) - pre;
+    let suf = va
+        .iter()
+        .rev()
+        .zip(vb.iter().rev())
+        .take(max_suf)
+        .take_while(|(x, y)| same(x, y))
+        .count();
+    if pre + suf == va.len() && pre + suf == vb.len() || pre + suf == 0 {
+        return (a.to_string(), b.to_string());
+    }
+    let wrap = |h: &str, v: &[(usize, &str)]| {
+        let start = cut(h, v, pre, true);
+        let changed = v.len() - suf;
+        let end = if changed > pre {
+            cut(h, v, changed - 1, false)
+        } else {
+            start
+        };
+        if end > start {
+            format!(
+                "{}<mark>{}</mark>{}",
+                &h[..start],
+                &h[start..end],
+                &h[end..]
+            )
+        } else {
+            h.to_string()
+        }
+    };
+    (wrap(a, &va), wrap(b, &vb))
 }
 
 fn claim_link(c: &ClaimResult) -> String {
@@ -175,5 +286,23 @@ fn push_errata(s: &mut String, page: &Page) {
                 )
             }
         );
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_change_is_marked_on_both_sides_outside_scripts() {
+        let (a, b) = mark_change("<span>x + 2y</span>", "x + 3y");
+        assert_eq!(a, "<span>x + <mark>2</mark>y</span>");
+        assert_eq!(b, "x + <mark>3</mark>y");
+        // a change inside a script marks the whole script
+        let (a, b) = mark_change("d<sub>Cst,1</sub> = 1", "d<sub>Cst,2</sub> = 1");
+        assert_eq!(a, "d<mark><sub>Cst,1</sub></mark> = 1");
+        assert_eq!(b, "d<mark><sub>Cst,2</sub></mark> = 1");
+        // spaces do not count; equal sides are left alone
+        assert_eq!(mark_change("a + b", "a+b"), ("a + b".into(), "a+b".into()));
     }
 }

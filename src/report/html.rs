@@ -7,7 +7,7 @@ use std::collections::BTreeSet;
 use std::fmt::Write as _;
 
 use super::layout::{self, section_anchor, verdict_anchor, Section, GROUPS};
-use super::math::{math_html, Macros};
+use super::math::{math_html, quote_html, Macros};
 use super::values::{power_phrase, quantities_shown, tolerance_text, trials_of};
 use super::Report;
 use crate::check::figure::Figure;
@@ -77,16 +77,19 @@ impl<'a> Page<'a> {
                 math_html(text, &self.macros, true)
             ),
             Value::Label { text } => self.linked(text),
+            Value::Quote { text } => quote_html(text, &self.macros),
             v => escape(&super::values::shown_text(name, v, trials)),
         }
     }
 
     /// Named values on one line.
     pub(crate) fn quantities(&self, qs: &[Quantity], trials: Option<u64>) -> String {
-        if qs
-            .iter()
-            .all(|q| !matches!(q.value, Value::Formula { .. } | Value::Label { .. }))
-        {
+        if qs.iter().all(|q| {
+            !matches!(
+                q.value,
+                Value::Formula { .. } | Value::Label { .. } | Value::Quote { .. }
+            )
+        }) {
             return escape(&quantities_shown(qs, trials));
         }
         super::values::quantities_line(qs, escape, |q| self.value(&q.name, &q.value, trials))
@@ -128,6 +131,7 @@ pub fn render(r: &Report) -> String {
          <meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">",
     );
     push_header(&mut s, r);
+    super::findings::push_findings_html(&mut s, &page);
     push_strip(&mut s, r);
     push_contents(&mut s, &page);
     super::glance::push_glance(&mut s, &page);
@@ -182,6 +186,9 @@ fn push_header(s: &mut String, r: &Report) {
         escape(p.date.as_deref().unwrap_or("unknown")),
         escape(&p.command)
     );
+    if !p.transcription.is_empty() {
+        let _ = write!(s, "<p class=\"meta\">{}</p>", escape(&p.transcription));
+    }
     s.push_str("<details><summary>seeds of every case</summary><div class=\"scroll\"><table><tr><th>case</th><th>file</th><th>seeds</th></tr>");
     for cs in &p.seeds {
         let _ = write!(
@@ -338,11 +345,20 @@ fn claim_html(page: &Page, c: &ClaimResult, figures: &[&Figure], h: usize) -> St
     let _ = write!(
         s,
         "<blockquote>{} <span class=\"meta\">(lines {}, <a href=\"#{}\">§{}</a>)</span></blockquote>",
-        plain_label(&c.quote),
+        quote_html(&c.quote, &page.macros),
         escape(&c.lines),
         section_anchor(&c.section),
         escape(&c.section)
     );
+    if matches!(c.verdict, Verdict::Erratum | Verdict::Note) {
+        if let super::findings::Why::Text(d) = super::findings::defect_sentence(c) {
+            let _ = write!(
+                s,
+                "<p class=\"defect\"><strong>defect:</strong> {}</p>",
+                page.linked(&d)
+            );
+        }
+    }
     s.push_str("<dl>");
     let _ = write!(
         s,
@@ -363,7 +379,7 @@ fn claim_html(page: &Page, c: &ClaimResult, figures: &[&Figure], h: usize) -> St
     }
     let _ = write!(
         s,
-        "<dt>power</dt><dd><strong>{}</strong> — {}</dd>",
+        "<dt>power</dt><dd><strong>{}</strong>: {}</dd>",
         escape(&power_phrase(&c.power)),
         page.linked(&c.power.detail)
     );

@@ -129,8 +129,9 @@ pub fn ordered(r: &Report) -> Vec<&ClaimResult> {
     sections(r).into_iter().flat_map(|s| s.claims).collect()
 }
 
-/// How a reader groups the verdicts at a glance.
-pub const GROUPS: [(&str, &[Verdict]); 5] = [
+/// How a reader groups the verdicts at a glance. Errata stand apart from failures: an
+/// erratum is a finding about the paper, a failure a claim that does not hold.
+pub const GROUPS: [(&str, &[Verdict]); 6] = [
     (
         "holds",
         &[
@@ -141,14 +142,8 @@ pub const GROUPS: [(&str, &[Verdict]); 5] = [
             Verdict::StatisticalHolds,
         ],
     ),
-    (
-        "fails",
-        &[
-            Verdict::Erratum,
-            Verdict::Contradicted,
-            Verdict::StatisticalFails,
-        ],
-    ),
+    ("wrong in the paper (errata)", &[Verdict::Erratum]),
+    ("fails", &[Verdict::Contradicted, Verdict::StatisticalFails]),
     ("form only (notes)", &[Verdict::Note]),
     ("cannot be decided", &[Verdict::NotReproducible]),
     ("inconclusive", &[Verdict::Inconclusive]),

@@ -9,7 +9,7 @@ use std::fmt::Write as _;
 
 use super::glance::{holds_word, is_statistical, printed_side, LISTS};
 use super::layout::{self, anchor, section_anchor, verdict_anchor, GROUPS};
-use super::math::{math_text, Macros};
+use super::math::{math_text, prose_text_in, quote_text, Macros};
 use super::values::{power_phrase, shown_text, tolerance_text, trials_of};
 use super::Report;
 use crate::check::{ClaimResult, Quantity, Value, Verdict};
@@ -49,6 +49,7 @@ impl Ctx<'_> {
         match v {
             Value::Formula { text } => md_escape(&math_text(text, &self.macros, true)),
             Value::Label { text } => self.linked(text),
+            Value::Quote { text } => md_escape(&quote_text(text, &self.macros)),
             v => md_escape(&shown_text(name, v, trials)),
         }
     }
@@ -69,6 +70,21 @@ fn strip_backslashes(s: &str) -> String {
         out.push(c);
     }
     out
+}
+
+/// A claim's correction: words as running text, a formula as mathematics.
+fn correction_md(ctx: &Ctx, c: &ClaimResult) -> String {
+    let corr = c.correction.as_deref().unwrap_or("");
+    if super::glance::correction_is_prose(c) {
+        md_escape(&prose_text_in(corr, &ctx.macros))
+    } else {
+        md_escape(&math_text(corr, &ctx.macros, true))
+    }
+}
+
+/// Text for a Markdown line: no backslash command, no markup.
+pub(crate) fn plain_text(s: &str) -> String {
+    md_escape(&strip_backslashes(s))
 }
 
 /// Characters Markdown would read as markup inside a table cell or a line.
@@ -111,10 +127,15 @@ fn claim_in(
     let _ = writeln!(
         s,
         "> {} (lines {}, §{})\n",
-        md_escape(&strip_backslashes(&c.quote)),
+        md_escape(&quote_text(&c.quote, &ctx.macros)),
         c.lines,
         c.section
     );
+    if matches!(c.verdict, Verdict::Erratum | Verdict::Note) {
+        if let super::findings::Why::Text(d) = super::findings::defect_sentence(c) {
+            let _ = writeln!(s, "- **defect:** {}", ctx.linked(&d));
+        }
+    }
     let _ = writeln!(s, "- paper: {}", ctx.quantities(&c.printed, trials));
     let _ = writeln!(s, "- computed: {}", ctx.quantities(&c.computed, trials));
     if let Some(t) = &c.tolerance {
@@ -122,16 +143,12 @@ fn claim_in(
     }
     let _ = writeln!(
         s,
-        "- power: **{}** — {}",
+        "- power: **{}**: {}",
         power_phrase(&c.power),
         ctx.linked(&c.power.detail)
     );
-    if let Some(corr) = &c.correction {
-        let _ = writeln!(
-            s,
-            "- corrected: {}",
-            md_escape(&math_text(corr, &ctx.macros, true))
-        );
+    if c.correction.is_some() {
+        let _ = writeln!(s, "- corrected: {}", correction_md(ctx, c));
     }
     let _ = writeln!(s, "- method: {}", ctx.linked(&c.evidence.method));
     let ev = super::evidence::layout(c);
@@ -202,6 +219,10 @@ pub fn render(r: &Report) -> String {
         p.date.as_deref().unwrap_or("unknown"),
         p.command
     );
+    if !p.transcription.is_empty() {
+        let _ = writeln!(s, "{}\n", p.transcription);
+    }
+    super::findings::push_findings_markdown(&mut s, &ctx.ordered, &ctx.macros);
     push_summary(&mut s, r);
     push_contents(&mut s, r);
     push_glance(&mut s, &ctx);
@@ -300,13 +321,15 @@ fn push_glance(s: &mut String, ctx: &Ctx) {
                 Value::Formula { text } | Value::Label { text } => {
                     md_escape(&math_text(text, &ctx.macros, true))
                 }
+                Value::Quote { text } => md_escape(&quote_text(text, &ctx.macros)),
                 v => md_escape(&super::values::value_text(v)),
             })
             .collect();
-        let corrected = c.correction.as_deref().map_or_else(
-            || ctx.quantities(&c.computed, None),
-            |t| md_escape(&math_text(t, &ctx.macros, true)),
-        );
+        let corrected = if c.correction.is_some() {
+            correction_md(ctx, c)
+        } else {
+            ctx.quantities(&c.computed, None)
+        };
         let _ = writeln!(
             s,
             "| [`{}`](#{}) (§{}, line {}) | {} | {} |",

@@ -4,6 +4,13 @@
 //! roots `√(x)`, Greek letters their glyphs, and sub- and superscripts Unicode where Unicode
 //! has the glyphs (HTML `<sub>`/`<sup>` elsewhere, `_(…)` in plain text). No backslash macro
 //! survives: an unknown one is shown by its name.
+//!
+//! A script without braces takes one character in LaTeX. In plain notation it takes a number
+//! (`2a^2b^2` is 2a²b², `x^0.5`) or a name, letters and their trailing digits (`d_Cst1`,
+//! `d_a2`, `a_i`): see `plain_script`.
+//!
+//! Quotes of the paper's source used as text go through [`prose_text`] instead: words keep
+//! their spaces, `$…$` is mathematics, references and layout commands read as text.
 
 use std::collections::BTreeMap;
 
@@ -281,8 +288,41 @@ fn is_font(name: &str) -> bool {
     )
 }
 
+/// Commands that print their argument and nothing else in running text.
+fn is_text_font(name: &str) -> bool {
+    matches!(
+        name,
+        "emph" | "textbf" | "textit" | "texttt" | "textsc" | "textsf" | "underline"
+    )
+}
+
+/// The length of an unbraced script in plain notation at the start of `t`: a number when it
+/// starts with a digit (its digits, and a decimal fraction: `x^0.5`; never a letter, so that
+/// `2a^2b^2` is 2a²b²); a name when it starts with a letter (its letters, then their trailing
+/// digits: `d_Cst1`, `d_a2`, `a_i`); else one character.
+fn plain_script(t: &str) -> usize {
+    let digits = |s: &str| s.find(|c: char| !c.is_ascii_digit()).unwrap_or(s.len());
+    let Some(first) = t.chars().next() else {
+        return 0;
+    };
+    if first.is_ascii_digit() {
+        let whole = digits(t);
+        let fraction = t[whole..].strip_prefix('.').map_or(0, digits);
+        return if fraction > 0 {
+            whole + 1 + fraction
+        } else {
+            whole
+        };
+    }
+    if first.is_ascii_alphabetic() {
+        let name = letters(t).len();
+        return name + digits(&t[name..]);
+    }
+    first.len_utf8()
+}
+
 struct Renderer {
-    /// Plain notation (`d_Cst1`): a script without braces runs over letters and digits.
+    /// Plain notation (`d_Cst1`): a script without braces is read by [`plain_script`].
     plain: bool,
     out: Vec<Piece>,
 }
@@ -342,11 +382,7 @@ impl Renderer {
         let (body, rest) = if let Some(g) = group(t) {
             g
         } else if self.plain {
-            let n = t
-                .find(|c: char| !c.is_ascii_alphanumeric())
-                .unwrap_or(t.len())
-                .max(t.chars().next().map_or(0, char::len_utf8));
-            t.split_at(n)
+            t.split_at(plain_script(t))
         } else {
             argument(t)
         };
@@ -455,40 +491,70 @@ fn pieces(s: &str, plain: bool) -> Vec<Piece> {
         out: Vec::new(),
     };
     r.run(s);
-    // trim the ends
-    if let Some(Piece::Text(t)) = r.out.first_mut() {
+    finished(r.out)
+}
+
+/// Rendered pieces with their ends trimmed and the empty texts dropped.
+fn finished(mut out: Vec<Piece>) -> Vec<Piece> {
+    if let Some(Piece::Text(t)) = out.first_mut() {
         *t = t.trim_start().to_string();
     }
-    if let Some(Piece::Text(t)) = r.out.last_mut() {
+    if let Some(Piece::Text(t)) = out.last_mut() {
         *t = t.trim_end().to_string();
     }
-    r.out
-        .retain(|p| !matches!(p, Piece::Text(t) if t.is_empty()));
-    r.out
+    out.retain(|p| !matches!(p, Piece::Text(t) if t.is_empty()));
+    out
 }
 
 /// Rendered mathematics as one plain string (scripts without a Unicode glyph as `_(…)`).
 fn flatten(s: &str, plain: bool) -> String {
+    text_of(&pieces(s, plain))
+}
+
+/// Pieces as one plain string. A script without a Unicode glyph is written `_x` (`^x`), in
+/// parentheses when it is more than letters and digits or when a letter or digit follows
+/// it: `f_(cb)f_b`, never `f_cbf_b`, which would read as one script.
+fn text_of(pieces: &[Piece]) -> String {
     let mut out = String::new();
-    for p in pieces(s, plain) {
+    for (i, p) in pieces.iter().enumerate() {
+        let glued = matches!(
+            pieces.get(i + 1),
+            Some(Piece::Text(t)) if t.starts_with(|c: char| c.is_ascii_alphanumeric())
+        );
         match p {
-            Piece::Text(t) => out.push_str(&t),
-            Piece::Sub(t) => push_script(&mut out, '_', &t),
-            Piece::Sup(t) => push_script(&mut out, '^', &t),
+            Piece::Text(t) => out.push_str(t),
+            Piece::Sub(t) => push_script(&mut out, '_', t, glued),
+            Piece::Sup(t) => push_script(&mut out, '^', t, glued),
         }
     }
     out
 }
 
-fn push_script(out: &mut String, mark: char, t: &str) {
+fn push_script(out: &mut String, mark: char, t: &str, enclose: bool) {
     out.push(mark);
-    if t.chars().all(|c| c.is_ascii_alphanumeric()) {
+    if !enclose && t.chars().all(|c| c.is_ascii_alphanumeric()) {
         out.push_str(t);
     } else {
         out.push('(');
         out.push_str(t);
         out.push(')');
     }
+}
+
+/// Pieces as HTML (escaped; `<sub>`/`<sup>` for scripts without a Unicode glyph).
+fn html_of(pieces: &[Piece]) -> String {
+    let mut out = String::new();
+    for p in pieces {
+        let (open, t, close) = match p {
+            Piece::Text(t) => ("", t, ""),
+            Piece::Sub(t) => ("<sub>", t, "</sub>"),
+            Piece::Sup(t) => ("<sup>", t, "</sup>"),
+        };
+        out.push_str(open);
+        out.push_str(&super::html::escape(t));
+        out.push_str(close);
+    }
+    out
 }
 
 /// True when `s` reads as LaTeX (a backslash command) rather than plain notation. A braced
@@ -508,23 +574,7 @@ pub fn math_text(s: &str, macros: &Macros, names: bool) -> String {
 /// A formula as HTML (escaped; `<sub>`/`<sup>` for scripts Unicode cannot write).
 pub fn math_html(s: &str, macros: &Macros, names: bool) -> String {
     let expanded = macros.expand(s, names);
-    let mut out = String::new();
-    for p in pieces(&expanded, !is_latex(s)) {
-        match p {
-            Piece::Text(t) => out.push_str(&super::html::escape(&t)),
-            Piece::Sub(t) => {
-                out.push_str("<sub>");
-                out.push_str(&super::html::escape(&t));
-                out.push_str("</sub>");
-            }
-            Piece::Sup(t) => {
-                out.push_str("<sup>");
-                out.push_str(&super::html::escape(&t));
-                out.push_str("</sup>");
-            }
-        }
-    }
-    out
+    html_of(&pieces(&expanded, !is_latex(s)))
 }
 
 /// Backslash commands left in `s` (what no reader should see): their names.
@@ -539,6 +589,382 @@ pub fn raw_macros(s: &str) -> Vec<&str> {
         rest = &rest[at + 1 + name.len()..];
     }
     found
+}
+
+/// Commands of running text that refer to a label or a citation: whether a space parts them
+/// from the word before (`\Zitat` is the paper's `~\cite`), and the text before and after
+/// the argument. The paper prints a number for a label (`\rFig{x}` is `fig.~\ref{x}`, "fig.
+/// 3"); without the numbers the label stands for it: "fig. zweiframeseins", "(p4f2)".
+fn reference(name: &str) -> Option<(bool, &'static str, &'static str)> {
+    Some(match name {
+        "rFig" => (false, "fig. ", ""),
+        "rTab" => (false, "tab. ", ""),
+        "rEq" | "eqref" => (false, "(", ")"),
+        "ref" | "pageref" => (false, "", ""),
+        "cite" => (false, "[", "]"),
+        "Zitat" => (true, "[", "]"),
+        "label" => (true, "(label ", ")"),
+        _ => return None,
+    })
+}
+
+/// Layout commands of running text: each reads as a space between words.
+fn is_layout(name: &str) -> bool {
+    matches!(
+        name,
+        "item"
+            | "noindent"
+            | "indent"
+            | "par"
+            | "newline"
+            | "linebreak"
+            | "newpage"
+            | "smallskip"
+            | "medskip"
+            | "bigskip"
+            | "hfill"
+            | "vfill"
+            | "centering"
+    )
+}
+
+/// Font switches (`{\bf x}`): they print nothing.
+fn is_switch(name: &str) -> bool {
+    matches!(
+        name,
+        "bf" | "it"
+            | "em"
+            | "rm"
+            | "tt"
+            | "sc"
+            | "sf"
+            | "sl"
+            | "small"
+            | "large"
+            | "Large"
+            | "footnotesize"
+            | "normalsize"
+    )
+}
+
+/// Commands that occur only in running text or around it, never inside a formula.
+fn is_text_command(name: &str) -> bool {
+    reference(name).is_some()
+        || is_layout(name)
+        || is_text_font(name)
+        || matches!(
+            name,
+            "put"
+                | "begin"
+                | "end"
+                | "newcommand"
+                | "caption"
+                | "section"
+                | "subsection"
+                | "footnote"
+                | "documentstyle"
+                | "documentclass"
+        )
+}
+
+/// Quoted source read as running text: words keep their spaces, `$…$` is LaTeX mathematics
+/// (the paper's macros expanded), scripts outside it are plain notation.
+struct Prose<'m> {
+    macros: &'m Macros,
+    r: Renderer,
+}
+
+impl Prose<'_> {
+    /// One space between words: none at the start, never two.
+    fn space(&mut self) {
+        if !matches!(self.r.last_char(), None | Some(' ')) {
+            self.r.text(" ");
+        }
+    }
+
+    /// The space a command stands for: none after an opening bracket or quote either.
+    fn gap(&mut self) {
+        if !matches!(self.r.last_char(), Some('(' | '[' | '"' | '“' | '‘')) {
+            self.space();
+        }
+    }
+
+    fn run(&mut self, s: &str) {
+        let mut rest = s;
+        while let Some(c) = rest.chars().next() {
+            rest = &rest[c.len_utf8()..];
+            match c {
+                '$' => rest = self.math(rest),
+                '\\' => rest = self.command(rest),
+                '^' | '_' => rest = self.r.script(c == '^', rest),
+                '{' | '}' => {}
+                '~' => self.space(),
+                // TeX's dashes: `--` an en dash (ranges), `---` an em dash
+                '-' if rest.starts_with("--") => {
+                    self.r.text("—");
+                    rest = &rest[2..];
+                }
+                '-' if rest.starts_with('-') => {
+                    self.r.text("–");
+                    rest = &rest[1..];
+                }
+                c if c.is_whitespace() => self.space(),
+                c => self.r.text(c.encode_utf8(&mut [0; 4])),
+            }
+        }
+    }
+
+    /// Mathematics after its opening `$` (or `$$`) up to the closing one; returns what
+    /// follows it. A dollar without its partner is the sign itself ("several $$ displays").
+    fn math<'a>(&mut self, s: &'a str) -> &'a str {
+        let (close, s) = match s.strip_prefix('$') {
+            Some(t) => ("$$", t),
+            None => ("$", s),
+        };
+        let Some(at) = s.find(close) else {
+            self.r.text(close);
+            return s;
+        };
+        let (inner, rest) = (&s[..at], &s[at + close.len()..]);
+        for p in pieces(&self.macros.expand(inner, false), false) {
+            match p {
+                Piece::Text(t) => self.r.text(&t),
+                p => self.r.out.push(p),
+            }
+        }
+        rest
+    }
+
+    /// A backslash command of running text; returns what follows it.
+    fn command<'a>(&mut self, s: &'a str) -> &'a str {
+        let name = letters(s);
+        if name.is_empty() {
+            return self.escaped(s);
+        }
+        let rest = &s[name.len()..];
+        // a reference without its braced label is a mention of the command: its name
+        if let (Some((spaced, open, close)), Some((label, after))) =
+            (reference(name), group(rest.trim_start()))
+        {
+            if spaced {
+                self.gap();
+            }
+            let label: Vec<&str> = label.split(',').map(str::trim).collect();
+            self.r.text(&format!("{open}{}{close}", label.join(", ")));
+            return after;
+        }
+        match name {
+            "put" => self.put(rest),
+            "newcommand" | "renewcommand" => {
+                // the name defined, not a call of it
+                let (defined, after) = argument(rest);
+                self.r.text(name);
+                self.space();
+                self.r.text(defined.trim().trim_start_matches('\\'));
+                self.arguments(after)
+            }
+            "vspace" | "hspace" => {
+                self.gap();
+                argument(rest).1
+            }
+            // as in TeX, the spaces after the command are its own
+            n if is_layout(n) => {
+                self.gap();
+                rest.trim_start()
+            }
+            n if is_switch(n) => rest,
+            n if is_font(n) || is_text_font(n) => {
+                let (arg, after) = argument(rest);
+                self.run(arg);
+                after
+            }
+            "l" => {
+                self.r.text("ł");
+                rest
+            }
+            "L" => {
+                self.r.text("Ł");
+                rest
+            }
+            n => match symbol(n) {
+                Some(t) => {
+                    self.r.text(t);
+                    rest
+                }
+                None => self.unknown(n, rest),
+            },
+        }
+    }
+
+    /// A one-character command (`\%`, `\\`, `\,` …); returns what follows it. A per cent
+    /// sign after a number is set apart from it: `20\%` reads "20 %".
+    fn escaped<'a>(&mut self, s: &'a str) -> &'a str {
+        let Some(c) = s.chars().next() else {
+            return s;
+        };
+        match c {
+            '%' => {
+                if self.r.last_char().is_some_and(|p| p.is_ascii_digit()) {
+                    self.r.text(" ");
+                }
+                self.r.text("%");
+            }
+            '&' | '#' | '_' | '$' | '{' | '}' => self.r.text(c.encode_utf8(&mut [0; 4])),
+            '\\' | ' ' | ',' | ';' | ':' => self.space(),
+            // `\-`, `\/`, `\!` and the accents print nothing of their own
+            _ => {}
+        }
+        &s[c.len_utf8()..]
+    }
+
+    /// `\put(x,y){…}` of a picture: "label … at (x, y)".
+    fn put<'a>(&mut self, s: &'a str) -> &'a str {
+        let Some((at, after)) = s
+            .trim_start()
+            .strip_prefix('(')
+            .and_then(|t| t.split_once(')'))
+        else {
+            return self.unknown("put", s);
+        };
+        let (label, rest) = argument(after);
+        self.gap();
+        self.r.text("label ");
+        self.run(label);
+        let at: Vec<&str> = at.split(',').map(str::trim).collect();
+        self.r.text(&format!(" at ({})", at.join(", ")));
+        rest
+    }
+
+    /// A command this reader does not know: its name, then its options and arguments as
+    /// text (`\begin{table}[H]` reads "begin table[H]").
+    fn unknown<'a>(&mut self, name: &str, s: &'a str) -> &'a str {
+        if self.r.last_char().is_some_and(char::is_alphanumeric) {
+            self.space();
+        }
+        self.r.text(name);
+        self.arguments(s)
+    }
+
+    /// The options and braced arguments at the start of `s`, as text; returns what follows.
+    fn arguments<'a>(&mut self, s: &'a str) -> &'a str {
+        let mut rest = s;
+        loop {
+            let t = rest.trim_start();
+            if let Some((arg, after)) = group(t) {
+                if !arg.trim().is_empty() {
+                    self.space();
+                    self.run(arg);
+                }
+                rest = after;
+            } else if let Some((option, after)) =
+                t.strip_prefix('[').and_then(|o| o.split_once(']'))
+            {
+                self.r.text(&format!("[{option}]"));
+                rest = after;
+            } else {
+                return rest;
+            }
+        }
+    }
+}
+
+fn prose_pieces(s: &str, macros: &Macros) -> Vec<Piece> {
+    let mut p = Prose {
+        macros,
+        r: Renderer {
+            plain: true,
+            out: Vec::new(),
+        },
+    };
+    p.run(s);
+    finished(p.r.out)
+}
+
+/// Quoted LaTeX source (or a sentence in the checks' plain notation) as readable text, with
+/// the spaces between its words: `$…$` becomes mathematics (the paper's macros unexpanded:
+/// see [`prose_text_in`]), `20\%` "20 %", `\rFig{x}` "fig. x", `\rTab{x}` "tab. x",
+/// `\rEq{x}` "(x)", `\ref{x}` "x", `\cite{a,b}` "[a, b]", `\label{x}` "(label x)",
+/// `\put(x,y){…}` "label … at (x, y)"; `\item`, `\noindent`, `\\` and `~` are spaces; an
+/// unknown command shows its name and its arguments. Outside `$…$` no macro is expanded: a
+/// text that names `\faca` means the macro, not its expansion.
+pub fn prose_text(s: &str) -> String {
+    prose_text_in(s, &Macros::default())
+}
+
+/// [`prose_text`] with the paper's macros expanded inside `$…$`.
+pub fn prose_text_in(s: &str, macros: &Macros) -> String {
+    text_of(&prose_pieces(s, macros))
+}
+
+/// [`prose_text_in`] as HTML (escaped; `<sub>`/`<sup>` for scripts without a glyph).
+pub fn prose_html(s: &str, macros: &Macros) -> String {
+    html_of(&prose_pieces(s, macros))
+}
+
+/// True when quoted source `s` reads as running text: it has a word of two or more letters
+/// outside its mathematics, its command names and its scripts, or a command only text uses
+/// (`\item`, `\rFig`, `\put`, `\label`, `\%` …). A formula quoted from a display without
+/// `$` (`2{b}^2(-{a_i}^2+…`, `\sqrt{\deltab} ) / (2*\AFcbbdwa ) }.`) does not.
+pub fn is_prose(s: &str) -> bool {
+    let (mut rest, mut run) = (s, 0usize);
+    while let Some(c) = rest.chars().next() {
+        rest = &rest[c.len_utf8()..];
+        match c {
+            // mathematics up to its closing dollar is no text (a lone dollar is a sign)
+            '$' => {
+                let (close, t) = match rest.strip_prefix('$') {
+                    Some(t) => ("$$", t),
+                    None => ("$", rest),
+                };
+                rest = t.find(close).map_or(t, |at| &t[at + close.len()..]);
+                run = 0;
+            }
+            '\\' => {
+                let name = letters(rest);
+                if is_text_command(name) || rest.starts_with('%') {
+                    return true;
+                }
+                let n = match rest.chars().next() {
+                    Some(c) if name.is_empty() => c.len_utf8(),
+                    _ => name.len(),
+                };
+                rest = &rest[n..];
+                run = 0;
+            }
+            '^' | '_' => {
+                let t = rest.trim_start();
+                rest = group(t).map_or_else(|| &t[plain_script(t)..], |(_, after)| after);
+                run = 0;
+            }
+            c if c.is_ascii_alphabetic() => {
+                run += 1;
+                if run >= 2 {
+                    return true;
+                }
+            }
+            _ => run = 0,
+        }
+    }
+    false
+}
+
+/// A quote of the paper's source as text: running text by [`prose_text_in`], a formula
+/// quoted from a display by [`math_text`] (see [`is_prose`]).
+pub fn quote_text(s: &str, macros: &Macros) -> String {
+    if is_prose(s) {
+        prose_text_in(s, macros)
+    } else {
+        math_text(s, macros, false)
+    }
+}
+
+/// [`quote_text`] as HTML.
+pub fn quote_html(s: &str, macros: &Macros) -> String {
+    if is_prose(s) {
+        prose_html(s, macros)
+    } else {
+        math_html(s, macros, false)
+    }
 }
 
 #[cfg(test)]
@@ -606,5 +1032,169 @@ mod tests {
         let m = paper_like();
         assert_eq!(math_html("\\diffCst{1}", &m, false), "d<sub>Cst,1</sub>");
         assert_eq!(math_html("a_1^2 < b", &m, false), "a₁² &lt; b");
+    }
+
+    #[test]
+    fn an_unbraced_plain_script_is_a_number_or_a_name() {
+        let m = paper_like();
+        // a number ends at its last digit: the letter after it is the next factor
+        assert_eq!(
+            math_text("a^4-2a^2b^2-2a^2c^2", &m, false),
+            "a⁴−2a²b²−2a²c²"
+        );
+        assert_eq!(math_html("-2a_3^2b_3^2", &m, false), "−2a₃²b₃²");
+        assert_eq!(
+            math_html("2a^2f^2 + x^0.5 + y_2.", &m, false),
+            "2a²f² + x<sup>0.5</sup> + y₂."
+        );
+        // a name runs over its letters and their trailing digits
+        assert_eq!(
+            math_html("d_Cst1 d_a2 a_i^2 A_Cst", &m, false),
+            "d<sub>Cst1</sub> dₐ₂ aᵢ² A<sub>Cst</sub>"
+        );
+        assert_eq!(plain_script("12.5x"), 4);
+        assert_eq!(plain_script("1.x"), 1);
+        assert_eq!(plain_script("Cst12b"), 5);
+        assert_eq!(plain_script("-1"), 1);
+        assert_eq!(plain_script(""), 0);
+        // in LaTeX an unbraced script is one character, as before
+        assert_eq!(math_text("\\nn a^22", &m, false), "a²2");
+    }
+
+    #[test]
+    fn a_script_without_a_glyph_never_runs_into_the_next_symbol() {
+        let m = Macros::parse("\\newcommand{\\AFcbcb}{f_{cb}}\n\\newcommand{\\AFcbb}{f_{b}}\n");
+        assert_eq!(math_text("\\AFcbcb\\AFcbb", &m, false), "f_(cb)f_b");
+        assert_eq!(math_text("f_cb f_b", &m, false), "f_cb f_b");
+    }
+
+    #[test]
+    fn quoted_text_keeps_its_words_apart() {
+        assert_eq!(
+            prose_text(
+                "However, the average performance was with 20\\% from deviation of correct values."
+            ),
+            "However, the average performance was with 20 % from deviation of correct values."
+        );
+        assert_eq!(
+            prose_text("which means errors of well above 20 \\%."),
+            "which means errors of well above 20 %."
+        );
+        assert_eq!(
+            prose_text("$ k*2*p$ pieces of information available from k images."),
+            "k·2·p pieces of information available from k images."
+        );
+        assert_eq!(
+            prose_text("\\item If four frames or four points are available,"),
+            "If four frames or four points are available,"
+        );
+        // the source's own slip stays visible
+        assert_eq!(
+            prose_text("assuming knowledge of$c$"),
+            "assuming knowledge ofc"
+        );
+        assert_eq!(
+            prose_text("Let us denote with $T_a$ the point"),
+            "Let us denote with Tₐ the point"
+        );
+        assert_eq!(
+            prose_text("the traced points, and $P_i,\\, Q_I,\\, R_i$ their"),
+            "the traced points, and Pᵢ,\u{2009}Q_I,\u{2009}Rᵢ their"
+        );
+    }
+
+    #[test]
+    fn references_layout_and_pictures_read_as_text() {
+        assert_eq!(
+            prose_text("and three parallel lines p2, q2, r2 (see \\rFig{zweiframeseins})."),
+            "and three parallel lines p2, q2, r2 (see fig. zweiframeseins)."
+        );
+        assert_eq!(
+            prose_text(
+                "Then from \\rEq{p4f2} we obtain the linear equation system for i=2, 3:\\\\"
+            ),
+            "Then from (p4f2) we obtain the linear equation system for i=2, 3:"
+        );
+        assert_eq!(
+            prose_text("in \\rTab{bspp3f3tab} and\\Zitat{Tsai:1,Tsai:2}."),
+            "in tab. bspp3f3tab and [Tsai:1, Tsai:2]."
+        );
+        assert_eq!(
+            prose_text("\\put(1.094,0.796){$Q'$} \\put(1.065,1.148){$R'$}"),
+            "label Q' at (1.094, 0.796) label R' at (1.065, 1.148)"
+        );
+        assert_eq!(
+            prose_text("\\begin{table}[H] \\label{bspp3f3tab}"),
+            "begin table[H] (label bspp3f3tab)"
+        );
+        assert_eq!(
+            prose_text("K{\\l}opotek, \\noindent pages 3--5"),
+            "Kłopotek, pages 3–5"
+        );
+        // a command named, not called; a macro defined, not called
+        assert_eq!(
+            prose_text("put each \\label after its \\caption"),
+            "put each label after its caption"
+        );
+        assert_eq!(
+            prose_text("\\newcommand{\\Zitat}[1]{~\\cite{#1}}"),
+            "newcommand Zitat[1] [#1]"
+        );
+        assert_eq!(
+            prose_text("\"\\item If\" or \"\\label{x}\""),
+            "\"If\" or \"(label x)\""
+        );
+        assert_eq!(prose_text("(\\facCst{2}\\nn"), "(facCst 2 nn");
+        assert_eq!(
+            prose_text("\"\\newcommand{\\Bem}[1]{}\""),
+            "\"newcommand Bem[1]\""
+        );
+        // a dollar without its partner is the sign
+        assert_eq!(
+            prose_text("several $$ displays, the breaks"),
+            "several $$ displays, the breaks"
+        );
+    }
+
+    #[test]
+    fn quotes_expand_the_macros_only_inside_their_mathematics() {
+        let m = paper_like();
+        assert_eq!(
+            prose_text_in("symbols $ \\deltab,\\AFcbbdwa$, not \\deltab", &m),
+            "symbols Δ_b,f_(b²), not deltab"
+        );
+        assert_eq!(
+            prose_html("within 20\\% of $\\diffCst{1}$ \\& <", &m),
+            "within 20 % of d<sub>Cst,1</sub> &amp; &lt;"
+        );
+    }
+
+    #[test]
+    fn a_quote_is_text_or_a_formula() {
+        let m = paper_like();
+        for text in [
+            "PQ QR RS TR TP TQ",
+            "\\put(1,2){$Q$}",
+            "\\label{x}",
+            "$P_i$, $Q_I$ their",
+            "20\\%",
+        ] {
+            assert!(is_prose(text), "{text}");
+        }
+        for formula in [
+            "2{b}^2(-{a_i}^2+{b_i}^2 $$ $$ +{c_1}^2)+",
+            "\\sqrt{\\deltab} ) / (2*\\AFcbbdwa ) }.",
+            "+ 2* (\\facCst{2} \\nn\\\\ \\la -\\facCst{1})",
+            "$b = \\sqrt{\\deltab}$",
+            "d_Cst1 - A_Cst",
+        ] {
+            assert!(!is_prose(formula), "{formula}");
+        }
+        assert_eq!(quote_text("\\sqrt{\\deltab} )", &m), "√(Δ_b))");
+        assert_eq!(
+            quote_text("Then from \\rEq{p4f2} we", &m),
+            "Then from (p4f2) we"
+        );
+        assert_eq!(quote_html("x_1 and y", &m), "x₁ and y");
     }
 }

@@ -1,6 +1,7 @@
 //! Presentation: renderers of claim results. No computation happens here.
 
 pub mod evidence;
+mod findings;
 pub mod finite;
 pub mod glance;
 pub mod html;
@@ -37,6 +38,10 @@ pub struct Provenance {
     pub date: Option<String>,
     /// The command that makes this report.
     pub command: String,
+    /// Whether the transcription was verified against the paper's LaTeX source, in one
+    /// sentence (empty when the caller says nothing).
+    #[serde(skip_serializing_if = "String::is_empty")]
+    pub transcription: String,
     /// The seeds each case sets.
     pub seeds: Vec<CaseSeeds>,
 }
@@ -359,111 +364,6 @@ pub fn solve_json(s: &crate::derivations::solver::Solved) -> serde_json::Value {
     })
 }
 
-/// `orthocheck solve` as text.
-pub fn solve_text(s: &crate::derivations::solver::Solved) -> String {
-    use crate::numfmt::sig;
-    let o = &s.output;
-    let mut t = format!("method: {} ({})\n", o.method, s.why);
-    if let Some(d) = &o.degenerate {
-        let _ = writeln!(t, "degenerate: {d}");
-    }
-    if let Some(c) = o.condition {
-        let _ = writeln!(t, "condition number: {}", sig(c));
-    }
-    if o.solutions.is_empty() {
-        t.push_str("no solution\n");
-    }
-    if let Some(v) = &s.validation {
-        let _ = writeln!(
-            t,
-            "c² by independent routes (exact elimination over ℚ + Sturm, closed form, companion matrix): largest relative disagreement {}; same number of real roots: {}",
-            crate::numfmt::below(v.max_relative_disagreement),
-            v.same_count
-        );
-    }
-    for (i, (sol, st)) in o.solutions.iter().zip(&s.structures).enumerate() {
-        let edges: Vec<String> = o
-            .edges
-            .iter()
-            .zip(sol.squared_edges.iter().zip(&sol.imaginary))
-            .map(|(n, (re, im))| {
-                if *im == 0.0 {
-                    format!("{n}²={}", sig(*re))
-                } else {
-                    format!("{n}²={}{:+}i", sig(*re), sig(*im))
-                }
-            })
-            .collect();
-        let _ = writeln!(
-            t,
-            "solution {}: {}  [{}; residual {}]",
-            i + 1,
-            edges.join(" "),
-            sol.feasibility.reason(),
-            crate::numfmt::below(sol.residual)
-        );
-        if let Some(st) = st {
-            let pts: Vec<String> = st
-                .points
-                .iter()
-                .map(|p| crate::numfmt::sig_list(p))
-                .collect();
-            let _ = writeln!(
-                t,
-                "  body in frame 1: {}; {} structure-and-motion solutions reproject ({} with the mirror reversal)",
-                pts.join(" "),
-                st.motions,
-                2 * u128::from(st.motions)
-            );
-        }
-    }
-    t
-}
-
-/// `orthocheck noise` as text: one block per level and model.
-pub fn noise_text(case: &str, rows: &[crate::derivations::noise::LevelSummary]) -> String {
-    use crate::numfmt::sig;
-    let pct = |x: f64| format!("{}%", sig(100.0 * x));
-    let mut t = format!("noise study {case}: relative errors against the truth\n");
-    for r in rows {
-        let _ = writeln!(
-            t,
-            "\nε = {} ({}): {} trials, {} without a usable real solution",
-            sig(r.level),
-            r.model,
-            r.trials,
-            r.failures
-        );
-        let _ = writeln!(
-            t,
-            "  {:<14}{}  {:>10}",
-            "metric",
-            r.metrics
-                .first()
-                .map(|m| m
-                    .quantiles
-                    .iter()
-                    .map(|q| format!("{:>10}", format!("{}%", sig(100.0 * q.q))))
-                    .collect::<String>())
-                .unwrap_or_default(),
-            "mean"
-        );
-        for m in &r.metrics {
-            let _ = writeln!(
-                t,
-                "  {:<14}{}  {:>10}",
-                m.metric,
-                m.quantiles
-                    .iter()
-                    .map(|q| format!("{:>10}", pct(q.value)))
-                    .collect::<String>(),
-                pct(m.mean)
-            );
-        }
-    }
-    t
-}
-
 /// The comment block `orthocheck synth` writes above the tracks: how to make them again, and
 /// the truth to compare a solve with.
 pub fn synth_header(scene: &crate::model::Scene, seed: u64, noise: Option<f64>) -> String {
@@ -565,33 +465,6 @@ pub fn errata_markdown(claims: &[ClaimResult]) -> String {
             let _ = writeln!(s, "- corrected: {corr}");
         }
         let _ = writeln!(s, "- found: {}", values::computed_text(c));
-    }
-    s
-}
-
-/// `orthocheck identify` as text.
-pub fn identify_text(r: &crate::derivations::identity::Identified) -> String {
-    use crate::numfmt::sig;
-    let mut s = format!("method: {:?} ({} assignments tried)\n", r.method, r.tried);
-    if let Some(d) = &r.degenerate {
-        let _ = writeln!(s, "degenerate: {d}");
-    }
-    for (i, a) in r.assignments.iter().enumerate() {
-        let _ = writeln!(
-            s,
-            "{:>3}. frame-2 indices {:?}  residual {}",
-            i + 1,
-            a.frame2_indices,
-            sig(a.residual)
-        );
-    }
-    if let Some(f) = &r.full {
-        let _ = writeln!(
-            s,
-            "best full correspondence: {:?}  (RMS epipolar distance {} of the image size)",
-            f.frame2_indices,
-            sig(f.residual)
-        );
     }
     s
 }

@@ -102,6 +102,11 @@ figure { margin: .8rem 0; max-width: 100%; } figcaption { color: #444; font-size
 .filter a { margin-right: .4rem; white-space: nowrap; }
 .vlist { display: none; border: 1px solid #ccc; border-radius: 6px; padding: .4rem .9rem; margin: .6rem 0; }
 .vlist:target { display: block; }
+#findings { border: 1px solid #ccc; border-radius: 6px; padding: .2rem 1rem .6rem; margin: 1rem 0; background: #fafafa; }
+#findings p { margin: .5rem 0 .2rem; } ul.findings { margin: .1rem 0 .4rem; padding-left: 1.3rem; } ul.findings li { margin: .15rem 0; }
+p.defect { margin: .3rem 0; padding: .3rem .6rem; border-left: 4px solid #b3261e; background: #fdf3f2; }
+mark { background: #ffe08a; color: inherit; padding: 0 .1em; border-radius: 2px; }
+dl.verdicts dd { margin-bottom: .25rem; }
 #search { font: inherit; padding: .25rem .5rem; width: 100%; max-width: 24rem; margin: .5rem 0; }
 @media (max-width: 40rem) {
   body { padding: .5rem .8rem; }

@@ -28,6 +28,7 @@ pub fn value_text(v: &Value) -> String {
         },
         Value::Flag { value } => if *value { "yes" } else { "no" }.into(),
         Value::Formula { text } | Value::Label { text } => text.clone(),
+        Value::Quote { text } => super::math::prose_text(text),
     }
 }
 
@@ -46,6 +47,13 @@ pub fn quantities_text(qs: &[Quantity]) -> String {
 
 /// A tolerance as text: the bound, then where it comes from.
 pub fn tolerance_text(t: &Tolerance) -> String {
+    if let ToleranceSource::FalsePass { log10 } = &t.source {
+        return format!(
+            "exact: a false identity would pass this check with probability below 10^{} ({})",
+            false_pass_exponent(log10.0),
+            t.how
+        );
+    }
     let bound = t
         .bound
         .map_or("exact".to_string(), |b| format!("± {}", sig(b.0)));
@@ -54,6 +62,7 @@ pub fn tolerance_text(t: &Tolerance) -> String {
         ToleranceSource::PrintedPrecision => "printed precision".to_string(),
         ToleranceSource::Propagated => "propagated rounding".to_string(),
         ToleranceSource::ErrorBound => "derived floating-point error bound".to_string(),
+        ToleranceSource::FalsePass { .. } => "random-point screen".to_string(),
         ToleranceSource::MonteCarlo { percentile, trials } => format!(
             "Monte Carlo percentile {} of {trials} trials",
             sig(percentile.0)
@@ -64,6 +73,12 @@ pub fn tolerance_text(t: &Tolerance) -> String {
     } else {
         format!("{bound} ({source}: {})", t.how)
     }
+}
+
+/// The exponent of a false-pass bound 10^x, rounded up (a weaker bound than the one derived,
+/// never a stronger): e.g. −307.
+fn false_pass_exponent(log10: f64) -> String {
+    sig(log10.ceil()).replace('-', "−")
 }
 
 /// A verdict's power in one short phrase.
@@ -85,13 +100,15 @@ pub fn power_text(p: &Power) -> String {
 /// A verdict's power in a few words (the full phrase is [`power_text`]).
 pub fn power_phrase(p: &Power) -> String {
     let head = match (p.kind, &p.accepts) {
-        (PowerKind::Interval, Some(v)) => format!("accepts only {}", value_text(v)),
-        (PowerKind::Interval, None) => "accepts only the printed value".to_string(),
-        (PowerKind::Mutant, _) => "rejects a mutant".to_string(),
-        (PowerKind::None, _) => "no negative control".to_string(),
+        (PowerKind::Interval, Some(v)) => {
+            format!("would have rejected any value outside {}", value_text(v))
+        }
+        (PowerKind::Interval, None) => "would have rejected any other value".to_string(),
+        (PowerKind::Mutant, _) => "would have rejected a changed formula or target".to_string(),
+        (PowerKind::None, _) => "nothing it would have rejected".to_string(),
     };
     if p.weak {
-        format!("{head} (weak)")
+        format!("{head} (weak: values the paper would call wrong pass too)")
     } else {
         head
     }

@@ -63,6 +63,32 @@ pub struct NoiseRun {
     pub model: Option<ModelChoice>,
 }
 
+/// A case's noise study and its levels: a noise case's own, or §4's printed runs (the edge
+/// table's body under random motions, as the report runs them).
+fn study_of_case(case: &Case) -> Result<(Study, Vec<f64>), RequestError> {
+    match &case.check {
+        CaseCheck::NoiseStudy(nc) => Ok((
+            crate::check::study_of(nc).map_err(RequestError::Study)?,
+            nc.levels.iter().map(|l| l.level.to_f64()).collect(),
+        )),
+        CaseCheck::P4f3Example(p) => {
+            let squares: Vec<f64> = p.body.squares.iter().map(|s| s.to_f64()).collect();
+            let body =
+                crate::studies::noise::body_of(&[], &squares).map_err(RequestError::Study)?;
+            let study = Study {
+                solver: crate::model::StudySolver::P4f3,
+                body,
+                frames: 3,
+                trials: p.trials,
+                seed: p.seed,
+                motions: None,
+            };
+            Ok((study, p.noise.iter().map(|l| l.level.to_f64()).collect()))
+        }
+        _ => Err(RequestError::NotNoiseStudy),
+    }
+}
+
 impl NoiseRequest {
     /// Find the case and apply the overrides; checks in order: the case, its kind, its
     /// study, the levels.
@@ -71,14 +97,11 @@ impl NoiseRequest {
             .iter()
             .find(|c| c.id == self.case)
             .ok_or(RequestError::NoCase)?;
-        let CaseCheck::NoiseStudy(nc) = &case.check else {
-            return Err(RequestError::NotNoiseStudy);
-        };
-        let mut study = crate::check::study_of(nc).map_err(RequestError::Study)?;
+        let (mut study, case_levels) = study_of_case(case)?;
         study.trials = self.trials.unwrap_or(study.trials);
         study.seed = self.seed.unwrap_or(study.seed);
         let levels: Vec<f64> = if self.levels.is_empty() {
-            nc.levels.iter().map(|l| l.level.to_f64()).collect()
+            case_levels
         } else {
             self.levels.clone()
         };

@@ -1,22 +1,54 @@
 //! The paper, run once per test binary: every test that needs claim results reads them from
 //! here, so one `cargo test` reproduces the paper once per binary instead of once per test.
+//!
+//! The paper's LaTeX source is optional: `ORTHOCHECK_PAPER` names it. Tests that need it run
+//! when it is named and print one line when they skip; with `ORTHOCHECK_REQUIRE_PAPER=1`
+//! (as `.ci/run` sets) a missing source fails them instead.
 
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use std::sync::OnceLock;
 
-use orthocheck::cases::{self, Case};
-use orthocheck::report::Report;
+use orthocheck::cases::{self, Case, CaseOrigin, PaperInputs};
+use orthocheck::report::{Provenance, Report};
 
 /// The folder of the paper's cases.
 pub const CASES_DIR: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/paper_cases");
 
+/// The paper's LaTeX source, when `ORTHOCHECK_PAPER` names one.
+pub fn paper_source() -> Option<PathBuf> {
+    let path = cases::source_path(None);
+    let required = std::env::var("ORTHOCHECK_REQUIRE_PAPER").is_ok_and(|v| v == "1");
+    assert!(
+        path.is_some() || !required,
+        "ORTHOCHECK_REQUIRE_PAPER=1 but {} names no LaTeX source",
+        cases::PAPER_ENV
+    );
+    path
+}
+
+/// Say that `test` was skipped for want of the source (one line, on standard error).
+pub fn skipped_without_source(test: &str) {
+    eprintln!(
+        "SKIPPED {test}: the paper's LaTeX source is not given ({} names none)",
+        cases::PAPER_ENV
+    );
+}
+
+/// The cases, the paper file and the verification, read once (with the source when given).
+pub fn inputs() -> Result<&'static PaperInputs, String> {
+    static INPUTS: OnceLock<Result<PaperInputs, String>> = OnceLock::new();
+    INPUTS
+        .get_or_init(|| {
+            let origin = CaseOrigin::Folder(Path::new(CASES_DIR).to_path_buf());
+            cases::load_inputs(&origin, paper_source().as_deref()).map_err(|e| e.to_string())
+        })
+        .as_ref()
+        .map_err(Clone::clone)
+}
+
 /// Every paper case, loaded once.
 pub fn cases() -> Result<&'static [Case], String> {
-    static CASES: OnceLock<Result<Vec<Case>, String>> = OnceLock::new();
-    CASES
-        .get_or_init(|| cases::load_all(Path::new(CASES_DIR)).map_err(|e| e.to_string()))
-        .as_deref()
-        .map_err(Clone::clone)
+    inputs().map(|i| i.cases.as_slice())
 }
 
 /// The whole report (every case's claim results and figures), computed once; a failure names
@@ -25,6 +57,7 @@ pub fn report() -> Result<&'static Report, String> {
     static REPORT: OnceLock<Result<Report, String>> = OnceLock::new();
     REPORT
         .get_or_init(|| {
+            let inputs = inputs()?;
             let all = cases()?;
             // the run reports each finished case: the one after the last reported failed
             let done = std::sync::Mutex::new(0usize);
@@ -33,11 +66,17 @@ pub fn report() -> Result<&'static Report, String> {
                     *d = i + 1;
                 }
             };
-            Report::run(all, Default::default(), &progress).map_err(|e| {
-                let at = done.lock().map(|d| *d).unwrap_or(0);
-                let case = all.get(at).map_or("?", |c| c.id.as_str());
-                format!("the paper run stopped at case {case}: {e}")
-            })
+            let provenance = Provenance {
+                transcription: inputs.transcription_sentence(),
+                ..Provenance::default()
+            };
+            Report::run(all, provenance, &progress)
+                .map(|r| r.with_paper(inputs.paper.clone()))
+                .map_err(|e| {
+                    let at = done.lock().map(|d| *d).unwrap_or(0);
+                    let case = all.get(at).map_or("?", |c| c.id.as_str());
+                    format!("the paper run stopped at case {case}: {e}")
+                })
         })
         .as_ref()
         .map_err(Clone::clone)

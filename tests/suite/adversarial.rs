@@ -64,10 +64,9 @@ fn run_one(path: &Path) -> Result<bool, String> {
             // a solver's answer is judged by the output guard: a non-finite number may never
             // be printed, so it must be caught before it reaches a user
             if let Ok(s) = solve_tracks(&t, Method::Auto) {
-                let text = orthocheck::report::solve_text(&s);
-                if let Some(tok) = non_finite_token(&text) {
+                if let Some(n) = orthocheck::report::finite::first_non_finite(&s) {
                     eprintln!(
-                        "{}: solver printed `{tok}` (the output guard refuses it: exit 1)",
+                        "{}: the solver's answer holds {n} (the output guard refuses it: exit 1)",
                         path.display()
                     );
                 }

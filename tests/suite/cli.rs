@@ -102,6 +102,7 @@ fn report_writes_both_files_deterministically() {
             revision: field("revision"),
             date: field("date"),
             command: field("command").unwrap_or_default(),
+            transcription: field("transcription").unwrap_or_default(),
             seeds: here.provenance.seeds.clone(),
         },
     )
@@ -189,6 +190,10 @@ fn a_missing_cases_folder_exits_2() {
     assert!(String::from_utf8_lossy(&out.stderr).contains("no-such-folder"));
 }
 
+/// What `solve` adds to the error of a tracks file that would read as tracks with gaps.
+const GAPS_POINTER: &str =
+    "; solve needs every point in every frame; `orthocheck reconstruct` reads tracks with gaps";
+
 #[test]
 fn every_bad_tracks_file_exits_2_with_its_error() {
     let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/bad_tracks");
@@ -209,7 +214,10 @@ fn every_bad_tracks_file_exits_2_with_its_error() {
         let out = orthocheck(&["solve", "--input", &rel]);
         assert_eq!(out.status.code(), Some(2), "{rel}");
         let err = String::from_utf8_lossy(&out.stderr);
-        assert_eq!(err.trim_end(), format!("error: {rel}{expected}"), "{rel}");
+        // a file that would read as tracks with gaps also points to `reconstruct`
+        let err = err.trim_end();
+        let err = err.strip_suffix(GAPS_POINTER).unwrap_or(err);
+        assert_eq!(err, format!("error: {rel}{expected}"), "{rel}");
         checked += 1;
     }
     assert!(checked >= 10, "only {checked} bad tracks files");
@@ -321,6 +329,376 @@ fn solve_auto_says_why_and_refuses_what_it_cannot_do() {
         text.starts_with("method: p3f3 (3 points in 3 frames"),
         "{text}"
     );
+}
+
+/// A complex root prints with the sign of its imaginary part (`re+imi`, `re-imi`, the minus
+/// the numbers print), and the text says what the JSON says: a conjugate pair shows both.
+#[test]
+fn solve_prints_complex_roots_with_their_sign() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("noisy.yaml");
+    let f = file.to_str().unwrap();
+    // seeded noisy views that no rigid body gives: no real root, a conjugate pair
+    let out = orthocheck(&[
+        "synth", "--points", "3", "--frames", "3", "--seed", "3", "--noise", "0.05", "--out", f,
+    ]);
+    assert_eq!(out.status.code(), Some(0));
+    let v = json(&orthocheck(&["solve", "--input", f, "--json"]));
+    let text = String::from_utf8(orthocheck(&["solve", "--input", f]).stdout).unwrap();
+    let lines: Vec<&str> = text
+        .lines()
+        .filter(|l| l.starts_with("solution "))
+        .collect();
+    let solutions = v["solutions"].as_array().unwrap();
+    assert_eq!(lines.len(), solutions.len(), "{text}");
+    // "3.07053+0.169191i" → (3.07053, 0.169191); the sign is the last + or - not of an exponent
+    let complex = |s: &str| -> (f64, f64) {
+        let body = s
+            .strip_suffix('i')
+            .unwrap_or_else(|| panic!("{s} is not complex"));
+        let at = body
+            .char_indices()
+            .rev()
+            .find(|&(k, c)| k > 0 && (c == '+' || c == '-') && !body[..k].ends_with('e'))
+            .map(|(k, _)| k)
+            .unwrap_or_else(|| panic!("{s} has no sign between its parts"));
+        (body[..at].parse().unwrap(), body[at..].parse().unwrap())
+    };
+    let close = |a: f64, b: f64| (a - b).abs() <= 1e-5 * b.abs().max(1e-12);
+    let (mut plus, mut minus) = (0, 0);
+    for (line, sol) in lines.iter().zip(solutions) {
+        let edges = line
+            .split_once(": ")
+            .unwrap()
+            .1
+            .split("  [")
+            .next()
+            .unwrap();
+        for token in edges.split_whitespace() {
+            let (name, value) = token.split_once("²=").unwrap();
+            let re = sol["squared_edges"][name].as_f64().unwrap();
+            match sol["imaginary"][name].as_f64().filter(|im| *im != 0.0) {
+                Some(im) => {
+                    let (tr, ti) = complex(value);
+                    assert!(
+                        close(tr, re) && close(ti, im),
+                        "{token} against {re}{im:+}i"
+                    );
+                    if im > 0.0 {
+                        plus += 1;
+                    } else {
+                        minus += 1;
+                    }
+                }
+                None => assert!(close(value.parse().unwrap(), re), "{token}"),
+            }
+        }
+    }
+    assert!(
+        plus > 0 && minus > 0,
+        "a conjugate pair has both signs: {text}"
+    );
+}
+
+/// `solve` needs every point in every frame: a file with a gap (`null` in YAML, a missing
+/// row in CSV) is refused (exit 2) with the reader's location and a pointer to
+/// `reconstruct`, which reads gaps; a file that is simply wrong gets no such pointer.
+#[test]
+fn solve_points_tracks_with_gaps_to_reconstruct() {
+    let dir = tempfile::tempdir().unwrap();
+    let yaml = dir.path().join("gap.yaml");
+    std::fs::write(
+        &yaml,
+        "frames:\n  - [[0, 0], [1, 0], [0, 1]]\n  - [[0, 0], null, [0, 1]]\n  - [[0.5, 0], [1, 0.25], [0, 1]]\n",
+    )
+    .unwrap();
+    let csv = dir.path().join("gap.csv");
+    std::fs::write(
+        &csv,
+        "frame,point,x,y\n1,P,0,0\n1,Q,1,0\n1,R,0,1\n2,P,0,0\n2,Q,1,0.5\n3,P,0,0\n3,Q,1,0\n3,R,0.3,1\n",
+    )
+    .unwrap();
+    let missing = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/bad_tracks/missing_point.csv");
+    for (file, what) in [
+        (
+            yaml,
+            "gap.yaml:3:14: field `frames[1][1]`: point `Q` is missing from frame 2 (`null`)",
+        ),
+        (
+            csv,
+            "gap.csv:6: field `point`: frame `2` has 2 points, but frame `1` has 3",
+        ),
+        (
+            missing,
+            "missing_point.csv:8: field `point`: frame `2` lacks point `R`",
+        ),
+    ] {
+        let out = orthocheck(&["solve", "--input", file.to_str().unwrap()]);
+        assert_eq!(out.status.code(), Some(2));
+        assert!(out.stdout.is_empty());
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(
+            err.trim_end().ends_with(&format!("{what}{GAPS_POINTER}")),
+            "{err}"
+        );
+    }
+    // too few entries is a mistake, not a gap (a gap is written `null`)
+    let out = orthocheck(&["solve", "--input", "tests/bad_tracks/ragged.yaml"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(!String::from_utf8_lossy(&out.stderr).contains("reconstruct"));
+}
+
+/// Collinear points (three or four, in every frame) are one degenerate answer: exit 2, a
+/// message naming the degeneracy, nothing on standard output, in text and JSON alike.
+#[test]
+fn collinear_input_is_one_degenerate_error() {
+    let dir = tempfile::tempdir().unwrap();
+    for (name, frames) in [
+        (
+            "three.yaml",
+            "  - [[0, 0], [1, 1], [3, 3]]\n  - [[0, 0], [2, 0.5], [5, 1.25]]\n  - [[1, 1], [1, 2], [1, 4.5]]\n",
+        ),
+        (
+            "four.yaml",
+            "  - [[0, 0], [1, 1], [3, 3], [4, 4]]\n  - [[0, 0], [2, 0.5], [5, 1.25], [7, 1.75]]\n  - [[1, 1], [1, 2], [1, 4.5], [1, 7]]\n",
+        ),
+    ] {
+        let file = dir.path().join(name);
+        std::fs::write(&file, format!("frames:\n{frames}")).unwrap();
+        for as_json in [false, true] {
+            let mut args = vec!["solve", "--input", file.to_str().unwrap()];
+            if as_json {
+                args.push("--json");
+            }
+            let out = orthocheck(&args);
+            let err = String::from_utf8_lossy(&out.stderr);
+            assert_eq!(out.status.code(), Some(2), "{name}: {err}");
+            assert!(out.stdout.is_empty(), "{name}: nothing is printed");
+            assert!(
+                err.contains(name)
+                    && err.contains("degenerate input, not solved: collinear points")
+                    && err.lines().count() == 1,
+                "{err}"
+            );
+        }
+    }
+}
+
+/// `synth --out` onto an existing file refuses (exit 2), says it would overwrite the file,
+/// and leaves it and its folder as they were.
+#[test]
+fn synth_refuses_to_overwrite_and_says_so() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("mine.yaml");
+    std::fs::write(&file, "my own notes\n").unwrap();
+    let out = orthocheck(&[
+        "synth",
+        "--points",
+        "3",
+        "--frames",
+        "3",
+        "--seed",
+        "1",
+        "--out",
+        file.to_str().unwrap(),
+    ]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(out.stdout.is_empty());
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("mine.yaml")
+            && err.contains("would overwrite")
+            && !err.contains("cannot read"),
+        "{err}"
+    );
+    assert_eq!(std::fs::read_to_string(&file).unwrap(), "my own notes\n");
+    // no temporary file left beside it
+    assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 1);
+}
+
+/// `synth --shuffle` lists the points of frame 2 in a seeded random order and names that order
+/// in its header; `identify` reads the file (YAML and CSV), finds the truth, and names the
+/// points it matches (`#k` for the k-th listed in YAML, the CSV rows' labels otherwise).
+#[test]
+fn synth_shuffle_feeds_identify_which_names_the_points() {
+    let dir = tempfile::tempdir().unwrap();
+    for format in ["yaml", "csv"] {
+        let file = dir.path().join(format!("shuffled.{format}"));
+        let f = file.to_str().unwrap();
+        let args = [
+            "synth",
+            "--points",
+            "6",
+            "--frames",
+            "2",
+            "--seed",
+            "5",
+            "--shuffle",
+            "--format",
+            format,
+            "--out",
+            f,
+        ];
+        let out = orthocheck(&args);
+        assert_eq!(
+            out.status.code(),
+            Some(0),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let written = std::fs::read_to_string(&file).unwrap();
+        assert!(
+            written.lines().next().unwrap().ends_with(" --shuffle"),
+            "{written}"
+        );
+        let listed: Vec<&str> = written
+            .lines()
+            .find_map(|l| l.strip_prefix("# frame 2 lists: "))
+            .unwrap()
+            .split_whitespace()
+            .collect();
+        let out = orthocheck(&["identify", "--input", f, "--json"]);
+        assert_eq!(
+            out.status.code(),
+            Some(0),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let v = json(&out);
+        let names: Vec<&str> = v["frame1_points"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|n| n.as_str().unwrap())
+            .collect();
+        let mut sorted = (names.clone(), listed.clone());
+        sorted.0.sort_unstable();
+        sorted.1.sort_unstable();
+        assert_eq!(sorted.0, sorted.1, "frame 2 lists the same points");
+        assert_ne!(names, listed, "seed 5 moves some point");
+        // frame-1 point i is the frame-2 point listed at the position of its name
+        let truth: Vec<usize> = names
+            .iter()
+            .map(|n| listed.iter().position(|m| m == n).unwrap())
+            .collect();
+        let full: Vec<usize> = v["full"]["frame2_indices"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|x| x.as_u64().unwrap() as usize)
+            .collect();
+        assert_eq!(full, truth);
+        let label = |k: usize| match format {
+            "csv" => format!("X{}", k + 1),
+            _ => format!("#{}", k + 1),
+        };
+        let matches = v["matches"].as_array().unwrap();
+        assert_eq!(matches.len(), names.len());
+        for (m, (n, &k)) in matches.iter().zip(names.iter().zip(&truth)) {
+            assert_eq!(m["frame1"], *n);
+            assert_eq!(m["frame2"], label(k).as_str());
+        }
+        let text = String::from_utf8(orthocheck(&["identify", "--input", f]).stdout).unwrap();
+        let pairs: Vec<String> = names
+            .iter()
+            .zip(&truth)
+            .map(|(n, &k)| format!("{n}→{}", label(k)))
+            .collect();
+        assert!(text.contains(&pairs.join(" ")), "{text}");
+        assert!(text.contains("residual"), "{text}");
+    }
+    // nothing to shuffle in one frame
+    let out = orthocheck(&[
+        "synth",
+        "--points",
+        "4",
+        "--frames",
+        "1",
+        "--seed",
+        "1",
+        "--shuffle",
+    ]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("--shuffle"));
+}
+
+/// `noise` prints its tables in fixed-width columns two spaces apart, and an id it does not
+/// take (unknown, or a case that is no noise study) lists the ids it does take.
+#[test]
+fn noise_columns_stand_apart_and_bad_ids_list_the_good_ones() {
+    let out = orthocheck(&[
+        "noise",
+        "--case",
+        "ex2-noise",
+        "--levels",
+        "0.01",
+        "--trials",
+        "300",
+        "--seed",
+        "3",
+    ]);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = String::from_utf8(out.stdout).unwrap();
+    let mut lines = text.lines().peekable();
+    let mut tables = 0;
+    while let Some(header) = lines.next() {
+        if !header.trim_start().starts_with("metric") {
+            continue;
+        }
+        tables += 1;
+        let width = header.chars().count();
+        let cells = header.split_whitespace().count();
+        assert_eq!(cells, 8, "metric, six quantiles, mean: {header}");
+        let mut rows = vec![header];
+        while let Some(r) = lines.next_if(|r| !r.trim().is_empty()) {
+            rows.push(r);
+        }
+        assert_eq!(rows.len(), 5, "a header and four metrics: {text}");
+        for r in rows {
+            assert_eq!(r.chars().count(), width, "fixed-width columns: {text}");
+            assert_eq!(r.split_whitespace().count(), cells, "{r}");
+            let apart = r.split("  ").filter(|c| !c.trim().is_empty()).count();
+            assert_eq!(apart, cells, "every cell two spaces from the next: {r}");
+        }
+    }
+    assert_eq!(tables, 2, "one table per noise model: {text}");
+    for (id, also) in [
+        ("no-such-study", "no case `no-such-study`"),
+        ("twofold-squared", "has no noise runs"),
+    ] {
+        let out = orthocheck(&["noise", "--case", id]);
+        assert_eq!(out.status.code(), Some(2));
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(
+            err.contains(also)
+                && err.contains("ex2-noise")
+                && err.contains("ex3-noise")
+                && err.contains("ex4-four-points"),
+            "{err}"
+        );
+    }
+    // §4's printed runs are rerun too
+    let out = orthocheck(&[
+        "noise",
+        "--case",
+        "ex4-four-points",
+        "--levels",
+        "0.001",
+        "--trials",
+        "50",
+    ]);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(String::from_utf8_lossy(&out.stdout).contains("ε = 0.001"));
 }
 
 #[test]

@@ -3,7 +3,7 @@ use std::collections::BTreeSet;
 use crate::common;
 
 /// The claim inventory: its table's first column lists every claim id the report must decide.
-const CLAIMS_MD: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../shared/paper/CLAIMS.md");
+const CLAIMS_MD: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/paper_cases/claims.md");
 
 /// Claims the report decides beyond the inventory, in the same table form.
 const ADDITIONAL_MD: &str = concat!(
@@ -24,12 +24,8 @@ fn claim_ids() -> BTreeSet<String> {
 
 /// The ids of CLAIMS.md alone.
 fn inventory_claim_ids() -> BTreeSet<String> {
-    let text = std::fs::read_to_string(CLAIMS_MD).unwrap_or_else(|e| {
-        panic!(
-            "cannot read the claim inventory {CLAIMS_MD} ({e}): the crate's tests need the \
-             paper's shared/ folder beside the repository"
-        )
-    });
+    let text = std::fs::read_to_string(CLAIMS_MD)
+        .unwrap_or_else(|e| panic!("cannot read the claim inventory {CLAIMS_MD} ({e})"));
     let ids = inventory_ids(&text);
     assert!(
         ids.len() >= 40,

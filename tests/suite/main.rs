@@ -26,3 +26,6 @@ mod renderers;
 mod sfm;
 /// Property tests of the solvers on seeded random scenes, generic and degenerate.
 mod solver_props;
+/// Every formula of the paper's cases, typeset: no script swallows a symbol, every symbol
+/// reaches the reader in its order; eq. p3f3sqr reads 2a²b².
+mod typesetting;

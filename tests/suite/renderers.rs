@@ -94,6 +94,7 @@ fn fixture_report() -> Report {
         revision: Some("0123456789ab".into()),
         date: Some("2026-11-22".into()),
         command: "cargo run --release -- report".into(),
+        transcription: orthocheck::cases::unverified_sentence(),
         seeds: Vec::new(),
     };
     Report::with(claims(), vec![fixture_figure()], provenance).with_paper(paper())
@@ -297,35 +298,35 @@ fn every_badge_and_series_colour_passes_wcag_aa() {
 }
 
 /// The section titles and macro definitions of `paper_cases/paper.yml` are the LaTeX
-/// source's own.
+/// source's own, and every quote's lines lie within it (`cases::verify`, run by the shared
+/// inputs when the source is given).
 #[test]
 fn the_paper_file_is_true_to_the_source() {
-    let path = concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/../shared/paper/000_3d77cc3ad4ea04d3.txt"
-    );
-    let Ok(source) = std::fs::read_to_string(path) else {
-        eprintln!("SKIPPED: the LaTeX source {path} is not here");
+    let inputs = crate::common::inputs().unwrap();
+    let Some(v) = &inputs.verification else {
+        crate::common::skipped_without_source("the_paper_file_is_true_to_the_source");
         return;
     };
-    let lines: Vec<&str> = source.lines().collect();
-    let p = paper();
-    assert!(p.sections.len() >= 14, "{} sections", p.sections.len());
-    for s in &p.sections {
-        let line = lines[s.line as usize - 1];
-        assert!(
-            line.contains("section") && line.contains(&s.title),
-            "line {}: {line:?} is not the section {:?}",
-            s.line,
-            s.title
-        );
-    }
-    let squash = |t: &str| t.split_whitespace().collect::<String>();
-    let source = squash(&source);
-    let macros = orthocheck::report::math::Macros::parse(&p.macros);
-    assert!(macros.len() >= 20, "{} macros", macros.len());
-    for def in p.macros.split("\\newcommand").skip(1) {
-        let def = squash(&format!("\\newcommand{def}"));
-        assert!(source.contains(&def), "not in the source: {def}");
-    }
+    assert!(v.sections >= 14, "{} sections", v.sections);
+    assert!(v.macros >= 20, "{} macros", v.macros);
+    // every erratum's quote is verbatim (the loader refuses it otherwise); most others too
+    assert!(v.quotes >= 150 && v.verbatim * 2 > v.quotes, "{v:?}");
+    let macros = orthocheck::report::math::Macros::parse(&inputs.paper.macros);
+    assert_eq!(macros.len(), v.macros);
+}
+
+/// A source with another hash is refused, naming both hashes.
+#[test]
+fn another_source_is_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let fake = dir.path().join("paper.tex");
+    std::fs::write(&fake, "\\section{Introduction}\n").unwrap();
+    let origin = orthocheck::cases::CaseOrigin::Embedded;
+    let e = orthocheck::cases::load_inputs(&origin, Some(&fake))
+        .unwrap_err()
+        .to_string();
+    assert!(
+        e.contains("not the paper's source") && e.contains("SHA-256"),
+        "{e}"
+    );
 }

@@ -84,6 +84,14 @@ fn ranking_result(
         .map(|x| x.0)
         .collect();
     let epi_first = r.by_epipolar.first().map(|x| x.0);
+    // an assignment without an admissible c has no line, so no distance (not an infinite one)
+    let finite_distances: Vec<f64> = r
+        .by_paper
+        .iter()
+        .map(|x| x.1)
+        .filter(|d| d.is_finite())
+        .collect();
+    let no_line = r.by_paper.len() - finite_distances.len();
     b.claim(&case.correct)
         .suffix("ranking")
         .printed("the assignment that puts T₂ on its line", Value::label(format!("{truth:?}")))
@@ -92,7 +100,8 @@ fn ranking_result(
         .tolerance(tolerance(r))
         .power(Power::mutant(runner > r.true_bound, "every wrong assignment is rejected by the same bound"))
         .method("every assignment of frame 2 (re-centred at its R) through the paper's procedure at census_c_factor × its smallest admissible c, and through the affine epipolar constraint with the coordinates' rounding (the body is planar: equal scale is met inside a two-dimensional null space)")
-        .detail("by the paper's distance", Value::reals(&r.by_paper.iter().map(|x| x.1).collect::<Vec<_>>()))
+        .detail("by the paper's distance", Value::reals(&finite_distances))
+        .detail("assignments with no real line (no admissible c: the paper's distance does not exist)", Value::count_of(no_line, r.by_paper.len()))
         .detail("by the epipolar residual", Value::reals(&r.by_epipolar.iter().map(|x| x.1).collect::<Vec<_>>()))
         .verdict(if within == [*truth] && epi_first == Some(*truth) { Verdict::Reproduced } else { Verdict::Contradicted })
 }
