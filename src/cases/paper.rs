@@ -28,6 +28,9 @@ pub struct Paper {
     /// contents).
     #[serde(default)]
     pub sections: Vec<SectionTitle>,
+    /// How the report names the paper's `\label` names ("zweiframeseins" → "Fig. 3").
+    #[serde(default, skip_serializing_if = "std::collections::BTreeMap::is_empty")]
+    pub labels: std::collections::BTreeMap<String, String>,
     /// The paper's own `\newcommand` definitions, verbatim (the report expands them to show
     /// printed formulas readably).
     #[serde(default, skip_serializing_if = "String::is_empty")]

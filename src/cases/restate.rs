@@ -20,7 +20,7 @@ pub struct Restatement {
     pub claim: ClaimRef,
     /// The result id's suffix.
     pub id: String,
-    /// The CLAIMS.md ids it restates (every result of each counts); empty for a statement
+    /// The claim id (paper_cases/claims.md)s it restates (every result of each counts); empty for a statement
     /// outside the paper's scope.
     #[serde(default)]
     pub restates: Vec<String>,

@@ -17,11 +17,11 @@ pub struct Source {
     pub quote: String,
 }
 
-/// One claim of CLAIMS.md as a case refers to it.
+/// One claim of the inventory (paper_cases/claims.md) as a case refers to it.
 #[derive(Clone, Debug, Deserialize, PartialEq)]
 #[serde(deny_unknown_fields)]
 pub struct ClaimRef {
-    /// The CLAIMS.md id.
+    /// The claim id (paper_cases/claims.md).
     pub claim: String,
     /// The paper section, when it differs from the case's (a case may span sections).
     #[serde(default)]

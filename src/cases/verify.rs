@@ -19,6 +19,8 @@ pub struct Verification {
     pub sections: usize,
     /// Macro definitions found verbatim.
     pub macros: usize,
+    /// Label names found as `\label`s.
+    pub labels: usize,
     /// Quotes of the cases (every `lines` with a `quote`).
     pub quotes: usize,
     /// Of those, the ones standing verbatim (white space aside) at their lines; the others
@@ -31,12 +33,13 @@ impl Verification {
     pub fn sentence(&self) -> String {
         format!(
             "The transcription was verified against the paper's LaTeX source (SHA-256 {}): \
-             {} section titles at their lines, {} macro definitions verbatim, and {} of the \
-             cases' {} quotes verbatim at their lines (the other {} transcribe formulas into \
-             plain notation; every line range lies within the source).",
+             {} section titles at their lines, {} macro definitions verbatim, {} label names, \
+             and {} of the cases' {} quotes verbatim at their lines (the other {} transcribe \
+             formulas into plain notation; every line range lies within the source).",
             &self.sha256[..12],
             self.sections,
             self.macros,
+            self.labels,
             self.verbatim,
             self.quotes,
             self.quotes - self.verbatim
@@ -89,6 +92,18 @@ pub fn verify(origin: &CaseOrigin, paper: &Paper, latex: &LatexSource) -> Result
             format!("not in {}: {d}", latex.path.display()),
         ));
     }
+    if let Some(l) = paper
+        .labels
+        .keys()
+        .find(|l| !whole.contains(&format!("\\label{{{l}}}")))
+    {
+        return Err(invalid(
+            &paper_text,
+            &paper_path,
+            &format!("labels.{l}"),
+            format!("`{l}` is not a \\label of {}", latex.path.display()),
+        ));
+    }
     let (mut quotes, mut verbatim) = (0, 0);
     for (path, text) in origin.case_texts()? {
         let tree: serde_json::Value = parse_yaml(&text, &path)?;
@@ -104,6 +119,7 @@ pub fn verify(origin: &CaseOrigin, paper: &Paper, latex: &LatexSource) -> Result
         sha256: latex.sha256.clone(),
         sections: paper.sections.len(),
         macros: defs.len(),
+        labels: paper.labels.len(),
         quotes,
         verbatim,
     })

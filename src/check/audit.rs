@@ -26,7 +26,7 @@ use crate::studies::points::PointCheck;
 pub struct AuditItem {
     /// The result id (`claim/suffix`).
     pub id: String,
-    /// The CLAIMS.md id.
+    /// The claim id (paper_cases/claims.md).
     pub claim: String,
     /// Where it is.
     #[serde(rename = "where")]

@@ -216,8 +216,10 @@ fn finding(b: &ResultBuilder, text: &SourceText, f: &Finding) -> Result<ClaimRes
         );
         for p in &f.also {
             r = r.detail(
-                &format!("lines {}", p.lines),
-                Value::label(format!("\"{}\": {}", p.quote, p.shows)),
+                // no ": " in the name: the evidence layout reads "model: statistic" names
+                // as a table
+                &format!("lines {} ({})", p.lines, p.shows.replace(": ", ", ")),
+                Value::quote(p.quote.clone()),
             );
         }
     }

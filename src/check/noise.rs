@@ -12,7 +12,7 @@ use crate::model::Body;
 use crate::studies::noise::{edge_medians, run_both, run_errors, run_study, SymbolDistances};
 use judge::{
     claim_of, decide, judge_bound, margin, metric_of, metric_phrase, power, Claim, Decision, Facts,
-    TYPICAL_BAND,
+    Judged, TYPICAL_BAND,
 };
 mod figure;
 mod judge;
@@ -36,6 +36,7 @@ pub(super) fn check(b: &ResultBuilder, case: &NoiseStudyCase) -> Result<Vec<Clai
         names: &default_edge_names(truth.len()),
         trials: case.trials,
         seed: case.seed,
+        setting: setting(truth.len(), case.frames),
     };
     for (i, (lv, res)) in case.levels.iter().zip(&results).enumerate() {
         // one claim quoted at several levels gets one result per level
@@ -120,6 +121,28 @@ pub(super) struct Context<'a> {
     pub trials: usize,
     /// Seed.
     pub seed: u64,
+    /// The scene in words, for the figures' titles ("three points, four frames").
+    pub setting: String,
+}
+
+/// The scene of a study in words: its points (from its `edges`, all pairs) and `frames`.
+fn setting(edges: usize, frames: usize) -> String {
+    let points = (2usize..).find(|&p| p * (p - 1) / 2 >= edges).unwrap_or(2);
+    format!(
+        "{} points, {} frames",
+        count_word(points),
+        count_word(frames)
+    )
+}
+
+/// A small count as a word, a larger one in digits.
+fn count_word(n: usize) -> String {
+    const WORDS: [&str; 11] = [
+        "no", "one", "two", "three", "four", "five", "six", "seven", "eight", "nine", "ten",
+    ];
+    WORDS
+        .get(n)
+        .map_or_else(|| n.to_string(), |w| (*w).to_string())
 }
 
 impl Context<'_> {
@@ -163,12 +186,13 @@ impl Context<'_> {
             run: run.as_ref(),
             dists: res,
         };
-        let result = self.main_result(b, lv, suffix(None), read_as, &facts, neighbour);
+        let judged = Judged::new(claim_of(lv), facts);
+        let result = self.main_result(b, lv, suffix(None), read_as, &judged, neighbour);
         b.figure(figure::figure(
-            &result.id,
+            &result,
+            &self.setting,
             lv,
-            res,
-            run.as_ref(),
+            &judged,
             (self.trials, self.seed),
         ));
         out.push(result);
@@ -218,18 +242,17 @@ impl Context<'_> {
         .verdict(Verdict::Erratum)
     }
 
-    /// The level's claim, decided by [`decide`].
+    /// The level's claim, as [`Judged`] (decided by [`decide`]).
     fn main_result(
         &self,
         b: &ResultBuilder,
         lv: &NoiseLevel,
         suffix: Option<String>,
         read_as: Symbols,
-        f: &Facts,
+        judged: &Judged,
         neighbour: Option<&[LevelResult]>,
     ) -> ClaimResult {
-        let claim = claim_of(lv);
-        let decision = decide(claim, f);
+        let (claim, decision, f) = (judged.claim, judged.decision, &judged.facts);
         let mut r = b.claim(&lv.claim).printed("ε", &lv.level);
         if let Some(s) = &suffix {
             r = r.suffix(s);
@@ -490,6 +513,7 @@ pub(super) fn check_runs_of_body(
         names: &default_edge_names(truth.len()),
         trials,
         seed,
+        setting: setting(truth.len(), random.frames),
     };
     let mut out = Vec::new();
     for (i, (lv, res)) in levels.iter().zip(&all).enumerate() {

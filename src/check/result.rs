@@ -509,9 +509,9 @@ impl Evidence {
 /// The outcome for one claim.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct ClaimResult {
-    /// Unique result id: the CLAIMS.md id, with a `/suffix` when one claim has several results.
+    /// Unique result id: the claim id (paper_cases/claims.md), with a `/suffix` when one claim has several results.
     pub id: String,
-    /// The CLAIMS.md id.
+    /// The claim id (paper_cases/claims.md).
     pub claim: String,
     /// The case it came from.
     pub case: String,

@@ -45,6 +45,17 @@ fn printed_points(case: &TwoFramesCase) -> ([Vector3<f64>; 5], [Vector3<f64>; 5]
     )
 }
 
+/// A triangle laid in its own plane: P at the origin, Q on the positive x axis, R above it,
+/// so that its drawing has its true side lengths.
+fn in_plane(t: &[Vector3<f64>; 3]) -> Vec<[f64; 2]> {
+    let (a, b) = (t[1] - t[0], t[2] - t[0]);
+    let Some(e1) = a.try_normalize(0.0) else {
+        return vec![[0.0, 0.0], [0.0, 0.0], [b.norm(), 0.0]];
+    };
+    let x = b.dot(&e1);
+    vec![[0.0, 0.0], [a.norm(), 0.0], [x, (b - e1 * x).norm()]]
+}
+
 fn figure(b: &ResultBuilder, case: &TwoFramesCase, pts: &[Vector3<f64>; 5], c: &Counterexample) {
     let tri = |q: Vector3<f64>, r: Vector3<f64>| [pts[0], q, r];
     let first = tri(pts[1], pts[2]);
@@ -61,25 +72,36 @@ fn figure(b: &ResultBuilder, case: &TwoFramesCase, pts: &[Vector3<f64>; 5], c: &
             l.labelled(&["P", "Q", "R"]).beneath()
         }
     };
+    let pair = |plain: Vec<[f64; 2]>, primed: Vec<[f64; 2]>| {
+        vec![
+            layer("PQR", Style::Computed, plain, false),
+            layer("PQ′R′", Style::Other, primed, true),
+        ]
+    };
+    let sides = |s: &[f64; 3]| {
+        s.iter()
+            .map(|x| crate::report::values::sig_digits(*x, 3))
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
     b.figure(Figure {
-            id: "fig-two-frames".into(),
-            claim: case.counterexample.claim.claim.clone(),
-            title: "§5.1: two triangles, the same two views".into(),
-            caption: "PQR and PQ′R′ (the printed coordinates) seen along u₁ (Q′ − Q), and PQR along u₂ with PQ′R′ along u₂′ (moved onto it by a rotation in the image plane): congruent images of triangles that are not congruent. PQR is drawn wide and pale beneath, PQ′R′ dashed on it; where they coincide, both names label the point.".into(),
-            panels: vec![
-                Plot::image(
-                    "view 1 (u₁)",
-                    vec![layer("PQR", Style::Computed, v1.0, false), layer("PQ′R′", Style::Other, v1.1, true)],
-                ),
-                Plot::image(
-                    "view 2 (PQR along u₂, PQ′R′ along u₂′)",
-                    vec![
-                        layer("PQR", Style::Computed, v2, false),
-                        layer("PQ′R′", Style::Other, v2p, true),
-                    ],
-                ),
-            ],
-        });
+        id: "fig-two-frames".into(),
+        claim: case.counterexample.claim.claim.clone(),
+        title: "§5.1: two triangles, the same two views".into(),
+        caption: format!(
+            "PQR and PQ′R′ (the printed coordinates) seen along u₁ (Q′ − Q), and PQR along u₂ with PQ′R′ along u₂′ (moved onto it by a rotation in the image plane): the images are congruent. The third panel lays each triangle in its own plane (P at the origin, PQ along the x axis): their true shapes differ, sides PQ, QR, RP {} against PQ′, Q′R′, R′P {}. PQR is drawn wide and pale beneath, PQ′R′ dashed on it; where they coincide, both names label the point.",
+            sides(&c.sides),
+            sides(&c.sides_prime)
+        ),
+        panels: vec![
+            Plot::image("view 1 (along u₁)", pair(v1.0, v1.1)),
+            Plot::image("view 2 (PQR along u₂, PQ′R′ along u₂′)", pair(v2, v2p)),
+            Plot::image(
+                "true shapes (each in its own plane)",
+                pair(in_plane(&first), in_plane(&second)),
+            ),
+        ],
+    });
 }
 
 fn counterexample_result(b: &ResultBuilder, case: &TwoFramesCase) -> ClaimResult {
@@ -252,6 +274,21 @@ mod tests {
             assert!(!judge_counterexample(&fit(0.5, 3.0, 2.0, true)));
         }
         assert!(!judge_counterexample(&fit(0.5, 3.0, 0.5, false)));
+    }
+
+    #[test]
+    fn a_triangle_laid_flat_keeps_its_sides() {
+        let t = [
+            Vector3::new(1.0, 1.0, 1.0),
+            Vector3::new(1.0, 3.0, 1.0),
+            Vector3::new(1.0, 1.0, 4.0),
+        ];
+        let f = in_plane(&t);
+        let d = |i: usize, j: usize| (f[i][0] - f[j][0]).hypot(f[i][1] - f[j][1]);
+        assert_eq!(f[0], [0.0, 0.0]);
+        assert_eq!(f[1], [2.0, 0.0]);
+        assert!((d(1, 2) - 13f64.sqrt()).abs() < 1e-12);
+        assert!((d(2, 0) - 3.0).abs() < 1e-12 && f[2][1] > 0.0);
     }
 
     #[test]

@@ -15,9 +15,11 @@ pub struct Args {
     /// Tracks file with two frames.
     #[arg(long)]
     input: PathBuf,
-    /// Largest epipolar distance of a member, relative to the image size.
-    #[arg(long, default_value_t = 1e-6)]
-    tolerance: f64,
+    /// Largest epipolar distance of a member, relative to the image size. Default: from the
+    /// data's noise, 3 robust standard deviations (1.4826 × the median distance) of the
+    /// epipolar distances of the points kept.
+    #[arg(long, allow_negative_numbers = true)]
+    tolerance: Option<f64>,
     /// JSON output.
     #[arg(long)]
     json: bool,
@@ -25,20 +27,34 @@ pub struct Args {
 
 /// Decide each point's membership and print one row per point.
 pub fn run(a: Args) -> Result<(), Error> {
-    let tolerance = a.tolerance;
-    if !(tolerance.is_finite() && tolerance >= 0.0) {
+    if let Some(t) = a.tolerance.filter(|t| !(t.is_finite() && *t >= 0.0)) {
         return Err(Error::InvalidInput(format!(
-            "--tolerance {tolerance}: must be a finite number ≥ 0"
+            "--tolerance {t}: must be a finite number ≥ 0"
         )));
     }
     let t = two_frames(&a.input, PointOrder::ByName)?;
     if let Some(d) = identity::degeneracy(&t.frames[0], &t.frames[1]) {
         return Err(in_file(&a.input, Error::InvalidInput(d.to_string())));
     }
+    let from_data = a.tolerance.is_none();
+    let tolerance = a
+        .tolerance
+        .unwrap_or_else(|| identity::robust_tolerance(&t.frames[0], &t.frames[1]));
     let m = identity::membership(&t.frames[0], &t.frames[1], tolerance);
     let inside: Vec<bool> = m.iter().map(|(i, _)| *i).collect();
     if let Some(d) = identity::members_rigid(&t.frames[0], &t.frames[1], &inside, tolerance) {
-        return Err(in_file(&a.input, Error::InvalidInput(d.to_string())));
+        let hint = if from_data {
+            "; the tolerance came from the data's own noise: a larger --tolerance admits more points, a smaller one fewer"
+        } else {
+            "; a larger --tolerance admits noisier members, a smaller one sets more points apart"
+        };
+        return Err(in_file(
+            &a.input,
+            Error::InvalidInput(format!(
+                "{d} (tolerance {}){hint}",
+                orthocheck::numfmt::sig(tolerance)
+            )),
+        ));
     }
     let rows: Vec<MemberRow> = t
         .names
@@ -50,6 +66,8 @@ pub fn run(a: Args) -> Result<(), Error> {
             distance: *d,
         })
         .collect();
-    emit(a.json, &rows, |r| report::membership_text(r, tolerance))?;
+    emit(a.json, &rows, |r| {
+        report::membership_text(r, tolerance, from_data)
+    })?;
     Ok(())
 }

@@ -181,13 +181,19 @@ pub(crate) fn push_findings_html(s: &mut String, page: &Page) {
 }
 
 /// The summary as Markdown.
-pub(crate) fn push_findings_markdown(s: &mut String, ordered: &[&ClaimResult], macros: &Macros) {
+pub(crate) fn push_findings_markdown(
+    s: &mut String,
+    ordered: &[&ClaimResult],
+    macros: &Macros,
+    labels: &std::collections::BTreeMap<String, String>,
+) {
+    let plain = |t: &str| super::markdown::plain_text(&super::layout::readable_labels(t, labels));
     s.push_str("## What was found\n\n");
     for f in findings(ordered) {
         let _ = writeln!(s, "**{}.** {}\n", capitalised(f.group), f.sentence);
         for (c, why) in &f.items {
             let text = match why {
-                Why::Text(t) => super::markdown::plain_text(t),
+                Why::Text(t) => plain(t),
                 Why::ShouldRead(t) if super::glance::correction_is_prose(c) => {
                     format!(
                         "should read: {}",

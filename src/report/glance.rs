@@ -5,7 +5,7 @@
 use std::fmt::Write as _;
 
 use super::html::{anchor, badge, escape, Page};
-use super::math::{math_html, prose_html, quote_html};
+use super::math::{math_html, prose_html};
 use super::values::power_phrase;
 use crate::check::{ClaimResult, ToleranceSource, Value, Verdict};
 
@@ -39,7 +39,7 @@ pub fn printed_side(c: &ClaimResult) -> Vec<&crate::check::Quantity> {
 fn side(page: &Page, qs: &[&crate::check::Quantity]) -> String {
     qs.iter()
         .map(|q| match &q.value {
-            Value::Quote { text } => quote_html(text, &page.macros),
+            Value::Quote { text } => page.quote(text),
             Value::Formula { text } | Value::Label { text } => {
                 format!(
                     "<span class=\"math\">{}</span>",
@@ -64,7 +64,7 @@ pub(crate) fn correction_is_prose(c: &ClaimResult) -> bool {
 pub(crate) fn correction_html(page: &Page, c: &ClaimResult) -> String {
     let corrected = c.correction.as_deref().unwrap_or("");
     if correction_is_prose(c) {
-        prose_html(corrected, &page.macros)
+        page.readable(&prose_html(corrected, &page.macros))
     } else {
         format!(
             "<span class=\"math\">{}</span>",

@@ -38,6 +38,7 @@ pub(crate) struct Page<'a> {
     pub(crate) ordered: Vec<&'a ClaimResult>,
     ids: BTreeSet<String>,
     pub(crate) macros: Macros,
+    labels: std::collections::BTreeMap<String, String>,
 }
 
 impl<'a> Page<'a> {
@@ -47,6 +48,11 @@ impl<'a> Page<'a> {
             ordered: layout::ordered(report),
             ids: layout::linkable_ids(report),
             macros: Macros::parse(report.paper.as_ref().map_or("", |p| p.macros.as_str())),
+            labels: report
+                .paper
+                .as_ref()
+                .map(|p| p.labels.clone())
+                .unwrap_or_default(),
         }
     }
 
@@ -63,10 +69,20 @@ impl<'a> Page<'a> {
                         escape(part)
                     );
                 }
-                _ => s.push_str(&plain_label(part)),
+                _ => s.push_str(&plain_label(&self.readable(part))),
             }
         }
         s
+    }
+
+    /// `text` with the paper's label names as the report names them.
+    pub(crate) fn readable(&self, text: &str) -> String {
+        layout::readable_labels(text, &self.labels)
+    }
+
+    /// A quote of the paper as HTML: running text or mathematics, label names readable.
+    pub(crate) fn quote(&self, text: &str) -> String {
+        self.readable(&quote_html(text, &self.macros))
     }
 
     /// A value as HTML: formulas as mathematics, labels with their ids linked.
@@ -77,7 +93,7 @@ impl<'a> Page<'a> {
                 math_html(text, &self.macros, true)
             ),
             Value::Label { text } => self.linked(text),
-            Value::Quote { text } => quote_html(text, &self.macros),
+            Value::Quote { text } => self.quote(text),
             v => escape(&super::values::shown_text(name, v, trials)),
         }
     }
@@ -345,7 +361,7 @@ fn claim_html(page: &Page, c: &ClaimResult, figures: &[&Figure], h: usize) -> St
     let _ = write!(
         s,
         "<blockquote>{} <span class=\"meta\">(lines {}, <a href=\"#{}\">§{}</a>)</span></blockquote>",
-        quote_html(&c.quote, &page.macros),
+        page.quote(&c.quote),
         escape(&c.lines),
         section_anchor(&c.section),
         escape(&c.section)
@@ -408,7 +424,7 @@ fn evidence_html(page: &Page, c: &ClaimResult, trials: Option<u64>) -> String {
             let _ = write!(
                 s,
                 "<tr><th scope=\"row\">{}</th><td>{}</td></tr>",
-                escape(&d.name),
+                page.linked(&d.name),
                 page.value(&d.name, &d.value, trials)
             );
         }
@@ -448,7 +464,13 @@ fn evidence_html(page: &Page, c: &ClaimResult, trials: Option<u64>) -> String {
 /// A figure: its panels and its caption. The key of its series is drawn once, inside the
 /// SVG beside the plot; the caption says in words what the figure shows.
 pub fn figure_html(f: &Figure) -> String {
-    let mut s = format!("<figure id=\"{}\"><div class=\"panels\">", escape(&f.id));
+    // a figure with a minimum width scrolls sideways in its box on a narrow screen
+    let panels = if super::svg::min_width(f).is_some() {
+        "panels scroll"
+    } else {
+        "panels"
+    };
+    let mut s = format!("<figure id=\"{}\"><div class=\"{panels}\">", escape(&f.id));
     s.push_str(&super::svg::figure_svg(f, false));
     let _ = write!(
         s,

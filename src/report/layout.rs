@@ -149,6 +149,44 @@ pub const GROUPS: [(&str, &[Verdict]); 6] = [
     ("inconclusive", &[Verdict::Inconclusive]),
 ];
 
+/// `text` with every label name of the paper (`zweiframeseins`) in the words the report
+/// names it by (`Fig. 3`); a kind word before it is not said twice ("Fig. zweiframeseins",
+/// "fig. zweiframeseins" → "Fig. 3").
+pub fn readable_labels(text: &str, labels: &std::collections::BTreeMap<String, String>) -> String {
+    if labels.is_empty() {
+        return text.to_string();
+    }
+    let mut out = String::with_capacity(text.len());
+    let mut rest = text;
+    while let Some(c) = rest.chars().next() {
+        if !c.is_ascii_alphanumeric() {
+            out.push(c);
+            rest = &rest[c.len_utf8()..];
+            continue;
+        }
+        let n = rest
+            .find(|ch: char| !ch.is_ascii_alphanumeric())
+            .unwrap_or(rest.len());
+        let (word, after) = rest.split_at(n);
+        let boundary = !out.ends_with(['_', '/', '-']);
+        match labels.get(word).filter(|_| boundary) {
+            Some(name) => {
+                let kind = name.split(' ').next().unwrap_or("").to_lowercase();
+                let said = out.len() > kind.len()
+                    && out[..out.len() - 1].to_lowercase().ends_with(&kind)
+                    && out.ends_with(' ');
+                if said {
+                    out.truncate(out.len() - kind.len() - 1);
+                }
+                out.push_str(name);
+            }
+            None => out.push_str(word),
+        }
+        rest = after;
+    }
+    out
+}
+
 /// The ids a text may mention and a renderer links: every result id, and every claim id that
 /// cannot be an ordinary word (it holds a digit, a dash or a slash).
 pub fn linkable_ids(r: &Report) -> BTreeSet<String> {
@@ -239,5 +277,27 @@ mod tests {
         let mut v = vec!["A", "5.2", "2.2", "10", "2", "5"];
         v.sort_by_key(|s| section_key(s));
         assert_eq!(v, vec!["2", "2.2", "5", "5.2", "10", "A"]);
+    }
+}
+
+#[cfg(test)]
+mod label_tests {
+    use super::readable_labels;
+
+    #[test]
+    fn label_names_become_the_report_s_names() {
+        let labels = [("zweiframeseins", "Fig. 3"), ("p4f2", "eq. (2)")]
+            .map(|(a, b)| (a.to_string(), b.to_string()))
+            .into_iter()
+            .collect();
+        assert_eq!(
+            readable_labels(
+                "see Fig. zweiframeseins and fig. zweiframeseins, (p4f2)",
+                &labels
+            ),
+            "see Fig. 3 and Fig. 3, (eq. (2))"
+        );
+        // inside an id or a longer word nothing changes
+        assert_eq!(readable_labels("x-p4f2 p4f2x", &labels), "x-p4f2 p4f2x");
     }
 }

@@ -20,6 +20,7 @@ struct Ctx<'a> {
     ordered: Vec<&'a ClaimResult>,
     ids: BTreeSet<String>,
     macros: Macros,
+    labels: std::collections::BTreeMap<String, String>,
 }
 
 impl Ctx<'_> {
@@ -28,6 +29,7 @@ impl Ctx<'_> {
             ordered: Vec::new(),
             ids: BTreeSet::new(),
             macros: Macros::default(),
+            labels: Default::default(),
         }
     }
 
@@ -39,17 +41,28 @@ impl Ctx<'_> {
             .map(
                 |(part, is_id)| match layout::target_of(&self.ordered, part) {
                     Some(c) if is_id => format!("[`{part}`](#{})", anchor(&c.id)),
-                    _ => md_escape(&strip_backslashes(part)),
+                    _ => md_escape(&strip_backslashes(&layout::readable_labels(
+                        part,
+                        &self.labels,
+                    ))),
                 },
             )
             .collect()
+    }
+
+    /// A quote of the paper: running text or mathematics, label names readable.
+    fn quote(&self, text: &str) -> String {
+        md_escape(&layout::readable_labels(
+            &quote_text(text, &self.macros),
+            &self.labels,
+        ))
     }
 
     fn value(&self, name: &str, v: &Value, trials: Option<u64>) -> String {
         match v {
             Value::Formula { text } => md_escape(&math_text(text, &self.macros, true)),
             Value::Label { text } => self.linked(text),
-            Value::Quote { text } => md_escape(&quote_text(text, &self.macros)),
+            Value::Quote { text } => self.quote(text),
             v => md_escape(&shown_text(name, v, trials)),
         }
     }
@@ -76,7 +89,10 @@ fn strip_backslashes(s: &str) -> String {
 fn correction_md(ctx: &Ctx, c: &ClaimResult) -> String {
     let corr = c.correction.as_deref().unwrap_or("");
     if super::glance::correction_is_prose(c) {
-        md_escape(&prose_text_in(corr, &ctx.macros))
+        md_escape(&layout::readable_labels(
+            &prose_text_in(corr, &ctx.macros),
+            &ctx.labels,
+        ))
     } else {
         md_escape(&math_text(corr, &ctx.macros, true))
     }
@@ -127,7 +143,7 @@ fn claim_in(
     let _ = writeln!(
         s,
         "> {} (lines {}, §{})\n",
-        md_escape(&quote_text(&c.quote, &ctx.macros)),
+        ctx.quote(&c.quote),
         c.lines,
         c.section
     );
@@ -156,7 +172,7 @@ fn claim_in(
         let _ = writeln!(
             s,
             "  - {}: {}",
-            md_escape(&d.name),
+            ctx.linked(&d.name),
             ctx.value(&d.name, &d.value, trials)
         );
     }
@@ -205,6 +221,11 @@ pub fn render(r: &Report) -> String {
         ordered: layout::ordered(r),
         ids: layout::linkable_ids(r),
         macros: Macros::parse(r.paper.as_ref().map_or("", |p| p.macros.as_str())),
+        labels: r
+            .paper
+            .as_ref()
+            .map(|p| p.labels.clone())
+            .unwrap_or_default(),
     };
     let mut s = String::from("# Reproducibility report\n\n");
     if let Some(p) = &r.paper {
@@ -222,7 +243,7 @@ pub fn render(r: &Report) -> String {
     if !p.transcription.is_empty() {
         let _ = writeln!(s, "{}\n", p.transcription);
     }
-    super::findings::push_findings_markdown(&mut s, &ctx.ordered, &ctx.macros);
+    super::findings::push_findings_markdown(&mut s, &ctx.ordered, &ctx.macros, &ctx.labels);
     push_summary(&mut s, r);
     push_contents(&mut s, r);
     push_glance(&mut s, &ctx);
@@ -321,7 +342,7 @@ fn push_glance(s: &mut String, ctx: &Ctx) {
                 Value::Formula { text } | Value::Label { text } => {
                     md_escape(&math_text(text, &ctx.macros, true))
                 }
-                Value::Quote { text } => md_escape(&quote_text(text, &ctx.macros)),
+                Value::Quote { text } => ctx.quote(text),
                 v => md_escape(&super::values::value_text(v)),
             })
             .collect();

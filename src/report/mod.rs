@@ -259,7 +259,7 @@ pub fn dof_text(r: &crate::derivations::dof::Identifiability) -> String {
          measurements  2kp          = {m}\n\
          balance                    = {b}\n\
          jacobian rank (svd)        = {jr} of {n} parameters (condition {cond})\n\
-         exact rank                 = {er} ({method:?})\n\
+         exact rank                 = {er} ({method})\n\
          deficiency                 = {d}  ({verdict})\n",
         p = c.points,
         k = c.frames,
@@ -272,7 +272,7 @@ pub fn dof_text(r: &crate::derivations::dof::Identifiability) -> String {
             .condition
             .map_or("- (rank-deficient)".into(), crate::numfmt::sig),
         er = r.exact_rank,
-        method = r.exact_method,
+        method = r.exact_method.describe(),
         d = r.deficiency,
         verdict = if r.deficiency == 0 {
             "finitely many solutions near this scene".to_string()
@@ -481,11 +481,16 @@ pub struct MemberRow {
 }
 
 /// `orthocheck membership` as text.
-pub fn membership_text(rows: &[MemberRow], tolerance: f64) -> String {
+pub fn membership_text(rows: &[MemberRow], tolerance: f64, from_data: bool) -> String {
     use crate::numfmt::sig;
     let mut s = format!(
-        "members: epipolar distance at most {} of the image size\n",
-        sig(tolerance)
+        "members: epipolar distance at most {} of the image size{}\n",
+        sig(tolerance),
+        if from_data {
+            " (from the data: 3 robust standard deviations of the distances; --tolerance sets it)"
+        } else {
+            ""
+        }
     );
     for r in rows {
         let _ = writeln!(

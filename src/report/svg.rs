@@ -6,6 +6,9 @@
 //! area is a `rect class="plot-area"`, each layer a `g class="layer"` holding its data
 //! (polylines, polygons, lines and markers placed by `translate(x,y)`), the key a
 //! `g class="legend"` whose `rect` bounds it.
+//!
+//! A figure wider than one panel carries a CSS `min-width` ([`min_width`]): shown in a box
+//! that scrolls sideways, its text stays legible on a narrow screen instead of shrinking.
 
 use std::fmt::Write as _;
 
@@ -31,6 +34,17 @@ const MARGIN: f64 = 8.0;
 const MAX_ROW: f64 = 1200.0;
 /// Average advance of a character of the sans-serif font, per pixel of font size.
 const CHAR_W: f64 = 0.6;
+/// The narrowest document: room for one panel and its key.
+const NARROWEST: f64 = 420.0;
+/// The smallest text of a figure, in px: its tick labels.
+const TICK_FONT: f64 = 11.0;
+/// The size in px the smallest text keeps when a figure is shown narrower than it is drawn.
+const READABLE_TEXT: f64 = 9.0;
+/// The widest figure left free to shrink, in px: one panel without equal scales (422 px). On a
+/// 400-px-wide screen, whose column is about 338 px beside the page's and a claim's padding,
+/// its ticks keep at least 11 × 338 / 430 ≈ 8.7 px; a wider figure gets a minimum width
+/// instead ([`min_width`]).
+const FREE_TO_SHRINK: f64 = 430.0;
 
 /// The colour of a style, as CSS: the Okabe–Ito colour-blind-safe palette, restricted to its
 /// colours with at least 3:1 contrast against white.
@@ -250,7 +264,10 @@ fn tick_text(v: f64, step: f64) -> String {
 /// The axes of one panel: frame, grid, ticks, labels, title.
 fn draw_axes(s: &mut String, p: &Plot, a: &Axes) {
     let (l, t, w, h) = (a.left, a.top, a.w, a.h);
-    s.push_str("<g class=\"axes\" font-size=\"11\" fill=\"#333\">");
+    let _ = write!(
+        s,
+        "<g class=\"axes\" font-size=\"{TICK_FONT}\" fill=\"#333\">"
+    );
     let xt = if a.log_x {
         log_ticks(a.x[0], a.x[1])
     } else {
@@ -427,24 +444,63 @@ fn wrap(text: &str, n: usize) -> Vec<String> {
     lines
 }
 
-/// One figure as one SVG document with a `<title>` (the figure's title) and a `<desc>` (its
-/// caption). `standalone` writes a file of its own (XML declaration, namespace, the title and
-/// caption also as visible text); otherwise it is inlined in HTML beside its caption.
-pub fn figure_svg(f: &Figure, standalone: bool) -> String {
+/// Where a figure's panels go: each panel's window and plot-area size ([`layout`]), the cells
+/// of the grid they fill row by row, and the document's width.
+struct Grid {
+    sizes: Vec<([f64; 2], [f64; 2], f64, f64)>,
+    cell_w: f64,
+    cell_h: f64,
+    cols: usize,
+    rows: usize,
+    width: f64,
+}
+
+fn grid(f: &Figure) -> Grid {
     let sizes = layout(f);
     let cell_w = sizes.iter().map(|z| z.2).fold(0.0, f64::max) + LEFT + RIGHT;
     let cell_h = sizes.iter().map(|z| z.3).fold(0.0, f64::max) + TOP + BOTTOM;
     let cols = ((MAX_ROW / cell_w).floor() as usize).clamp(1, f.panels.len().max(1));
     let rows = f.panels.len().div_ceil(cols);
-    let width = (cols as f64 * cell_w + 2.0 * MARGIN).max(420.0);
+    let width = (cols as f64 * cell_w + 2.0 * MARGIN).max(NARROWEST);
+    Grid {
+        sizes,
+        cell_w,
+        cell_h,
+        cols,
+        rows,
+        width,
+    }
+}
+
+/// The minimum width of a document `width` px wide: the width at which its smallest text is
+/// [`READABLE_TEXT`] px (of its width rounded up, as its attribute may be); `None` when it is
+/// free to shrink.
+fn shrink_limit(width: f64) -> Option<f64> {
+    (width > FREE_TO_SHRINK).then(|| (width.ceil() * READABLE_TEXT / TICK_FONT).ceil())
+}
+
+/// The narrowest a figure is shown, in CSS px (its SVG's `min-width`): the width at which its
+/// smallest text is still [`READABLE_TEXT`] px, so that on a narrow screen a figure of several
+/// panels keeps its text legible and scrolls sideways (in a container with `overflow-x: auto`)
+/// instead of shrinking. `None` for a figure no wider than one panel, which may shrink.
+pub fn min_width(f: &Figure) -> Option<f64> {
+    shrink_limit(grid(f).width)
+}
+
+/// One figure as one SVG document with a `<title>` (the figure's title) and a `<desc>` (its
+/// caption). `standalone` writes a file of its own (XML declaration, namespace, the title and
+/// caption also as visible text); otherwise it is inlined in HTML beside its caption.
+pub fn figure_svg(f: &Figure, standalone: bool) -> String {
+    let g = grid(f);
+    let width = g.width;
     let head = if standalone { 28.0 } else { 0.0 };
     let mut body = String::new();
-    for (i, (p, (x, y, w, h))) in f.panels.iter().zip(sizes).enumerate() {
+    for (i, (p, (x, y, w, h))) in f.panels.iter().zip(g.sizes).enumerate() {
         let a = Axes {
             x,
             y,
-            left: MARGIN + (i % cols) as f64 * cell_w + LEFT,
-            top: head + (i / cols) as f64 * cell_h + TOP,
+            left: MARGIN + (i % g.cols) as f64 * g.cell_w + LEFT,
+            top: head + (i / g.cols) as f64 * g.cell_h + TOP,
             w,
             h,
             log_x: p.log_x,
@@ -462,7 +518,7 @@ pub fn figure_svg(f: &Figure, standalone: bool) -> String {
         draw_labels(&mut body, p, &a);
         body.push_str("</g>");
     }
-    let grid_bottom = head + rows as f64 * cell_h;
+    let grid_bottom = head + g.rows as f64 * g.cell_h;
     let legend_h = draw_legend(&mut body, f, grid_bottom + 4.0, width);
     let mut height = grid_bottom + legend_h + 12.0;
     if standalone {
@@ -482,14 +538,21 @@ pub fn figure_svg(f: &Figure, standalone: bool) -> String {
         );
         height += 8.0;
     }
+    document(f, standalone, (width, height), &body)
+}
+
+/// The `<svg>` element around a figure's drawn `body`, `size` (width, height) px.
+fn document(f: &Figure, standalone: bool, size: (f64, f64), body: &str) -> String {
+    let (width, height) = size;
     let id = escape(&f.id);
+    let min = shrink_limit(width).map_or(String::new(), |m| format!("min-width: {m:.0}px; "));
     let mut s = String::new();
     if standalone {
         s.push_str("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n");
     }
     let _ = write!(
         s,
-        "<svg {}width=\"{width:.0}\" height=\"{height:.0}\" viewBox=\"0 0 {width:.0} {height:.0}\" role=\"img\" aria-labelledby=\"{id}-title {id}-desc\" font-family=\"sans-serif\" style=\"max-width: 100%; height: auto\">\
+        "<svg {}width=\"{width:.0}\" height=\"{height:.0}\" viewBox=\"0 0 {width:.0} {height:.0}\" role=\"img\" aria-labelledby=\"{id}-title {id}-desc\" font-family=\"sans-serif\" style=\"{min}max-width: 100%; height: auto\">\
          <title id=\"{id}-title\">{}</title><desc id=\"{id}-desc\">{}</desc>\
          <rect width=\"100%\" height=\"100%\" fill=\"#fff\"/>{body}</svg>",
         if standalone {
@@ -581,6 +644,15 @@ mod tests {
         assert_eq!(file_name(&f(".hidden")), None);
         assert_eq!(file_name(&f("a/b")), None);
         assert_eq!(file_name(&f("")), None);
+    }
+
+    #[test]
+    fn wide_figures_keep_a_minimum_width() {
+        assert_eq!(shrink_limit(420.0), None);
+        // 828 × 9 / 11 = 677.45…
+        assert_eq!(shrink_limit(828.0), Some(678.0));
+        let m = shrink_limit(1143.6).unwrap_or(0.0);
+        assert!(m * TICK_FONT / 1144.0 >= READABLE_TEXT && m <= 1144.0);
     }
 
     #[test]

@@ -1,7 +1,8 @@
 //! Orthographic structure from motion at any size: Tomasi–Kanade factorisation with a metric
 //! upgrade ([`tomasi_kanade`]), bundle adjustment ([`bundle_adjust`]), tracks with gaps
-//! ([`gaps`]), RANSAC over the paper's four-point solver ([`robust`]), and the whole pipeline
-//! behind `orthocheck reconstruct` ([`reconstruct`]).
+//! ([`gaps`]), RANSAC over the paper's four-point solver with a judgement of every
+//! observation ([`robust`], [`judge`], the threshold from the data: [`threshold`]), and the
+//! whole pipeline behind `orthocheck reconstruct` ([`reconstruct`]).
 //!
 //! The camera model is the paper's: image = the first two rows of a rotation times the point,
 //! plus a translation in the image plane. Every function works on tracks brought to unit size
@@ -10,10 +11,12 @@
 pub mod bundle;
 pub mod factor;
 pub mod gaps;
+pub mod judge;
 pub mod metric;
 mod observations;
 pub mod output;
 pub mod robust;
+pub mod threshold;
 mod tk;
 
 use nalgebra::{Matrix2x3, Matrix3, Vector2, Vector3};
@@ -309,28 +312,52 @@ pub struct Outcome {
     pub mirror: Reconstruction,
     /// Root mean square reprojection distance, in image units, over the points used.
     pub rms: f64,
-    /// In robust mode: the names of the points RANSAC kept.
+    /// In robust mode: the names of the points kept (each with its inlier images).
     pub inliers: Option<Vec<String>>,
     /// The bundle adjustment, when it ran.
     pub bundle: Option<BundleReport>,
+    /// In robust mode: the threshold, the dropped observations, the rejected points.
+    pub robust: Option<robust::Report>,
 }
 
-/// The pipeline of `orthocheck reconstruct`: RANSAC when asked (the inliers go on), then
-/// Tomasi–Kanade (complete tracks) or the largest complete block grown by intersection and
-/// resection (tracks with gaps), then bundle adjustment, then the mirror twin.
+/// The pipeline of `orthocheck reconstruct`: in robust mode RANSAC and the judgement of every
+/// observation ([`robust::run`]: the kept images go on), then Tomasi–Kanade (complete
+/// tracks) or the largest complete block grown by intersection and resection (tracks with
+/// gaps), then bundle adjustment, then the mirror twin.
 pub fn reconstruct(obs: &Observations, options: &Options) -> Result<Outcome, Error> {
     obs.check_counts()?;
-    let (used, inliers) = match &options.robust {
+    let (rec, bundle, robust, rms) = match &options.robust {
         Some(r) => {
-            let kept = robust::ransac(obs, r)?;
-            let names: Vec<String> = kept.iter().map(|&j| obs.names[j].clone()).collect();
-            (obs.select_points(&kept), Some(names))
+            let f = robust::run(obs, r, options)?;
+            let rms = f.reconstruction.rms(&f.used);
+            (f.reconstruction, f.bundle, Some(f.report), rms)
         }
-        None => (obs.clone(), None),
+        None => {
+            let (rec, bundle) = fit(obs, options)?;
+            let rms = rec.rms(obs);
+            (rec, bundle, None, rms)
+        }
     };
+    Ok(Outcome {
+        mirror: rec.mirror(),
+        reconstruction: rec,
+        rms,
+        inliers: robust.as_ref().map(|r| r.kept.clone()),
+        bundle,
+        robust,
+    })
+}
+
+/// The fit of observations: Tomasi–Kanade (complete tracks) or the largest complete block
+/// grown (gaps), then bundle adjustment when asked and within its limits (`method` says
+/// when it was skipped); an error on a non-finite coordinate.
+pub(crate) fn fit(
+    used: &Observations,
+    options: &Options,
+) -> Result<(Reconstruction, Option<BundleReport>), Error> {
     let mut rec = match used.complete() {
         Some(t) => tomasi_kanade(&t)?,
-        None => gaps::initial(&used)?,
+        None => gaps::initial(used)?,
     };
     let mut report = None;
     if options.bundle {
@@ -340,8 +367,8 @@ pub fn reconstruct(obs: &Observations, options: &Options) -> Result<Outcome, Err
                 "bundle adjustment skipped: {frames} frames, more than the limit of {} (see docs/limits.md)",
                 crate::limits::BUNDLE_FRAMES
             ));
-        } else if bundle::work(&used) <= crate::limits::BUNDLE_WORK {
-            let adjusted = bundle_adjust(&used, &rec, &bundle::BundleOptions::with(options))?;
+        } else if bundle::work(used) <= crate::limits::BUNDLE_WORK {
+            let adjusted = bundle_adjust(used, &rec, &bundle::BundleOptions::with(options))?;
             rec = adjusted.reconstruction;
             report = Some(adjusted.report);
         } else {
@@ -351,27 +378,10 @@ pub fn reconstruct(obs: &Observations, options: &Options) -> Result<Outcome, Err
             ));
         }
     }
-    if let Some(names) = &inliers {
-        rec.method.insert(
-            0,
-            format!(
-                "ransac over the four-point solver: {} of {} points kept",
-                names.len(),
-                obs.names.len()
-            ),
-        );
-    }
     if !rec.is_finite() {
         return Err(Error::Numerical(
             "a non-finite coordinate in the reconstruction".into(),
         ));
     }
-    let rms = rec.rms(&used);
-    Ok(Outcome {
-        mirror: rec.mirror(),
-        reconstruction: rec,
-        rms,
-        inliers,
-        bundle: report,
-    })
+    Ok((rec, report))
 }

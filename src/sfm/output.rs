@@ -1,14 +1,23 @@
 //! What `orthocheck reconstruct` prints: JSON (`points` by name in the tracks' order,
-//! `frames` with `rotation` and `translation`, `rms`, `mirror`, `method`, `inliers` in robust
-//! mode) and a plain-text table.
+//! `frames` with `rotation` and `translation`, `rms`, `mirror`, `method`; in robust mode
+//! `inliers` and `rejected` (point names), `threshold` (`value`, `from`: `"data"` or
+//! `"--threshold"`, and for the data its `median`, `sigma`, `shrink`, `floor`,
+//! `observations`) and `dropped` (`point`, `frame` counted from 1, `residual`)) and a
+//! plain-text table.
 
 use std::fmt::Write as _;
 
 use serde::ser::{SerializeMap, SerializeStruct};
 use serde::{Serialize, Serializer};
 
+use super::judge::MIN_IMAGES;
+use super::robust::{Dropped, Report};
+use super::threshold::{Source, Threshold, RAYLEIGH_INLIER, RAYLEIGH_MEDIAN};
 use super::{Frame, Outcome, Reconstruction};
 use crate::numfmt::sig;
+
+/// Dropped observations the text lists by name (the JSON lists every one).
+const TEXT_DROPPED: usize = 20;
 
 /// Points by name, in the tracks' order (a streamed map keeps the order).
 struct Points<'a>(&'a Reconstruction);
@@ -54,6 +63,43 @@ impl Serialize for Mirror<'_> {
     }
 }
 
+/// A threshold: `value`, `from`, and the scale behind one from the data.
+struct ThresholdJson<'a>(&'a Threshold);
+
+impl Serialize for ThresholdJson<'_> {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        let t = self.0;
+        let mut m = s.serialize_map(None)?;
+        m.serialize_entry("value", &t.value)?;
+        match t.source {
+            Source::Given => m.serialize_entry("from", "--threshold")?,
+            Source::Data(d) => {
+                m.serialize_entry("from", "data")?;
+                m.serialize_entry("median", &d.median)?;
+                m.serialize_entry("observations", &d.observations)?;
+                m.serialize_entry("shrink", &d.shrink)?;
+                m.serialize_entry("sigma", &d.sigma)?;
+                m.serialize_entry("floor", &d.floor)?;
+                m.serialize_entry("floored", &t.floored())?;
+            }
+        }
+        m.end()
+    }
+}
+
+/// One dropped observation: `point`, `frame` (from 1), `residual` (null when unknown).
+struct DroppedJson<'a>(&'a Dropped);
+
+impl Serialize for DroppedJson<'_> {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        let mut st = s.serialize_struct("Dropped", 3)?;
+        st.serialize_field("point", &self.0.point)?;
+        st.serialize_field("frame", &self.0.frame)?;
+        st.serialize_field("residual", &self.0.residual)?;
+        st.end()
+    }
+}
+
 /// The JSON document of an outcome.
 pub struct Json<'a>(pub &'a Outcome);
 
@@ -61,7 +107,7 @@ impl Serialize for Json<'_> {
     fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
         let o = self.0;
         let r = &o.reconstruction;
-        let mut st = s.serialize_struct("Reconstruction", 7)?;
+        let mut st = s.serialize_struct("Reconstruction", 10)?;
         st.serialize_field("points", &Points(r))?;
         st.serialize_field("frames", &frames(r))?;
         st.serialize_field("rms", &o.rms)?;
@@ -69,6 +115,12 @@ impl Serialize for Json<'_> {
         st.serialize_field("method", &r.method.join("; "))?;
         if let Some(i) = &o.inliers {
             st.serialize_field("inliers", i)?;
+        }
+        if let Some(rb) = &o.robust {
+            st.serialize_field("rejected", &rb.rejected)?;
+            st.serialize_field("threshold", &ThresholdJson(&rb.threshold))?;
+            let dropped: Vec<DroppedJson<'_>> = rb.dropped.iter().map(DroppedJson).collect();
+            st.serialize_field("dropped", &dropped)?;
         }
         if let Some(b) = &o.bundle {
             st.serialize_field("iterations", &b.iterations)?;
@@ -83,6 +135,65 @@ fn triple(v: impl IntoIterator<Item = f64>) -> String {
     format!("[{}]", parts.join(", "))
 }
 
+/// The text line of a threshold.
+fn threshold_line(t: &Threshold) -> String {
+    let why = match t.source {
+        Source::Given => "--threshold".to_string(),
+        Source::Data(d) if t.floored() => format!(
+            "from the data: the median residual {} of {} observations is rounding, so the floor, 2^10 ε × the image size × the fit's rounding factor; --threshold sets it",
+            sig(d.median),
+            d.observations
+        ),
+        Source::Data(d) => format!(
+            "from the data: {} σ, the 99 % point of a 2-D normal error's norm; σ = median residual {} of {} observations / {}{}; --threshold sets it",
+            sig(RAYLEIGH_INLIER),
+            sig(d.median),
+            d.observations,
+            sig(RAYLEIGH_MEDIAN),
+            if d.shrink < 1.0 {
+                format!(" / {} (the fit's parameters)", sig(d.shrink))
+            } else {
+                String::new()
+            }
+        ),
+    };
+    format!("threshold {} image units ({why})", sig(t.value))
+}
+
+/// The text lines of robust mode: the threshold, the dropped observations, the rejected
+/// points.
+fn robust_lines(s: &mut String, r: &Report) {
+    let _ = writeln!(s, "{}", threshold_line(&r.threshold));
+    let listed: Vec<String> = r
+        .dropped
+        .iter()
+        .take(TEXT_DROPPED)
+        .map(|d| format!("{} in frame {}", d.point, d.frame))
+        .collect();
+    let more = if r.dropped.len() > TEXT_DROPPED {
+        ", …"
+    } else {
+        ""
+    };
+    let _ = writeln!(
+        s,
+        "dropped observations ({} of {}; --json lists each with its residual){}{}{}",
+        r.dropped.len(),
+        r.observations,
+        if listed.is_empty() { "" } else { ": " },
+        listed.join(", "),
+        more
+    );
+    if !r.rejected.is_empty() {
+        let _ = writeln!(
+            s,
+            "rejected points ({}; fewer than {MIN_IMAGES} images within the threshold, or not both of two): {}",
+            r.rejected.len(),
+            r.rejected.join(", ")
+        );
+    }
+}
+
 /// The plain-text table of an outcome.
 pub fn text(o: &Outcome) -> String {
     let r = &o.reconstruction;
@@ -91,6 +202,9 @@ pub fn text(o: &Outcome) -> String {
     let _ = writeln!(s, "rms reprojection error: {} image units", sig(o.rms));
     if let Some(i) = &o.inliers {
         let _ = writeln!(s, "inliers ({}): {}", i.len(), i.join(", "));
+    }
+    if let Some(r) = &o.robust {
+        robust_lines(&mut s, r);
     }
     let _ = writeln!(s, "points (frame 1's camera coordinates, centred):");
     let width = r.names.iter().map(|n| n.chars().count()).max().unwrap_or(1);

@@ -1198,3 +1198,51 @@ fn exported_sympy_scripts_verify_and_never_overwrite() {
         );
     }
 }
+
+/// `membership` without `--tolerance` takes it from the data's noise: a foreign point among
+/// six points of one body at 0.1 % noise is set apart, the five others kept, in every scene.
+#[test]
+fn membership_finds_a_foreign_point_at_its_default_tolerance() {
+    use rand::{Rng, SeedableRng};
+    let dir = tempfile::tempdir().unwrap();
+    for seed in 1..=10u64 {
+        let mut t = orthocheck::model::Scene::random(6, 2, seed).tracks();
+        let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(seed);
+        for f in &mut t.frames {
+            for p in f.iter_mut() {
+                p.x *= 1.0 + 1e-3 * rng.random_range(-1.0..1.0);
+                p.y *= 1.0 + 1e-3 * rng.random_range(-1.0..1.0);
+            }
+        }
+        // the last point of frame 2 belongs to another body: moved by a third of the image
+        let size = t.frames[1].iter().map(|p| p.norm()).fold(0.0f64, f64::max);
+        t.frames[1][5].x += size / 3.0;
+        t.frames[1][5].y -= size / 4.0;
+        let file = dir.path().join(format!("six-{seed}.yaml"));
+        std::fs::write(&file, orthocheck::input::tracks_to_yaml(&t)).unwrap();
+        let out = orthocheck(&["membership", "--input", file.to_str().unwrap(), "--json"]);
+        assert_eq!(
+            out.status.code(),
+            Some(0),
+            "seed {seed}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let members: Vec<bool> = json(&out)
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|r| r["member"] == true)
+            .collect();
+        assert_eq!(
+            members,
+            [true, true, true, true, true, false],
+            "seed {seed}"
+        );
+    }
+    let out = orthocheck(&["membership", "--input", "tests/bad_tracks/two_frames.yaml"]);
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        out.status.code() != Some(0) || text.contains("from the data"),
+        "{text}"
+    );
+}

@@ -1,8 +1,10 @@
 //! Every figure of the paper run, drawn as the report draws it, read back from the SVG: what
 //! a reader would see is what the figure's data says.
 
-use orthocheck::check::figure::{Figure, Layer, Shape, Style};
-use orthocheck::report::svg::{css_colour, figure_svg};
+use orthocheck::check::figure::{Figure, Layer, Plot, Shape, Style};
+use orthocheck::check::{ClaimResult, Value};
+use orthocheck::report::svg::{css_colour, figure_svg, min_width};
+use orthocheck::report::values::{sampled_digits, sig_digits, trials_of};
 use roxmltree::{Document, Node};
 
 fn figures() -> &'static [Figure] {
@@ -349,4 +351,336 @@ fn the_dof_grid_shows_only_the_grid() {
         !identifiable.points.contains(&[1.0, 1.0]),
         "a single point in one frame has no shape to identify"
     );
+}
+
+/// The claim result a figure illustrates.
+fn result_of(f: &Figure) -> &'static ClaimResult {
+    let r = crate::common::report().unwrap();
+    r.claims
+        .iter()
+        .find(|c| c.id == f.claim)
+        .unwrap_or_else(|| panic!("{}: no result {}", f.id, f.claim))
+}
+
+fn noise_figures() -> Vec<&'static Figure> {
+    figures()
+        .iter()
+        .filter(|f| f.id.contains("noise"))
+        .collect()
+}
+
+fn quantity<'a>(qs: &'a [orthocheck::check::Quantity], name: &str) -> Option<&'a Value> {
+    qs.iter().find(|q| q.name == name).map(|q| &q.value)
+}
+
+fn real(v: &Value) -> f64 {
+    match v {
+        Value::Real { value } => value.0,
+        v => panic!("not a real: {v:?}"),
+    }
+}
+
+/// A panel's vertical lines in the style of what the paper printed: the paper's bound.
+fn lines(p: &Plot) -> Vec<&Layer> {
+    p.layers
+        .iter()
+        .filter(|l| l.shape == Shape::Verticals && l.style == Style::Printed)
+        .collect()
+}
+
+#[test]
+fn noise_figures_draw_the_papers_bound_apart_from_its_run() {
+    let mut bounded = 0;
+    for f in noise_figures() {
+        let c = result_of(f);
+        let bound = ["error below", "error above"]
+            .iter()
+            .find_map(|n| quantity(&c.printed, n).map(|v| (*n, v)));
+        let Some((direction, Value::Printed { text, .. })) = bound else {
+            // no number in the paper's words: no bound to draw, and the caption says so
+            assert!(f.panels.iter().all(|p| lines(p).is_empty()), "{}", f.id);
+            assert!(f.caption.contains("gives no number"), "{}", f.caption);
+            continue;
+        };
+        bounded += 1;
+        let percent = 100.0 * text.parse::<f64>().unwrap();
+        let words = direction.trim_start_matches("error ");
+        for p in &f.panels {
+            let l = lines(p);
+            assert_eq!(l.len(), 1, "{} / {}: one bound line", f.id, p.title);
+            let at = l[0].points[0][0];
+            assert!(
+                (at - percent).abs() <= 1e-9 * percent,
+                "{} / {}: bound drawn at {at} %, the paper says {percent} %",
+                f.id,
+                p.title
+            );
+            assert!(l[0].name.contains("paper's bound") && l[0].name.contains(words));
+            assert_eq!(l[0].labels.len(), 1, "{}: the bound line is labelled", f.id);
+            assert!(l[0].labels[0].starts_with("paper: "), "{}", l[0].labels[0]);
+            if let Some(run) = p.layers.iter().find(|x| x.name == "the paper's test run") {
+                assert_ne!(run.style, l[0].style, "{}: bound and run look alike", f.id);
+            }
+        }
+        assert!(f.caption.contains("The paper says"), "{}", f.caption);
+    }
+    assert!(bounded >= 6, "{bounded} noise figures with a bound");
+}
+
+#[test]
+fn noise_captions_say_why_in_the_judges_numbers() {
+    for f in noise_figures() {
+        let c = result_of(f);
+        let Some(Value::Label { text: decision }) = quantity(&c.evidence.details, "decision")
+        else {
+            panic!("{}: no decision", f.id)
+        };
+        let words = if decision == "too close to call" {
+            format!("the claim is {decision}")
+        } else {
+            format!("the claim {decision}")
+        };
+        assert!(
+            f.caption.to_lowercase().contains(&words),
+            "{}: {words}? {}",
+            f.id,
+            f.caption
+        );
+        let digits = sampled_digits(trials_of(c).unwrap_or(1));
+        let pc = |x: f64| format!("{} %", sig_digits(100.0 * x, digits));
+        let median = c
+            .computed
+            .iter()
+            .any(|q| q.name.ends_with(": median trial's error"));
+        // the numbers the result reports, as the caption shows them
+        let mut shown = Vec::new();
+        for q in &c.computed {
+            if (median && q.name.ends_with(": median trial's error"))
+                || (!median && q.name == "printed run: error")
+            {
+                shown.push(pc(real(&q.value)));
+            }
+            let rank = if median {
+                ": percentile rank of the bound"
+            } else {
+                ": percentile of the printed run"
+            };
+            if q.name.ends_with(rank) {
+                shown.push(sig_digits(real(&q.value), digits));
+            }
+        }
+        assert!(shown.len() >= 3, "{}: {shown:?}", f.id);
+        for t in shown {
+            assert!(f.caption.contains(&t), "{}: {t} not in {}", f.id, f.caption);
+        }
+        // in the panel judged, one marker per model where the judge reads its curve
+        let judged: Vec<&Plot> = f
+            .panels
+            .iter()
+            .filter(|p| p.title.ends_with("(judged)"))
+            .collect();
+        assert_eq!(judged.len(), 1, "{}: one judged panel", f.id);
+        let count = |s: Shape| judged[0].layers.iter().filter(|l| l.shape == s).count();
+        assert_eq!(count(Shape::Points), count(Shape::Line), "{}", f.id);
+        let reading = quantity(&c.computed, "reading");
+        let Some(Value::Label { text: reading }) = reading else {
+            panic!("{}: no reading", f.id)
+        };
+        let how = if reading.starts_with("mean") {
+            "mean"
+        } else {
+            "largest"
+        };
+        let what = if reading.ends_with("squares") {
+            "squares"
+        } else {
+            "lengths"
+        };
+        assert_eq!(
+            judged[0].title,
+            format!("{how} error in {what} (judged)"),
+            "{}: the panel judged is the reading of the result",
+            f.id
+        );
+    }
+}
+
+#[test]
+fn noise_figures_are_titled_by_section_and_setting() {
+    let noise = noise_figures();
+    let mut titles: Vec<&str> = noise.iter().map(|f| f.title.as_str()).collect();
+    for f in &noise {
+        let c = result_of(f);
+        assert!(
+            f.title.starts_with(&format!("§{} (", c.section)),
+            "{}: {} is not §{}",
+            f.id,
+            f.title,
+            c.section
+        );
+        assert!(
+            f.title.contains(" points, ") && f.title.contains(" frames): noise up to "),
+            "{}",
+            f.title
+        );
+    }
+    let n = titles.len();
+    titles.sort_unstable();
+    titles.dedup();
+    assert_eq!(titles.len(), n, "noise figures share a title: {titles:?}");
+}
+
+fn side_lengths(l: &Layer) -> Vec<f64> {
+    let n = l.points.len();
+    (0..n)
+        .map(|i| {
+            let (a, b) = (l.points[i], l.points[(i + 1) % n]);
+            (a[0] - b[0]).hypot(a[1] - b[1])
+        })
+        .collect()
+}
+
+#[test]
+fn the_two_frames_figure_shows_the_true_shapes() {
+    let f = figures().iter().find(|f| f.id == "fig-two-frames").unwrap();
+    let c = result_of(f);
+    let reals = |name: &str| -> Vec<f64> {
+        match quantity(&c.evidence.details, name) {
+            Some(Value::Reals { values }) => values.iter().map(|r| r.0).collect(),
+            v => panic!("{name}: {v:?}"),
+        }
+    };
+    let layer = |p: &'static Plot, name: &str| -> &'static Layer {
+        p.layers
+            .iter()
+            .find(|l| l.name == name && l.shape == Shape::Polygon)
+            .unwrap_or_else(|| panic!("{}: no {name}", p.title))
+    };
+    let (shapes, views): (Vec<&Plot>, Vec<&Plot>) = f
+        .panels
+        .iter()
+        .partition(|p| p.title.contains("true shape"));
+    assert_eq!(shapes.len(), 1, "one panel of the true shapes");
+    assert!(views.len() >= 2 && shapes[0].equal_aspect);
+    let (a, b) = (layer(shapes[0], "PQR"), layer(shapes[0], "PQ′R′"));
+    let (sa, sb) = (side_lengths(a), side_lengths(b));
+    // the check's own sides, each triangle laid in its plane: P at the origin, PQ along x
+    for (drawn, computed) in [(&sa, reals("sides of PQR")), (&sb, reals("sides of PQ′R′"))] {
+        for (x, y) in drawn.iter().zip(&computed) {
+            assert!((x - y).abs() <= 1e-9 * y, "side {x} drawn, {y} computed");
+        }
+    }
+    for l in [a, b] {
+        assert_eq!(l.points[0], [0.0, 0.0], "{}: P at the origin", l.name);
+        assert_eq!(l.points[1][1], 0.0, "{}: PQ along x", l.name);
+    }
+    let differ = sa
+        .iter()
+        .zip(&sb)
+        .any(|(x, y)| (x - y).abs() > 0.05 * x.max(*y));
+    assert!(differ, "the true shapes look alike: {sa:?}, {sb:?}");
+    // while the views show congruent images
+    for p in views {
+        let (u, v) = (
+            side_lengths(layer(p, "PQR")),
+            side_lengths(layer(p, "PQ′R′")),
+        );
+        for (x, y) in u.iter().zip(&v) {
+            assert!(
+                (x - y).abs() <= 1e-6 * x.max(*y),
+                "{}: {u:?} vs {v:?}",
+                p.title
+            );
+        }
+    }
+}
+
+/// Whether a text cites a source line ("line 1404", "lines 1385-…").
+fn cites_a_line(t: &str) -> bool {
+    t.match_indices("line").any(|(i, _)| {
+        let rest = &t[i + "line".len()..];
+        let rest = rest.strip_prefix('s').unwrap_or(rest);
+        rest.strip_prefix(' ')
+            .is_some_and(|r| r.starts_with(|c: char| c.is_ascii_digit()))
+    })
+}
+
+const SUBSCRIPTS: &str = "₀₁₂₃₄₅₆₇₈₉ₐₑₒₓₔₕₖₗₘₙₚₛₜ";
+
+/// Whether a text runs symbols together, a subscript directly followed by a letter ("T₂ₐT₂_b").
+fn runs_together(t: &str) -> bool {
+    let c: Vec<char> = t.chars().collect();
+    c.windows(2)
+        .any(|w| SUBSCRIPTS.contains(w[0]) && w[1].is_alphabetic() && !SUBSCRIPTS.contains(w[1]))
+}
+
+#[test]
+fn panel_titles_and_keys_are_words() {
+    assert!(cites_a_line("line 1404: b −") && cites_a_line("lines 1385-2158"));
+    assert!(!cites_a_line("largest error in lengths") && !cites_a_line("T₂'s line (through)"));
+    assert!(
+        runs_together("recomputed T₂ₐT₂_b") && !runs_together("T₂'s line (through Tₐ and T_b)")
+    );
+    for fig in figures() {
+        for p in &fig.panels {
+            assert!(!cites_a_line(&p.title), "{}: {}", fig.id, p.title);
+            assert!(!runs_together(&p.title), "{}: {}", fig.id, p.title);
+            for l in &p.layers {
+                assert!(!runs_together(&l.name), "{}: key {}", fig.id, l.name);
+            }
+        }
+    }
+    let ex5 = figures().iter().find(|f| f.id == "fig-ex5-panels").unwrap();
+    for (i, p) in ex5.panels.iter().enumerate() {
+        assert!(
+            p.title.starts_with(&format!("panel {}: ", i + 1)),
+            "{}",
+            p.title
+        );
+    }
+}
+
+/// The column a figure in a claim's box gets on a 400-px-wide screen: less the page's padding
+/// (0.8 rem), the box's padding and border (1 rem + 1 px) and the figure's border (1 px), each
+/// side.
+const PHONE_COLUMN: f64 = 400.0 - 2.0 * (12.8 + 17.0 + 1.0);
+
+#[test]
+fn figures_keep_their_text_legible_at_400_px() {
+    for fig in figures() {
+        for standalone in [true, false] {
+            let text = figure_svg(fig, standalone);
+            let doc = Document::parse(&text).unwrap();
+            let root = doc.root_element();
+            let width = num(root, "width");
+            let min = root.attribute("style").and_then(|s| {
+                s.split(';')
+                    .find_map(|d| d.trim().strip_prefix("min-width:"))
+                    .map(|v| v.trim().trim_end_matches("px").parse::<f64>().unwrap())
+            });
+            assert_eq!(min, min_width(fig), "{}", fig.id);
+            let shown = width.min(PHONE_COLUMN).max(min.unwrap_or(0.0));
+            let smallest = doc
+                .descendants()
+                .filter_map(|n| n.attribute("font-size"))
+                .map(|v| v.parse::<f64>().unwrap())
+                .fold(f64::INFINITY, f64::min);
+            let px = smallest * shown / width;
+            match min {
+                Some(m) => {
+                    assert!(m <= width, "{}: never drawn wider than it is", fig.id);
+                    assert!(px >= 9.0 - 1e-9, "{}: {px:.2} px at {shown} px", fig.id);
+                }
+                None => {
+                    assert!(width <= 430.0, "{}: {width} px shrinks freely", fig.id);
+                    assert!(px >= 8.5, "{}: {px:.2} px at {shown} px", fig.id);
+                }
+            }
+        }
+    }
+    // every figure of several panels in a row scrolls rather than shrinks
+    for id in ["fig-ex5-panels", "fig-two-frames", "fig-ex2-noise-1"] {
+        let f = figures().iter().find(|f| f.id == id).unwrap();
+        assert!(min_width(f).is_some(), "{id}");
+    }
 }

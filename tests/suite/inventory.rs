@@ -11,7 +11,7 @@ const ADDITIONAL_MD: &str = concat!(
     "/paper_cases/additional-claims.md"
 );
 
-/// The ids of CLAIMS.md and of the additional claims, read from the files themselves so that
+/// The ids of the inventory (claims.md) and of the additional claims, read from the files themselves so that
 /// a new claim cannot slip past. A missing file fails: the inventory is never passed
 /// without being read.
 fn claim_ids() -> BTreeSet<String> {
@@ -22,7 +22,7 @@ fn claim_ids() -> BTreeSet<String> {
     ids
 }
 
-/// The ids of CLAIMS.md alone.
+/// The ids of the inventory alone.
 fn inventory_claim_ids() -> BTreeSet<String> {
     let text = std::fs::read_to_string(CLAIMS_MD)
         .unwrap_or_else(|e| panic!("cannot read the claim inventory {CLAIMS_MD} ({e})"));

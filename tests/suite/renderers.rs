@@ -330,3 +330,88 @@ fn another_source_is_refused() {
         "{e}"
     );
 }
+
+/// What a reader sees of a page: the text outside tags, `<style>` and `<script>`, entities
+/// decoded.
+fn visible_text(page: &str) -> String {
+    let mut text = String::new();
+    let mut rest = page;
+    while let Some(at) = rest.find('<') {
+        text.push_str(&rest[..at]);
+        let after = &rest[at..];
+        let skip_to = if after.starts_with("<style") {
+            "</style>"
+        } else if after.starts_with("<script") {
+            "</script>"
+        } else {
+            ">"
+        };
+        text.push(' ');
+        rest = after
+            .find(skip_to)
+            .map_or("", |e| &after[e + skip_to.len()..]);
+    }
+    text.push_str(rest);
+    text.replace("&lt;", "<")
+        .replace("&gt;", ">")
+        .replace("&quot;", "\"")
+        .replace("&#39;", "'")
+        .replace("&amp;", "&")
+}
+
+/// Every raw piece of TeX or non-finite number a reader could meet in `text`.
+fn unreadable(text: &str, labels: &[&String]) -> Vec<String> {
+    let mut found = Vec::new();
+    for bad in ["$", "\\", "20\\%"] {
+        if text.contains(bad) {
+            let at = text.find(bad).unwrap_or(0);
+            let from = text[..at].char_indices().rev().nth(40).map_or(0, |c| c.0);
+            found.push(format!(
+                "{bad:?} in …{}…",
+                &text[from..(at + 1).min(text.len())]
+            ));
+        }
+    }
+    for word in text.split(|c: char| !c.is_alphanumeric()) {
+        if matches!(word, "inf" | "NaN") || labels.iter().any(|l| l.as_str() == word) {
+            found.push(word.to_string());
+        }
+    }
+    found
+}
+
+/// The paper's page and its Markdown show no raw TeX (no `$`, no backslash, no `\label` name
+/// of the paper) and no non-finite number.
+#[test]
+fn the_paper_report_has_no_raw_tex_and_no_non_finite_number() {
+    let r = crate::common::report().unwrap();
+    let paper = r.paper.clone().unwrap_or_else(paper);
+    let labels: Vec<&String> = paper.labels.keys().collect();
+    assert!(labels.len() >= 10, "{} label names", labels.len());
+    let page = visible_text(&html::render(r));
+    assert_eq!(
+        unreadable(&page, &labels),
+        Vec::<String>::new(),
+        "in report.html"
+    );
+    // the Markdown: outside its code spans and link targets
+    let md = r.to_markdown();
+    let prose: String = md.split('`').step_by(2).collect::<Vec<_>>().join(" ");
+    let prose = visible_text(&prose.replace("\\|", "|").replace("\\*", "*"));
+    let without_links: String = prose
+        .split("](")
+        .enumerate()
+        .map(|(i, p)| match p.split_once(')') {
+            Some((_, after)) if i > 0 => after,
+            _ => p,
+        })
+        .collect();
+    assert_eq!(
+        unreadable(&without_links, &labels),
+        Vec::<String>::new(),
+        "in report.md"
+    );
+    // the guard catches numbers already turned into text: a non-finite Real is a number
+    let nan = orthocheck::check::Value::real(f64::NAN);
+    assert!(orthocheck::report::finite::first_non_finite(&nan).is_some());
+}

@@ -1,15 +1,18 @@
 //! Orthographic structure from motion: seeded scenes recovered up to the mirror, bundle
 //! adjustment's descent, gaps, outliers, degenerate inputs named, the command line.
 
+use std::collections::BTreeSet;
+use std::f64::consts::TAU;
 use std::path::Path;
 use std::process::Command;
 
 use nalgebra::{Rotation3, Vector2, Vector3};
 use orthocheck::algebra::kabsch;
-use orthocheck::model::{rng, Body, Motion, NoiseModel, Scene, Tracks};
+use orthocheck::model::{default_names, rng, Body, Motion, NoiseModel, Scene, Tracks};
+use orthocheck::sfm::threshold::{RAYLEIGH_INLIER, RAYLEIGH_MEDIAN};
 use orthocheck::sfm::{
     bundle_adjust, reconstruct, robust::RansacOptions, tomasi_kanade, BundleOptions, Degenerate,
-    Error, Observations, Options, Reconstruction,
+    Error, Observations, Options, Reconstruction, Units,
 };
 use rand::Rng;
 
@@ -205,6 +208,13 @@ fn robust_mode_survives_twenty_percent_outliers() {
         .map(|j| t.names[j].clone())
         .collect();
     assert_eq!(kept, truth);
+    // every image of a wrong track dropped, no good image (noise ≤ 0.3 % of 2.7 ≪ 0.02)
+    let report = out.robust.clone().unwrap();
+    let wrong: Vec<String> = outliers.iter().map(|&j| t.names[j].clone()).collect();
+    assert_eq!(report.rejected, wrong);
+    assert_eq!(report.dropped.len(), outliers.len() * 6);
+    assert!(report.dropped.iter().all(|d| wrong.contains(&d.point)));
+    assert_eq!(report.threshold.value, 0.02);
     let inlier_truth: Vec<Vector3<f64>> = (0..50)
         .filter(|j| !outliers.contains(j))
         .map(|j| scene.body.points[j])
@@ -365,4 +375,196 @@ fn reconstruct_snapshot_of_a_small_input() {
             String::from_utf8_lossy(&out.stdout)
         )
     });
+}
+
+/// A standard normal pair from the seeded generator (Box–Muller).
+fn normal_pair(g: &mut impl Rng) -> Vector2<f64> {
+    let u: f64 = g.random_range(f64::MIN_POSITIVE..1.0);
+    let a: f64 = g.random_range(0.0..TAU);
+    let r = (-2.0 * u.ln()).sqrt();
+    Vector2::new(r * a.cos(), r * a.sin())
+}
+
+/// A YAML tracks file of complete frames.
+fn tracks_yaml(frames: &[Vec<Vector2<f64>>]) -> String {
+    let mut s = String::from("frames:\n");
+    for f in frames {
+        let row: Vec<String> = f.iter().map(|y| format!("[{}, {}]", y.x, y.y)).collect();
+        s.push_str(&format!("  - [{}]\n", row.join(", ")));
+    }
+    s
+}
+
+/// 40 points in 8 frames with normal image noise of `noise` × the image size per coordinate
+/// (the size: `Units`' power of two), and outliers: by point j mod 5, 0, 1, 0, 2, 0 images
+/// moved by 20 % of the image size in a random direction; the last point's every image
+/// replaced by a random point of the image. The frames, the replaced (point, frame) pairs
+/// (indices) and σ in image units.
+/// Frames of image points, the (point, frame) observations replaced, and the image size.
+type Corrupted = (Vec<Vec<Vector2<f64>>>, Vec<(usize, usize)>, f64);
+
+fn corrupted_scene(seed: u64, noise: f64) -> Corrupted {
+    let (p, k) = (40, 8);
+    let t = Scene::random(p, k, seed).tracks();
+    let units = Units::of(&Observations::from_tracks(&t)).unwrap();
+    let mut g = rng(seed + 100);
+    let mut frames = t.frames.clone();
+    for y in frames.iter_mut().flatten() {
+        *y += normal_pair(&mut g) * (noise * units.scale);
+    }
+    let mut replaced = Vec::new();
+    for j in 0..p - 1 {
+        let mut moved: Vec<usize> = Vec::new();
+        while moved.len() < [0, 1, 0, 2, 0][j % 5] {
+            let f = g.random_range(0..k);
+            if !moved.contains(&f) {
+                moved.push(f);
+            }
+        }
+        for &f in &moved {
+            let a: f64 = g.random_range(0.0..TAU);
+            frames[f][j] += Vector2::new(a.cos(), a.sin()) * (0.2 * units.scale);
+            replaced.push((j, f));
+        }
+    }
+    for (f, row) in frames.iter_mut().enumerate() {
+        let r = Vector2::new(g.random_range(-1.0..1.0), g.random_range(-1.0..1.0));
+        row[p - 1] = units.centre + r * units.scale;
+        replaced.push((p - 1, f));
+    }
+    (frames, replaced, noise * units.scale)
+}
+
+/// `reconstruct --robust --json` on a tracks file, with more arguments: the JSON.
+fn robust_json(file: &Path, more: &[&str]) -> serde_json::Value {
+    let mut args = vec![
+        "reconstruct",
+        "--input",
+        file.to_str().unwrap(),
+        "--robust",
+        "--json",
+    ];
+    args.extend_from_slice(more);
+    let out = orthocheck(&args);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert!(!text.contains("NaN") && !text.contains("inf"));
+    serde_json::from_str(&text).unwrap()
+}
+
+/// The dropped observations of a robust JSON document: (point, frame from 1).
+fn dropped_of(v: &serde_json::Value) -> BTreeSet<(String, u64)> {
+    v["dropped"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|d| {
+            assert!(d["residual"].is_number() || d["residual"].is_null());
+            (
+                d["point"].as_str().unwrap().to_string(),
+                d["frame"].as_u64().unwrap(),
+            )
+        })
+        .collect()
+}
+
+/// The replaced observations by name and frame counted from 1.
+fn named(replaced: &[(usize, usize)]) -> BTreeSet<(String, u64)> {
+    let names = default_names(40);
+    replaced
+        .iter()
+        .map(|&(j, f)| (names[j].clone(), f as u64 + 1))
+        .collect()
+}
+
+#[test]
+fn robust_mode_takes_its_threshold_from_the_data_and_drops_single_observations() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("outliers.yaml");
+    let (frames, replaced, sigma) = corrupted_scene(31, 0.001);
+    std::fs::write(&file, tracks_yaml(&frames)).unwrap();
+    let v = robust_json(&file, &[]);
+    let t = &v["threshold"];
+    assert_eq!(t["from"], "data", "{t}");
+    let value = t["value"].as_f64().unwrap();
+    // about 3.035 σ (a little more: outliers lift the median)
+    assert!(
+        value > 2.0 * sigma && value < 6.0 * sigma,
+        "{value} against σ = {sigma}"
+    );
+    let dropped = dropped_of(&v);
+    let moved = named(&replaced);
+    assert!(
+        moved.is_subset(&dropped),
+        "{:?}",
+        moved.difference(&dropped)
+    );
+    // a 99 % point drops about 1 % of the good observations; allow 5 %
+    let good = 320 - moved.len();
+    assert!(dropped.len() - moved.len() <= good / 20, "{dropped:?}");
+    // every point with at least three good images is kept; the wrong track is rejected
+    let names = default_names(40);
+    assert_eq!(v["rejected"], serde_json::json!(["P40"]));
+    let kept: Vec<&str> = v["inliers"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|n| n.as_str().unwrap())
+        .collect();
+    assert_eq!(kept, names[..39]);
+    assert_eq!(v["points"].as_object().unwrap().len(), 39);
+    // the text says the threshold and counts the dropped
+    let out = orthocheck(&["reconstruct", "--input", file.to_str().unwrap(), "--robust"]);
+    assert!(out.status.success());
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert!(
+        text.contains("threshold ") && text.contains("from the data"),
+        "{text}"
+    );
+    assert!(text.contains("--threshold sets it"), "{text}");
+    assert!(
+        text.contains(&format!("dropped observations ({} of 320", dropped.len())),
+        "{text}"
+    );
+    assert!(text.contains("rejected points (1;"), "{text}");
+}
+
+#[test]
+fn robust_mode_on_exact_data_has_a_positive_threshold_and_the_option_overrides_it() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("exact.yaml");
+    let (frames, replaced, _) = corrupted_scene(32, 0.0);
+    std::fs::write(&file, tracks_yaml(&frames)).unwrap();
+    let v = robust_json(&file, &[]);
+    let t = &v["threshold"];
+    assert_eq!(t["from"], "data", "{t}");
+    // the median residual is rounding: the floor, 2^10 ε × the image size at least, decides
+    let value = t["value"].as_f64().unwrap();
+    assert!(value >= 1024.0 * f64::EPSILON, "{t}");
+    assert_eq!(t["floored"], true, "{t}");
+    assert_eq!(dropped_of(&v), named(&replaced));
+    let given = robust_json(&file, &["--threshold", "0.05"]);
+    assert_eq!(
+        given["threshold"],
+        serde_json::json!({"value": 0.05, "from": "--threshold"})
+    );
+    assert_eq!(dropped_of(&given), named(&replaced));
+    assert_eq!(given["rejected"], serde_json::json!(["P40"]));
+}
+
+#[test]
+fn the_help_states_the_threshold_rule_of_the_constants() {
+    assert!((RAYLEIGH_INLIER - 3.035).abs() < 5e-4);
+    assert!((RAYLEIGH_MEDIAN - 1.1774).abs() < 5e-5);
+    let out = orthocheck(&["reconstruct", "--help"]);
+    let help = String::from_utf8(out.stdout).unwrap();
+    assert!(
+        help.contains("3.035 σ") && help.contains("1.1774"),
+        "{help}"
+    );
+    assert!(!help.contains("needs --threshold"), "{help}");
 }

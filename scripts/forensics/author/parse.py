@@ -1,6 +1,6 @@
 """Parse the hidden debug printouts of §5.2's example from the paper's LaTeX."""
 import re, itertools
-PAPER = '../shared/paper/000_3d77cc3ad4ea04d3.txt'
+PAPER = __import__("os").environ["ORTHOCHECK_PAPER"]  # the paper's LaTeX source (not part of the project)
 LINES = open(PAPER).read().split('\n')
 NUM = r'[-+]?(?:\d+\.?\d*|\.\d+)(?:e[-+]?\d+)?'
 

@@ -1,6 +1,6 @@
 """Task C: parse the four \\put pictures of section 5.1 (lines 721-1162)."""
 import re, numpy as np
-SRC = "../shared/paper/000_3d77cc3ad4ea04d3.txt"
+SRC = __import__("os").environ["ORTHOCHECK_PAPER"]  # the paper's LaTeX source (not part of the project)
 L = open(SRC).read().split("\n")
 def pictures():
     pics = []; cur = None

@@ -210,7 +210,8 @@ fn figure(
         .items
         .iter()
         .zip(fits)
-        .map(|(p, fit)| {
+        .enumerate()
+        .map(|(i, (p, fit))| {
             let pts: Vec<[f64; 2]> = p.points.iter().map(xy).collect();
             let mut layers = vec![
                 Layer::new(
@@ -233,8 +234,12 @@ fn figure(
                 .beneath(),
             ];
             let title = match fit {
-                Some(f) => fit_layers(p, f, blocks, box_half, truth, &mut layers),
-                None => format!("line {}", p.line),
+                Some(f) => format!(
+                    "panel {}: {}",
+                    i + 1,
+                    fit_layers(p, f, blocks, box_half, truth, &mut layers)
+                ),
+                None => format!("panel {}: no assignment fits", i + 1),
             };
             Plot::image(&title, layers)
         })
@@ -243,7 +248,7 @@ fn figure(
         id: "fig-ex5-panels".into(),
         claim: case.panels.claim.claim.clone(),
         title: "§5.2: the panels, redrawn".into(),
-        caption: "Every panel of the §5.2 figure (a triangle with a line): frame 2 re-centred at the assigned R, the tested point, the segment the paper draws (wide, beneath), and the line T₂ₐT₂_b recomputed at the printed d0 (dashed, clipped to the panel's box); a ring marks a segment endpoint farther from the line of its printed block than the rounding allows.".into(),
+        caption: "Every panel of the §5.2 figure (a triangle with a line), numbered in the paper's order: frame 2 re-centred at the assigned R, the tested point, the segment the paper draws (wide, beneath), and T₂'s line (through the images of Tₐ and T_b) recomputed at the printed d0 (dashed, clipped to the panel's box); a ring marks a segment endpoint farther from the line of its printed block than the rounding allows. Each title says whether the panel's assignment of the points is the correct one, and the sign of b it was drawn with.".into(),
         panels: plots,
     });
 }
@@ -264,7 +269,7 @@ fn fit_layers(
         .find_map(|bl| bl.recomputed.as_ref().map(|r| r.line));
     if let Some(c) = line.and_then(|l| clip_line(l[0], l[1], box_half)) {
         layers.push(Layer::new(
-            "recomputed T₂ₐT₂_b",
+            LINE_NAME,
             Shape::Line,
             Style::Computed,
             c.to_vec(),
@@ -282,17 +287,21 @@ fn fit_layers(
             off,
         ));
     }
-    let sign = if f.version < 0 { "b −" } else { "b +" };
-    format!(
-        "line {}: {}{sign}",
-        p.line,
-        if f.assignment == *truth {
-            "correct, "
-        } else {
-            ""
-        }
-    )
+    let sign = if f.version < 0 {
+        "b negative"
+    } else {
+        "b positive"
+    };
+    let which = if f.assignment == *truth {
+        "correct"
+    } else {
+        "wrong"
+    };
+    format!("{which} assignment, {sign}")
 }
+
+/// The key's name of the recomputed line: in words, not the paper's run-together symbols.
+const LINE_NAME: &str = "T₂'s line (through Tₐ and T_b), recomputed";
 
 #[cfg(test)]
 mod tests {

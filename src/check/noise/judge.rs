@@ -168,28 +168,88 @@ pub(super) struct Facts<'a> {
     pub dists: &'a [LevelResult],
 }
 
-/// The judge of a level's claim.
-pub(super) fn decide(claim: Claim, f: &Facts) -> Decision {
+/// One noise model's part in a decision: where the judge reads the model's distribution, and
+/// what it decides there.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(super) struct Part {
+    /// The fraction of the model's trials not above the value the judge reads: the bound, for
+    /// a claim on the median trial; the printed run's error otherwise (`None` when the run's
+    /// digits cannot be read).
+    pub rank: Option<f64>,
+    /// What the model decides: the median against the bound, or the run inside the typical
+    /// band.
+    pub decision: Decision,
+}
+
+/// Each model's part in the decision of `claim`, in the order of `f.dists`.
+pub(super) fn parts(claim: Claim, f: &Facts) -> Vec<Part> {
     let m = f.metric;
-    let band = || {
-        any_model(f.dists.iter().map(|r| match f.run {
-            Some(run) => judge_band(r.rank_of(m, run.metrics[m]), r.sorted[m].len()),
-            None => Decision::TooClose,
-        }))
-    };
+    f.dists
+        .iter()
+        .map(|r| {
+            let n = r.sorted[m].len();
+            match (claim, f.run) {
+                (Claim::Median(bound, d), _) => {
+                    let rank = r.rank_of(m, bound);
+                    Part {
+                        rank: Some(rank),
+                        decision: judge_median(rank, n, d),
+                    }
+                }
+                (_, Some(run)) => {
+                    let rank = r.rank_of(m, run.metrics[m]);
+                    Part {
+                        rank: Some(rank),
+                        decision: judge_band(rank, n),
+                    }
+                }
+                (_, None) => Part {
+                    rank: None,
+                    decision: Decision::TooClose,
+                },
+            }
+        })
+        .collect()
+}
+
+/// The printed run's error (over the rounding of its digits) against a bound; too close to
+/// call without a readable run.
+pub(super) fn on_run(f: &Facts, bound: f64, direction: Direction) -> Decision {
+    f.run.map_or(Decision::TooClose, |r| {
+        judge_bound(r.ranges[f.metric], bound, direction)
+    })
+}
+
+/// The judge of a level's claim: the models' parts (one model suffices), and for a bound on
+/// the printed run, the run's error against it as well.
+pub(super) fn decide(claim: Claim, f: &Facts) -> Decision {
+    let models = any_model(parts(claim, f).into_iter().map(|p| p.decision));
     match claim {
-        Claim::Typical => band(),
-        Claim::Example(bound, d) => {
-            let on_run = f
-                .run
-                .map_or(Decision::TooClose, |r| judge_bound(r.ranges[m], bound, d));
-            both(on_run, band())
+        Claim::Example(bound, d) => both(on_run(f, bound, d), models),
+        Claim::Typical | Claim::Median(..) => models,
+    }
+}
+
+/// A level's claim, the facts it is judged on, and the judge's decision: what the result
+/// reports and the figure shows.
+pub(super) struct Judged<'a> {
+    /// The claim as read.
+    pub claim: Claim,
+    /// Its facts.
+    pub facts: Facts<'a>,
+    /// The judge's decision ([`decide`]).
+    pub decision: Decision,
+}
+
+impl<'a> Judged<'a> {
+    /// `claim` judged on `facts`.
+    pub(super) fn new(claim: Claim, facts: Facts<'a>) -> Self {
+        let decision = decide(claim, &facts);
+        Judged {
+            claim,
+            facts,
+            decision,
         }
-        Claim::Median(bound, d) => any_model(
-            f.dists
-                .iter()
-                .map(|r| judge_median(r.rank_of(m, bound), r.sorted[m].len(), d)),
-        ),
     }
 }
 
@@ -355,6 +415,37 @@ mod tests {
         assert_eq!(decide(Claim::Typical, &h), Holds);
         assert!(!power(Claim::Typical, &h, Some(&shifted)).weak);
         assert!(power(Claim::Typical, &h, Some(&d)).weak);
+    }
+
+    #[test]
+    fn parts_are_read_where_the_judge_reads() {
+        let d = [uniform(10_000), uniform(20_000)];
+        let r = run(4.0);
+        let f = Facts {
+            metric: 0,
+            run: Some(&r),
+            dists: &d,
+        };
+        // the run: its rank in each model, inside the band
+        let p = parts(Claim::Example(5.0, Direction::Below), &f);
+        assert_eq!(p.len(), 2);
+        assert_eq!(p[0].rank, Some(0.4));
+        assert_eq!(p[1].rank, Some(0.2));
+        assert!(p.iter().all(|x| x.decision == Holds));
+        // the median: the bound's rank (0.6 and 0.3), above and below one half
+        let p = parts(Claim::Median(6.0, Direction::Below), &f);
+        assert_eq!((p[0].rank, p[0].decision), (Some(0.6), Holds));
+        assert_eq!((p[1].rank, p[1].decision), (Some(0.3), Fails));
+        let j = Judged::new(
+            Claim::Median(6.0, Direction::Below),
+            Facts { metric: 0, ..f },
+        );
+        assert_eq!(j.decision, Holds);
+        // no readable run: nothing to read
+        let g = Facts { run: None, ..f };
+        assert!(parts(Claim::Typical, &g).iter().all(|x| x.rank.is_none()));
+        assert_eq!(decide(Claim::Typical, &g), TooClose);
+        assert_eq!(on_run(&g, 5.0, Direction::Below), TooClose);
     }
 
     #[test]

@@ -169,8 +169,9 @@ pub fn rigidity(f1: &[Vector2<f64>], f2: &[Vector2<f64>]) -> Option<TwoFrameDege
 }
 
 /// Whether the members of a membership decision are views of one rigid body at equal scale:
-/// the equal-scale residual of their epipolar geometry within the larger of `tolerance` (the
-/// relative distance the user allows) and the rounding allowance of [`rigidity`]. `None` when
+/// the equal-scale residual of their epipolar geometry within the larger of the noise that
+/// `tolerance` (the relative epipolar distance a member may have) admits, carried to that
+/// residual, and the rounding allowance of [`rigidity`]. `None` when
 /// they are; the degenerate case otherwise.
 pub fn members_rigid(
     f1: &[Vector2<f64>],
@@ -191,9 +192,19 @@ pub fn members_rigid(
     }
     let e = epipolar(&g1, &g2);
     let [l0, l1, _, l3] = e.eigenvalues;
-    let allowance = 2.0 * crate::algebra::NEGLIGIBLE_ULPS * f64::EPSILON * l3
-        / (l1 - l0).max(f64::MIN_POSITIVE);
-    (e.determined && e.scale_residual.abs() > allowance.max(tolerance))
+    let gap = (l1 - l0).max(f64::MIN_POSITIVE);
+    let allowance = 2.0 * crate::algebra::NEGLIGIBLE_ULPS * f64::EPSILON * l3 / gap;
+    // the noise the tolerance admits, carried to the equal-scale residual: a member's distance
+    // `tolerance` is |v·row| / ‖(c, d)‖ / size, so the rows' noise is about σ = tolerance ×
+    // ‖(c, d)‖ × size per coordinate; it moves the Gram matrix by at most 2‖A‖‖ΔA‖ ≤
+    // 4√(l₃ n) σ, the null vector by that over the gap (Davis–Kahan), and q = vᵀDv by twice
+    // that (‖D‖ = 1)
+    let [_, _, c, d] = e.coefficients;
+    let m2 = g2.iter().sum::<Vector2<f64>>() / g2.len() as f64;
+    let size = g2.iter().map(|q| (q - m2).norm()).fold(0.0, f64::max);
+    let sigma = tolerance * (c * c + d * d).sqrt() * size;
+    let noise = 8.0 * (l3 * g1.len() as f64).sqrt() * sigma / gap;
+    (e.determined && e.scale_residual.abs() > allowance.max(noise))
         .then_some(TwoFrameDegenerate::NotRigid)
 }
 

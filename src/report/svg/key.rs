@@ -59,10 +59,14 @@ pub(super) fn draw_labels(s: &mut String, p: &Plot, a: &Axes) {
         } else {
             "middle"
         };
+        let mut tx = x + 9.0 * ux;
+        if anchor == "middle" && w < a.w {
+            // a centred label (a vertical line's, at the top) stays inside the plot area
+            tx = tx.clamp(a.left + 0.5 * w, a.left + a.w - 0.5 * w);
+        }
         let _ = write!(
             s,
-            "<text x=\"{:.2}\" y=\"{:.2}\" text-anchor=\"{anchor}\" fill=\"{c}\">{}</text>",
-            x + 9.0 * ux,
+            "<text x=\"{tx:.2}\" y=\"{:.2}\" text-anchor=\"{anchor}\" fill=\"{c}\">{}</text>",
             y + 9.0 * uy + 4.0,
             escape(text)
         );

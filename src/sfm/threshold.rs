@@ -1,0 +1,212 @@
+//! The inlier threshold of `reconstruct --robust` when none is given: a robust scale of the
+//! reprojection residuals.
+//!
+//! The rule works on the residual norms of image points, ‖y − ŷ‖, not on single coordinates.
+//! For errors that are normal, isotropic and of standard deviation σ per coordinate, the
+//! norm is Rayleigh distributed, P(‖e‖ ≤ r) = 1 − exp(−r²/(2σ²)). Its median is
+//! σ√(2 ln 2) ([`RAYLEIGH_MEDIAN`] σ), so σ = median / [`RAYLEIGH_MEDIAN`]: the median of
+//! all residuals is barely moved by outliers (any share below one half), and so is σ. The
+//! threshold is the norm's [`INLIER_QUANTILE`] point, σ√(−2 ln 0.01) ([`RAYLEIGH_INLIER`] σ):
+//! a good observation is dropped with probability 1 %.
+//!
+//! The residuals of a least-squares fit are smaller than the errors: a fit of P parameters
+//! to N coordinates leaves, on average, a share 1 − P/N of each coordinate's variance (the
+//! mean leverage is P/N). σ from a fit's residuals is divided by [`shrink`] = √(1 − P/N).
+//!
+//! Exact data have residuals at rounding level, and their median may even be zero; the
+//! threshold never falls below a floor ([`floor`]) that rounding cannot reach.
+
+use super::Conditioning;
+
+/// The median of the norm of a 2-D isotropic normal error, in units of its per-coordinate
+/// standard deviation σ: the Rayleigh median √(2 ln 2) = 1.1774… (from
+/// 1 − exp(−r²/2) = ½).
+pub const RAYLEIGH_MEDIAN: f64 = 1.1774100225154747;
+/// The share of good observations (normal errors) that the threshold keeps.
+pub const INLIER_QUANTILE: f64 = 0.99;
+/// The [`INLIER_QUANTILE`] point of that norm in units of σ: 1 − exp(−r²/2) = 0.99 gives
+/// r = √(−2 ln 0.01) = √(2 ln 100) = 3.0348…; the threshold is this many σ, i.e.
+/// 3.0349 / 1.1774 = 2.5776 times the median residual (before the fit's correction).
+pub const RAYLEIGH_INLIER: f64 = 3.0348542587702925;
+/// The floor in units of ε × the image size: 2^10 roundings of the largest coordinate, a
+/// thousandfold margin over the rounding of a well-conditioned reconstruction (a few ε).
+pub const FLOOR_ULPS: f64 = 1024.0;
+
+/// The robust scale behind a threshold taken from the data.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Scale {
+    /// The median residual norm (image units), over every observation.
+    pub median: f64,
+    /// The number of observations it is the median of.
+    pub observations: usize,
+    /// √(1 − P/N), the average share of an error a fit leaves in its residual (1 for the
+    /// residuals of a RANSAC sample).
+    pub shrink: f64,
+    /// σ per coordinate: median / [`RAYLEIGH_MEDIAN`] / shrink.
+    pub sigma: f64,
+    /// The rounding floor (image units), [`floor`].
+    pub floor: f64,
+}
+
+/// Where a threshold came from.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Source {
+    /// Given (`--threshold`).
+    Given,
+    /// From the residuals: max([`RAYLEIGH_INLIER`] σ, floor).
+    Data(Scale),
+}
+
+/// An inlier threshold: the largest distance (image units) from an image point to its
+/// reprojection for an inlier.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Threshold {
+    /// The threshold, image units.
+    pub value: f64,
+    /// Where it came from.
+    pub source: Source,
+}
+
+impl Threshold {
+    /// A given threshold.
+    pub fn given(value: f64) -> Threshold {
+        Threshold {
+            value,
+            source: Source::Given,
+        }
+    }
+
+    /// The threshold of a median residual norm `median` over `observations` residuals, a
+    /// fit's `shrink` and a rounding `floor`; `None` when the median is not finite (more
+    /// than half the observations have no residual) or negative.
+    pub fn from_median(
+        median: f64,
+        observations: usize,
+        shrink: f64,
+        floor: f64,
+    ) -> Option<Threshold> {
+        if !(median.is_finite() && median >= 0.0 && shrink > 0.0 && floor.is_finite()) {
+            return None;
+        }
+        let sigma = median / RAYLEIGH_MEDIAN / shrink;
+        Some(Threshold {
+            value: (RAYLEIGH_INLIER * sigma).max(floor),
+            source: Source::Data(Scale {
+                median,
+                observations,
+                shrink,
+                sigma,
+                floor,
+            }),
+        })
+    }
+
+    /// The threshold of residual norms (infinite where an observation has none; the slice
+    /// is reordered); `None` when there are none or the median is not finite.
+    pub fn from_residuals(residuals: &mut [f64], shrink: f64, floor: f64) -> Option<Threshold> {
+        let m = median(residuals)?;
+        Threshold::from_median(m, residuals.len(), shrink, floor)
+    }
+
+    /// Whether the rounding floor, not the residuals' scale, set the threshold.
+    pub fn floored(&self) -> bool {
+        match self.source {
+            Source::Given => false,
+            Source::Data(s) => RAYLEIGH_INLIER * s.sigma < s.floor,
+        }
+    }
+}
+
+/// The lower median (the element of rank ⌊(n − 1)/2⌋ in ascending order; the slice is
+/// reordered); `None` for an empty slice.
+pub fn median(v: &mut [f64]) -> Option<f64> {
+    if v.is_empty() {
+        return None;
+    }
+    let m = (v.len() - 1) / 2;
+    let (_, x, _) = v.select_nth_unstable_by(m, f64::total_cmp);
+    Some(*x)
+}
+
+/// √(1 − P/N) for a fit of `parameters` to `coordinates`; 1 when the fit has no redundancy
+/// (its residuals are rounding, and the floor decides).
+pub fn shrink(coordinates: usize, parameters: usize) -> f64 {
+    if coordinates > parameters {
+        (1.0 - parameters as f64 / coordinates as f64).sqrt()
+    } else {
+        1.0
+    }
+}
+
+/// The parameters of an orthographic reconstruction of `points` points in `frames` frames:
+/// 3 per point, 3 + 2 per camera, less the gauge (a rotation and a 3-D shift of the whole),
+/// 3p + 5k − 6 (the paper's −1 + 3p + 5(k − 1)).
+pub fn parameters(points: usize, frames: usize) -> usize {
+    (3 * points + 5 * frames).saturating_sub(6)
+}
+
+/// The factor by which rounding in a reconstruction can exceed ε × its size: the bound
+/// n·κ²·m of [`Conditioning`] (n = 2k + p, κ the factor's condition, m the metric's), and 1
+/// when there is no conditioning or the bound is not finite.
+pub fn rounding(conditioning: Option<Conditioning>, points: usize, frames: usize) -> f64 {
+    let Some(c) = conditioning else {
+        return 1.0;
+    };
+    let n = (2 * frames + points) as f64;
+    let b = n * c.factor * c.factor * c.metric;
+    if b.is_finite() {
+        b.max(1.0)
+    } else {
+        1.0
+    }
+}
+
+/// The smallest threshold: [`FLOOR_ULPS`] · ε · `size` · `rounding` (`size` the image size,
+/// the power of two of [`super::Units`]; `rounding` from [`rounding`], at least 1). No
+/// residual of exact data reaches it, so a zero median never gives a zero threshold.
+pub fn floor(size: f64, rounding: f64) -> f64 {
+    FLOOR_ULPS * f64::EPSILON * size * rounding.max(1.0)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_constants_are_their_formulas() {
+        let close = |a: f64, b: f64| (a - b).abs() <= 4.0 * f64::EPSILON * b;
+        assert!(close(RAYLEIGH_MEDIAN, (2.0 * 2f64.ln()).sqrt()));
+        assert!(close(
+            RAYLEIGH_INLIER,
+            (-2.0 * (1.0 - INLIER_QUANTILE).ln()).sqrt()
+        ));
+        // the Rayleigh distribution function at the two points
+        let cdf = |r: f64| 1.0 - (-r * r / 2.0).exp();
+        assert!((cdf(RAYLEIGH_MEDIAN) - 0.5).abs() < 1e-15);
+        assert!((cdf(RAYLEIGH_INLIER) - INLIER_QUANTILE).abs() < 1e-15);
+    }
+
+    #[test]
+    fn the_threshold_follows_the_median_and_never_falls_to_zero() {
+        let mut r = vec![3.0, f64::INFINITY, 1.0, 2.0, 100.0];
+        // the lower median of [1, 2, 3, 100, ∞] is 3
+        let t = Threshold::from_residuals(&mut r, 1.0, 0.0).unwrap();
+        assert_eq!(t.value, RAYLEIGH_INLIER * (3.0 / RAYLEIGH_MEDIAN / 1.0));
+        assert!(!t.floored());
+        let mut zeros = vec![0.0; 7];
+        let f = floor(4.0, 1.0);
+        let z = Threshold::from_residuals(&mut zeros, 1.0, f).unwrap();
+        assert!(z.value > 0.0 && z.value == f && z.floored());
+        let mut unexplained = vec![1.0, f64::INFINITY, f64::INFINITY];
+        assert!(Threshold::from_residuals(&mut unexplained, 1.0, f).is_none());
+        assert!(median(&mut []).is_none());
+    }
+
+    #[test]
+    fn a_fit_s_residuals_are_corrected_for_its_parameters() {
+        assert_eq!(shrink(100, 75), 0.5);
+        assert_eq!(shrink(10, 12), 1.0);
+        assert_eq!(parameters(40, 8), 154);
+        assert_eq!(rounding(None, 40, 8), 1.0);
+    }
+}
