@@ -107,7 +107,7 @@ pub fn power_phrase(p: &Power) -> String {
         (PowerKind::Mutant, _) => "would have rejected a changed formula or target".to_string(),
         (PowerKind::None, _) => "nothing it would have rejected".to_string(),
     };
-    if p.weak {
+    if p.weak && p.kind != PowerKind::None {
         format!("{head} (weak: values the paper would call wrong pass too)")
     } else {
         head

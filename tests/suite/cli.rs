@@ -1246,3 +1246,42 @@ fn membership_finds_a_foreign_point_at_its_default_tolerance() {
         "{text}"
     );
 }
+
+/// The paper's cases are built into the binary: `report` run from a folder that holds
+/// nothing writes the whole report, and a `--paper` file of another hash is refused (exit 2).
+#[test]
+fn report_runs_from_any_folder() {
+    let dir = tempfile::tempdir().unwrap();
+    let run = |args: &[&str]| {
+        Command::new(env!("CARGO_BIN_EXE_orthocheck"))
+            .args(args)
+            .current_dir(dir.path())
+            .env_remove("ORTHOCHECK_PAPER")
+            .output()
+            .expect("the binary runs")
+    };
+    let out = run(&["report", "--out", "out"]);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    for f in ["report.html", "report.md", "report.json"] {
+        assert!(dir.path().join("out").join(f).is_file(), "{f} missing");
+    }
+    let md = std::fs::read_to_string(dir.path().join("out/report.md")).unwrap();
+    assert!(md.contains("was not verified against a source"));
+    std::fs::write(dir.path().join("other.tex"), "\\section{Introduction}\n").unwrap();
+    let out = run(&["report", "--out", "out2", "--paper", "other.tex"]);
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("other.tex") && err.contains("SHA-256"),
+        "{err}"
+    );
+    assert!(
+        !dir.path().join("out2").exists(),
+        "nothing written for a refused source"
+    );
+}
