@@ -84,8 +84,8 @@ impl LatexSource {
     }
 }
 
-/// The bytes of `path`, refused beyond `limit` bytes.
-fn read_limited(path: &Path, limit: u64) -> Result<Vec<u8>> {
+/// The bytes of `path`, refused beyond `limit` bytes (read no further than that).
+pub(super) fn read_limited(path: &Path, limit: u64) -> Result<Vec<u8>> {
     use std::io::Read as _;
     let io = |source| Error::Io {
         path: path.to_path_buf(),

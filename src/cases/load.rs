@@ -286,26 +286,7 @@ pub fn load_cases(origin: &CaseOrigin, latex: Option<&LatexSource>) -> Result<Ve
 
 /// A case file's text, refused beyond the size limit or when it is not UTF-8.
 pub(super) fn read_case_text(path: &Path) -> Result<String> {
-    use std::io::Read as _;
-    let io = |source| Error::Io {
-        path: path.to_path_buf(),
-        source,
-    };
-    let mut bytes = Vec::new();
-    std::fs::File::open(path)
-        .map_err(io)?
-        .take(crate::input::MAX_TRACKS_BYTES + 1)
-        .read_to_end(&mut bytes)
-        .map_err(io)?;
-    if bytes.len() as u64 > crate::input::MAX_TRACKS_BYTES {
-        return Err(whole_file(
-            path,
-            format!(
-                "larger than the limit of {} bytes (see docs/limits.md)",
-                crate::input::MAX_TRACKS_BYTES
-            ),
-        ));
-    }
+    let bytes = super::latex::read_limited(path, crate::input::MAX_TRACKS_BYTES)?;
     String::from_utf8(bytes).map_err(|_| whole_file(path, "the file is not UTF-8 text".into()))
 }
 
