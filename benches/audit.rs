@@ -6,7 +6,7 @@ use criterion::{criterion_group, criterion_main, Criterion};
 use orthocheck::{cases, check};
 
 fn audit(c: &mut Criterion) {
-    let all = cases::load_all(Path::new(concat!(
+    let all = cases::load_all::<orthocheck::claims::Check>(Path::new(concat!(
         env!("CARGO_MANIFEST_DIR"),
         "/paper_cases"
     )))

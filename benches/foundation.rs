@@ -7,7 +7,8 @@ use criterion::{criterion_group, criterion_main, Criterion};
 use num_rational::BigRational;
 use num_traits::One;
 use orthocheck::algebra::{Poly, UPoly};
-use orthocheck::cases::{load_case, CaseCheck};
+use orthocheck::cases::load_case;
+use orthocheck::claims::Check;
 use orthocheck::derivations::{dof, twofold};
 
 fn dof_grid(c: &mut Criterion) {
@@ -19,12 +20,12 @@ fn dof_grid(c: &mut Criterion) {
 
 fn twofold_identity(c: &mut Criterion) {
     // goal: < 1 ms for the exact verification of eq. p3f3sqr
-    let case = load_case(Path::new(concat!(
+    let case: orthocheck::claims::Case = load_case(Path::new(concat!(
         env!("CARGO_MANIFEST_DIR"),
         "/paper_cases/twofold_squared.yaml"
     )))
     .expect("case file");
-    let CaseCheck::TwofoldSquared(t) = case.check else {
+    let Check::TwofoldSquared(t) = case.check else {
         panic!("not a twofold case")
     };
     let printed = Poly::parse(&t.polynomial.printed).expect("formula");

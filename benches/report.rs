@@ -10,7 +10,7 @@ use orthocheck::cases;
 use orthocheck::report::{html, Report};
 
 fn report(c: &mut Criterion) {
-    let all = cases::load_all(Path::new(concat!(
+    let all = cases::load_all::<orthocheck::claims::Check>(Path::new(concat!(
         env!("CARGO_MANIFEST_DIR"),
         "/paper_cases"
     )))

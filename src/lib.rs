@@ -5,6 +5,7 @@
 pub mod algebra;
 pub mod cases;
 pub mod check;
+pub mod claims;
 pub mod derivations;
 pub mod error;
 pub mod input;

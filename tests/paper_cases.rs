@@ -23,7 +23,7 @@ fn snapshot_settings() -> insta::Settings {
 }
 
 fn paper_case(path: &Path) -> datatest_stable::Result<()> {
-    let case = cases::load_case(path)?;
+    let case = cases::load_case::<orthocheck::claims::Check>(path)?;
     // one run of the whole paper serves every case (the restatements need all the others)
     let results: Vec<&check::ClaimResult> = common::report()?
         .claims
@@ -39,7 +39,9 @@ fn paper_case(path: &Path) -> datatest_stable::Result<()> {
     let verified = common::inputs()?.verification.is_some();
     let name = match case.check {
         // the restatements inherit the errata's verdicts
-        cases::CaseCheck::SourceErrata(_) | cases::CaseCheck::Restatements(_) if !verified => {
+        orthocheck::claims::Check::SourceErrata(_) | orthocheck::claims::Check::Restatements(_)
+            if !verified =>
+        {
             format!("case__{stem}__unverified")
         }
         _ => format!("case__{stem}"),
@@ -65,7 +67,7 @@ fn bad_case(path: &Path, text: String) -> datatest_stable::Result<()> {
     } else {
         None
     };
-    match cases::load_case_with(path, latex.as_ref()) {
+    match cases::load_case_with::<orthocheck::claims::Check>(path, latex.as_ref()) {
         Ok(_) => Err(format!("{} loaded, but it must fail", path.display()).into()),
         Err(e @ Error::Input { .. }) => {
             let shown = e.to_string();

@@ -16,7 +16,7 @@ use crate::limits::{
 
 /// Upper bounds on a formula's expansion.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub(super) struct Size {
+pub struct Size {
     /// Terms of the numerator.
     num: f64,
     /// Terms of the denominator.

@@ -8,7 +8,7 @@ use std::path::{Path, PathBuf};
 use serde::{Deserialize, Serialize};
 use sha2::{Digest, Sha256};
 
-use super::errata::SourceText;
+use super::quote::SourceText;
 use crate::error::{Error, InputLocation, Result};
 
 /// The environment variable naming the paper's LaTeX source when `--paper` does not.
@@ -85,7 +85,7 @@ impl LatexSource {
 }
 
 /// The bytes of `path`, refused beyond `limit` bytes (read no further than that).
-pub(super) fn read_limited(path: &Path, limit: u64) -> Result<Vec<u8>> {
+pub(crate) fn read_limited(path: &Path, limit: u64) -> Result<Vec<u8>> {
     use std::io::Read as _;
     let io = |source| Error::Io {
         path: path.to_path_buf(),

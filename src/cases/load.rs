@@ -2,35 +2,38 @@
 
 use std::path::{Path, PathBuf};
 
-use super::{validate::validate, Case, CaseOrigin, LatexSource};
+use super::{validate::validate, Case, CaseOrigin, LatexSource, Schema};
 use crate::error::{Error, InputLocation, Result};
 
 /// Read and validate one case file (its quotes unverified: no LaTeX source).
-pub fn load_case(path: &Path) -> Result<Case> {
+pub fn load_case<C: Schema>(path: &Path) -> Result<Case<C>> {
     load_case_with(path, None)
 }
 
 /// Read and validate one case file; with `latex`, its errata's quotes are verified at their
 /// lines of the source.
-pub fn load_case_with(path: &Path, latex: Option<&LatexSource>) -> Result<Case> {
+pub fn load_case_with<C: Schema>(path: &Path, latex: Option<&LatexSource>) -> Result<Case<C>> {
     let text = read_case_text(path)?;
     case_from_text(&text, path, latex)
 }
 
 /// Parse, validate and complete one case read from `path`.
-fn case_from_text(text: &str, path: &Path, latex: Option<&LatexSource>) -> Result<Case> {
-    let mut case = parse_case(text, path)?;
-    if let (super::CaseCheck::SourceErrata(c), Some(latex)) = (&mut case.check, latex) {
-        // the quotes are verified against the source as it is read
-        super::errata::attach_source(c, text, path, latex)?;
+fn case_from_text<C: Schema>(
+    text: &str,
+    path: &Path,
+    latex: Option<&LatexSource>,
+) -> Result<Case<C>> {
+    let mut case: Case<C> = parse_case(text, path)?;
+    if let Some(latex) = latex {
+        case.check.attach_source(text, path, latex)?;
     }
     case.file = Some(path.to_path_buf());
     Ok(case)
 }
 
 /// Parse and validate case text; `path` names the file in errors.
-pub fn parse_case(text: &str, path: &Path) -> Result<Case> {
-    let case: Case = parse_yaml(text, path)?;
+pub fn parse_case<C: Schema>(text: &str, path: &Path) -> Result<Case<C>> {
+    let case: Case<C> = parse_yaml(text, path)?;
     validate(&case, text, path)?;
     Ok(case)
 }
@@ -226,7 +229,7 @@ fn strip_location(message: &str) -> String {
     }
 }
 
-pub(super) fn invalid(text: &str, path: &Path, field: &str, message: String) -> Error {
+pub(crate) fn invalid(text: &str, path: &Path, field: &str, message: String) -> Error {
     Error::Input {
         location: InputLocation {
             file: path.to_path_buf(),
@@ -253,18 +256,21 @@ pub fn case_files(dir: &Path) -> Result<Vec<PathBuf>> {
 }
 
 /// Load every case of a folder (quotes unverified: no LaTeX source).
-pub fn load_all(dir: &Path) -> Result<Vec<Case>> {
+pub fn load_all<C: Schema>(dir: &Path) -> Result<Vec<Case<C>>> {
     load_cases(&CaseOrigin::Folder(dir.to_path_buf()), None)
 }
 
 /// Load every case: each file valid on its own, no id twice, and every claim a restatement
 /// restates checked by some case. With `latex`, the errata's quotes are verified against it.
-pub fn load_cases(origin: &CaseOrigin, latex: Option<&LatexSource>) -> Result<Vec<Case>> {
+pub fn load_cases<C: Schema>(
+    origin: &CaseOrigin,
+    latex: Option<&LatexSource>,
+) -> Result<Vec<Case<C>>> {
     let mut cases = Vec::new();
     let mut texts = Vec::new();
     for (p, text) in origin.case_texts()? {
-        let case = case_from_text(&text, &p, latex)?;
-        if let Some(first) = cases.iter().position(|c: &Case| c.id == case.id) {
+        let case: Case<C> = case_from_text(&text, &p, latex)?;
+        if let Some(first) = cases.iter().position(|c: &Case<C>| c.id == case.id) {
             let other = cases[first].file.as_deref().unwrap_or(Path::new("?"));
             return Err(invalid(
                 &text,
@@ -300,25 +306,25 @@ fn whole_file(path: &Path, message: String) -> Error {
 
 /// Every id a restatement restates must be a claim some case of the folder refers to
 /// (a `claim:` field anywhere in a case), or the restatement could never be decided.
-fn known_restated_claims(cases: &[Case], texts: &[(PathBuf, String)]) -> Result<()> {
+fn known_restated_claims<C: Schema>(cases: &[Case<C>], texts: &[(PathBuf, String)]) -> Result<()> {
     let mut known = std::collections::BTreeSet::new();
     for (p, text) in texts {
         let tree: serde_json::Value = parse_yaml(text, p)?;
         collect_claims(&tree, &mut known);
     }
     for (case, (p, text)) in cases.iter().zip(texts) {
-        let super::CaseCheck::Restatements(r) = &case.check else {
-            continue;
-        };
-        for (i, item) in r.items.iter().enumerate() {
-            if let Some(id) = item.restates.iter().find(|id| !known.contains(id.as_str())) {
-                return Err(invalid(
-                    text,
-                    p,
-                    &format!("check.restatements.items[{i}].restates"),
-                    format!("`{id}` is not a claim any case of the folder checks"),
-                ));
-            }
+        if let Some((id, field)) = case
+            .check
+            .restated_ids()
+            .into_iter()
+            .find(|(id, _)| !known.contains(id.as_str()))
+        {
+            return Err(invalid(
+                text,
+                p,
+                &field,
+                format!("`{id}` is not a claim any case of the folder checks"),
+            ));
         }
     }
     Ok(())

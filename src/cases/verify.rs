@@ -5,8 +5,8 @@
 
 use std::path::Path;
 
-use super::errata::{parse_lines, quote_within};
 use super::load::invalid;
+use super::quote::{parse_lines, quote_within};
 use super::{parse_yaml, CaseOrigin, LatexSource, Paper, PAPER_FILE};
 use crate::error::{Error, InputLocation, Result};
 
@@ -177,16 +177,16 @@ fn walk(v: &serde_json::Value, out: &mut Vec<(String, String)>) {
 /// What a run of the paper reads: the cases, the paper file, and, when the LaTeX source is
 /// given, what it verified.
 #[derive(Clone, Debug)]
-pub struct PaperInputs {
+pub struct PaperInputs<C> {
     /// Every case.
-    pub cases: Vec<super::Case>,
+    pub cases: Vec<super::Case<C>>,
     /// `paper.yml`.
     pub paper: Paper,
     /// The transcription checked against the source; none without one.
     pub verification: Option<Verification>,
 }
 
-impl PaperInputs {
+impl<C> PaperInputs<C> {
     /// The provenance sentence: what the source verified, or that none was given.
     pub fn transcription_sentence(&self) -> String {
         self.verification
@@ -197,9 +197,12 @@ impl PaperInputs {
 
 /// Read the cases and the paper file from `origin`; with `latex` (a path to the paper's
 /// LaTeX source), refuse a source of another hash and verify the transcription against it.
-pub fn load_inputs(origin: &CaseOrigin, latex: Option<&Path>) -> Result<PaperInputs> {
+pub fn load_inputs<C: super::Schema>(
+    origin: &CaseOrigin,
+    latex: Option<&Path>,
+) -> Result<PaperInputs<C>> {
     // the cases first: a malformed case is the first thing a user hears of
-    let unverified = super::load_cases(origin, None)?;
+    let unverified = super::load_cases::<C>(origin, None)?;
     let source = match latex {
         None => None,
         Some(p) => {

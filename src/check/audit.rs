@@ -10,9 +10,10 @@ use super::{
     ClaimBuilder, ClaimResult, Power, ResultBuilder, Tolerance, ToleranceSource, Value, Verdict,
 };
 use crate::algebra::{Poly, RatFn};
-use crate::cases::{
-    ArithmeticItem, Case, CaseCheck, FormulaAuditCase, FormulaItem, Place, TextItem,
+use crate::claims::formula_audit::{
+    ArithmeticItem, FormulaAuditCase, FormulaItem, Place, TextItem,
 };
+use crate::claims::{Case, Check};
 use crate::derivations::formulas::NAMES;
 use crate::error::Result;
 use crate::report::values::{quantities_text, value_text};
@@ -310,7 +311,7 @@ fn judged(b: &ResultBuilder, case: &FormulaAuditCase) -> Result<Vec<(ClaimResult
 }
 
 /// The audit as claim results (one per item).
-pub(super) fn check(b: &ResultBuilder, case: &FormulaAuditCase) -> Result<Vec<ClaimResult>> {
+pub(crate) fn check(b: &ResultBuilder, case: &FormulaAuditCase) -> Result<Vec<ClaimResult>> {
     Ok(judged(b, case)?.into_iter().map(|(r, _)| r).collect())
 }
 
@@ -336,10 +337,10 @@ pub fn audit_all(cases: &[Case]) -> Result<Vec<AuditItem>> {
     for case in cases {
         let b = ResultBuilder::new(case);
         match &case.check {
-            CaseCheck::FormulaAudit(c) => {
+            Check::FormulaAudit(c) => {
                 out.extend(judged(&b, c)?.into_iter().map(|(r, s)| item(&r, s)));
             }
-            CaseCheck::TwofoldSquared(t) => {
+            Check::TwofoldSquared(t) => {
                 let r = super::twofold::polynomial(&b, t)?;
                 let a = super::twofold::audit(t)?;
                 let shown = Shown {
@@ -357,7 +358,7 @@ pub fn audit_all(cases: &[Case]) -> Result<Vec<AuditItem>> {
                 };
                 out.push(item(&r, shown));
             }
-            CaseCheck::SourceErrata(c) => {
+            Check::SourceErrata(c) => {
                 let results = super::errata::check(&b, c)?;
                 out.extend(c.findings.iter().zip(&results).map(|(f, r)| {
                     let shown = Shown {
@@ -398,7 +399,7 @@ mod tests {
     use super::computed::computed_verdict;
     use super::*;
     use crate::algebra::rat;
-    use crate::cases::ComputedTest;
+    use crate::claims::formula_audit::ComputedTest;
     use crate::studies::audit::ComputedFinding;
 
     fn points(agreeing: usize) -> PointCheck {

@@ -5,7 +5,8 @@ use num_bigint::BigInt;
 use super::figure::{Figure, Layer, Plot, Shape, Style};
 use super::{ClaimBuilder, ClaimResult, Evidence, Power, ResultBuilder, Tolerance, Value, Verdict};
 use crate::algebra::Poly;
-use crate::cases::{DofCountCase, DofIdentifiabilityCase};
+use crate::claims::dof_count::DofCountCase;
+use crate::claims::dof_identifiability::DofIdentifiabilityCase;
 use crate::derivations::dof::{
     count, deficient_for_every_p, formulas_count_the_jacobian, identifiability, identifiable_at,
     is_minimum, smallest_identifiable, table, Identifiability, SHAPE_POINTS,
@@ -31,7 +32,7 @@ fn rank_evidence(e: Evidence, r: &Identifiability) -> Evidence {
 }
 
 /// The printed worked counts.
-pub(super) fn check_count(b: &ResultBuilder, case: &DofCountCase) -> Result<Vec<ClaimResult>> {
+pub(crate) fn check_count(b: &ResultBuilder, case: &DofCountCase) -> Result<Vec<ClaimResult>> {
     let mut out = Vec::new();
     for ex in &case.examples {
         let c = count(ex.points, ex.frames);
@@ -265,7 +266,7 @@ fn two_frames_claim(
 }
 
 /// The count formula, the minimum, and two-frame insufficiency, over the grid.
-pub(super) fn check_identifiability(
+pub(crate) fn check_identifiability(
     b: &ResultBuilder,
     case: &DofIdentifiabilityCase,
 ) -> Result<Vec<ClaimResult>> {

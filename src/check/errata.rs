@@ -4,9 +4,9 @@
 //! `note` does not (the rule is in `docs/verdicts.md`).
 
 use super::{ClaimBuilder, ClaimResult, Power, ResultBuilder, Value, Verdict};
-use crate::cases::{
-    parse_lines, quote_at, quote_within, Balance, Configuration, Decision, Finding, FindingKind,
-    SourceErrataCase, SourceText,
+use crate::cases::{parse_lines, quote_at, quote_within, SourceText};
+use crate::claims::source_errata::{
+    Balance, Configuration, Decision, Finding, FindingKind, SourceErrataCase,
 };
 use crate::derivations::dof;
 use crate::error::Result;
@@ -14,7 +14,7 @@ use labels::labels_decision;
 
 /// Every finding of the case as a claim result; without the paper's source (none attached
 /// when the case was read) each finding is unverified.
-pub(super) fn check(b: &ResultBuilder, case: &SourceErrataCase) -> Result<Vec<ClaimResult>> {
+pub(crate) fn check(b: &ResultBuilder, case: &SourceErrataCase) -> Result<Vec<ClaimResult>> {
     match case.text.as_ref() {
         Some(text) => case.findings.iter().map(|f| finding(b, text, f)).collect(),
         None => Ok(case.findings.iter().map(|f| unverified(b, f)).collect()),

@@ -4,7 +4,7 @@
 //! point moved off the rigid body) as the power.
 
 use super::{ClaimResult, Power, ResultBuilder, Tolerance, ToleranceSource, Value, Verdict};
-use crate::cases::IdentityCensusCase;
+use crate::claims::identity_census::IdentityCensusCase;
 use crate::error::Result;
 use crate::studies::identity_census::{census, distance_level, IdentityCensus};
 
@@ -27,7 +27,7 @@ fn level_tolerance() -> Tolerance {
     )
 }
 
-pub(super) fn check(b: &ResultBuilder, case: &IdentityCensusCase) -> Result<Vec<ClaimResult>> {
+pub(crate) fn check(b: &ResultBuilder, case: &IdentityCensusCase) -> Result<Vec<ClaimResult>> {
     let c = census(case.trials, case.seed, &case.c_factors, case.control_shift);
     let level = distance_level();
     Ok(vec![

@@ -8,7 +8,8 @@ use num_rational::BigRational;
 
 use super::{ClaimResult, Power, ResultBuilder, Tolerance, ToleranceSource, Value, Verdict};
 use crate::algebra::{exact_rank, permutations4};
-use crate::cases::{DebugAttempt, IdentityExampleCase, Printed};
+use crate::cases::Printed;
+use crate::claims::identity_example::{DebugAttempt, IdentityExampleCase};
 use crate::derivations::p4f3::{edge_index, realize};
 use crate::error::{Error, Result};
 use crate::studies::author_program::{matching_assignments, Example, Num};
@@ -76,7 +77,7 @@ fn block_assignments(ex: &Example, a: &DebugAttempt, digits: u32) -> Vec<[usize;
     matching_assignments(ex, &[g(&a.t2), g(&a.q2), g(&a.p2)])
 }
 
-pub(super) fn check(b: &ResultBuilder, case: &IdentityExampleCase) -> Result<Vec<ClaimResult>> {
+pub(crate) fn check(b: &ResultBuilder, case: &IdentityExampleCase) -> Result<Vec<ClaimResult>> {
     let ex = example(case)?;
     let fit = names_fit(case, &ex);
     let mut out = vec![frames_result(b, case, &fit), labels_result(b, case, &fit)];

@@ -5,7 +5,8 @@
 //! is in `docs/verdicts.md` ("The price of linearity").
 
 use super::{ClaimResult, Power, ResultBuilder, Tolerance, ToleranceSource, Value, Verdict};
-use crate::cases::{LinearityBody, LinearityCase, Printed};
+use crate::cases::Printed;
+use crate::claims::linearity_price::{LinearityBody, LinearityCase};
 use crate::error::Result;
 use crate::studies::linearity::{
     self, length_error, BodySpec, Bound, Cell, Design, Method, MethodErrors, RatioBounds, Results,
@@ -21,7 +22,7 @@ const PRICE_LSQ: (Method, Method) = (Method::LeastSquares, Method::TomasiKanadeB
 /// The null comparison: the §4 solver on fresh noise over itself (true ratio 1).
 const NULL: (Method, Method) = (Method::P4f3FreshNoise, Method::P4f3);
 
-pub(super) fn check(b: &ResultBuilder, case: &LinearityCase) -> Result<Vec<ClaimResult>> {
+pub(crate) fn check(b: &ResultBuilder, case: &LinearityCase) -> Result<Vec<ClaimResult>> {
     let design = design_of(case)?;
     let res = linearity::run(&design);
     let alpha = case.alpha.to_f64();

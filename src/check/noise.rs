@@ -4,7 +4,8 @@
 use super::{
     ClaimResult, Evidence, Power, ResultBuilder, Tolerance, ToleranceSource, Value, Verdict,
 };
-use crate::cases::{Direction, NoiseLevel, NoiseStudyCase, OverEdges, Quantity as Symbols};
+use crate::claims::noise_study::NoiseStudyCase;
+use crate::claims::shared::{Direction, NoiseLevel, OverEdges, Quantity as Symbols};
 use crate::derivations::noise::{LevelResult, Study, METRICS, QUANTILES};
 use crate::derivations::solver::default_edge_names;
 use crate::error::Result;
@@ -17,7 +18,7 @@ use judge::{
 mod figure;
 mod judge;
 
-pub(super) fn check(b: &ResultBuilder, case: &NoiseStudyCase) -> Result<Vec<ClaimResult>> {
+pub(crate) fn check(b: &ResultBuilder, case: &NoiseStudyCase) -> Result<Vec<ClaimResult>> {
     let mut out = Vec::new();
     let lengths: Vec<f64> = case.body.lengths.iter().map(|p| p.to_f64()).collect();
     // the printed squares when there are any (the runs are compared with them), else the
@@ -481,7 +482,7 @@ impl Context<'_> {
 /// The §4 printed runs: the body under random motions (both noise models) and, when given,
 /// at the paper's own scene (`scene[i]` for level `i`), judged like every noise level;
 /// `study` is (trials, seed).
-pub(super) fn check_runs_of_body(
+pub(crate) fn check_runs_of_body(
     b: &ResultBuilder,
     levels: &[NoiseLevel],
     truth: &[f64],

@@ -6,7 +6,9 @@ use super::figure::{central_window, thin, Figure, Layer, Plot, Shape, Style};
 use super::p3f3_restricted;
 use super::{ClaimResult, Power, ResultBuilder, Tolerance, ToleranceSource, Value, Verdict};
 use crate::algebra::Interval;
-use crate::cases::{CensusCase, P3f3ExampleCase, Printed};
+use crate::cases::Printed;
+use crate::claims::p3f3_example::P3f3ExampleCase;
+use crate::claims::shared::CensusCase;
 use crate::derivations::solver::{first_violation, Degenerate};
 use crate::error::{Error, Result};
 use crate::studies::census;
@@ -62,7 +64,7 @@ fn triples(v: &[Vec<Printed>]) -> Result<Vec<[f64; 3]>> {
         .collect()
 }
 
-pub(super) fn check_example(b: &ResultBuilder, case: &P3f3ExampleCase) -> Result<Vec<ClaimResult>> {
+pub(crate) fn check_example(b: &ResultBuilder, case: &P3f3ExampleCase) -> Result<Vec<ClaimResult>> {
     let (center, half) = case.figure.rounding_box();
     let bx = RoundingBox { center, half };
     let digits = case.solutions.significant_digits;
@@ -507,7 +509,7 @@ fn count_holds(c: &census::P3f3Census) -> bool {
         && c.truth_found == c.trials
 }
 
-pub(super) fn check_census(b: &ResultBuilder, case: &CensusCase) -> Result<Vec<ClaimResult>> {
+pub(crate) fn check_census(b: &ResultBuilder, case: &CensusCase) -> Result<Vec<ClaimResult>> {
     let c = census::p3f3(case.trials, case.seed);
     let ok = count_holds(&c);
     // the control: the same census rejects "at most one solution" whenever it sees two
@@ -550,7 +552,7 @@ fn unique_holds(c: &census::P3f4Census) -> bool {
     c.unique == c.trials && c.truth_found == c.trials && c.viewing_axis_rank < 3
 }
 
-pub(super) fn check_p3f4_census(b: &ResultBuilder, case: &CensusCase) -> Result<Vec<ClaimResult>> {
+pub(crate) fn check_p3f4_census(b: &ResultBuilder, case: &CensusCase) -> Result<Vec<ClaimResult>> {
     let c = census::p3f4(case.trials, case.frames, case.seed);
     let ok = unique_holds(&c);
     Ok(case

@@ -3,7 +3,7 @@
 //! data (`ex2-discriminant`). Computation lives in `studies::ex2_restricted`.
 
 use super::{ClaimResult, Power, ResultBuilder, Tolerance, ToleranceSource, Value, Verdict};
-use crate::cases::P3f3ExampleCase;
+use crate::claims::p3f3_example::P3f3ExampleCase;
 use crate::studies::ex2_restricted::{run, Input, Restricted};
 use crate::studies::rounding::{inside, RoundingBox};
 

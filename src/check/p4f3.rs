@@ -5,7 +5,9 @@
 use super::figure::{Figure, Layer, Plot, Shape, Style};
 use super::p4f3_joint;
 use super::{ClaimResult, Power, ResultBuilder, Tolerance, ToleranceSource, Value, Verdict};
-use crate::cases::{CensusCase, P4f3ExampleCase, Printed};
+use crate::cases::Printed;
+use crate::claims::p4f3_example::P4f3ExampleCase;
+use crate::claims::shared::CensusCase;
 use crate::derivations::noise::LevelResult;
 use crate::error::Result;
 use crate::model::Body;
@@ -48,7 +50,7 @@ fn sensitive(median_error: f64, eps: f64) -> bool {
     median_error >= SENSITIVE_AMPLIFICATION * eps
 }
 
-pub(super) fn check_example(b: &ResultBuilder, case: &P4f3ExampleCase) -> Result<Vec<ClaimResult>> {
+pub(crate) fn check_example(b: &ResultBuilder, case: &P4f3ExampleCase) -> Result<Vec<ClaimResult>> {
     let digits = case.body.significant_digits.unwrap_or(6);
     let squares: Vec<f64> = case.body.squares.iter().map(Printed::to_f64).collect();
     let sq_half: Vec<f64> = case
@@ -403,7 +405,7 @@ fn planar_degenerate(c: &census::P4f3Census) -> bool {
     !c.planar_ranks.is_empty() && c.planar_ranks.iter().all(|r| *r < 6)
 }
 
-pub(super) fn check_census(b: &ResultBuilder, case: &CensusCase) -> Result<Vec<ClaimResult>> {
+pub(crate) fn check_census(b: &ResultBuilder, case: &CensusCase) -> Result<Vec<ClaimResult>> {
     let c = census::p4f3(case.trials, case.seed);
     let generic = generic_holds(&c);
     let planar = planar_degenerate(&c);

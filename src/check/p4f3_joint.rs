@@ -4,7 +4,8 @@
 //! in `studies::ex4_joint`; here the verdicts.
 
 use super::{ClaimResult, Power, ResultBuilder, Tolerance, ToleranceSource, Value, Verdict};
-use crate::cases::{P4f3ExampleCase, Printed};
+use crate::cases::Printed;
+use crate::claims::p4f3_example::P4f3ExampleCase;
 use crate::studies::ex4;
 use crate::studies::ex4_joint::{
     figure_system, joint_fit, joint_mutants, FigureSystem, JointFit, JointInput, JointMutant,

@@ -4,7 +4,8 @@
 //! `studies::solution_count`; here the verdicts (rules in docs/verdicts.md).
 
 use super::{ClaimResult, Power, ResultBuilder, Tolerance, Value, Verdict};
-use crate::cases::{Printed, SolutionCountCase};
+use crate::cases::Printed;
+use crate::claims::solution_count::SolutionCountCase;
 use crate::error::Result;
 use crate::studies::solution_count::{self, P3f3Count, P4f3Count};
 
@@ -39,7 +40,7 @@ fn ratio_verdict(printed: usize, computed: Option<usize>) -> Verdict {
 }
 
 /// Run the case: the three-point and four-point counts, then the literature's ratios.
-pub(super) fn check(b: &ResultBuilder, case: &SolutionCountCase) -> Result<Vec<ClaimResult>> {
+pub(crate) fn check(b: &ResultBuilder, case: &SolutionCountCase) -> Result<Vec<ClaimResult>> {
     let three = solution_count::p3f3_count(case.instances, case.seed);
     let four = solution_count::p4f3_count(case.instances, case.seed);
     let mut out = vec![three_points(b, case, &three), four_points(b, case, &four)];

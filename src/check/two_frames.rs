@@ -7,7 +7,8 @@ use nalgebra::Vector3;
 
 use super::figure::{Figure, Layer, Plot, Shape, Style};
 use super::{ClaimResult, Power, ResultBuilder, Tolerance, ToleranceSource, Value, Verdict};
-use crate::cases::{Printed, TwoFramesCase};
+use crate::cases::Printed;
+use crate::claims::two_frames::TwoFramesCase;
 use crate::derivations::dof::identifiability;
 use crate::derivations::two_frames::{align, trefoil, view, Counterexample};
 use crate::error::Result;
@@ -139,7 +140,7 @@ fn counterexample_result(b: &ResultBuilder, case: &TwoFramesCase) -> ClaimResult
     r.verdict(Verdict::holds(judge_counterexample(&fit)))
 }
 
-pub(super) fn check(b: &ResultBuilder, case: &TwoFramesCase) -> Result<Vec<ClaimResult>> {
+pub(crate) fn check(b: &ResultBuilder, case: &TwoFramesCase) -> Result<Vec<ClaimResult>> {
     let mut out = vec![counterexample_result(b, case)];
     let fam = family_census(
         case.points,

@@ -4,7 +4,8 @@
 use nalgebra::Vector3;
 
 use super::{ClaimResult, Power, ResultBuilder, Tolerance, ToleranceSource, Value, Verdict};
-use crate::cases::{DrawnMember, Printed, TwoFramesCase};
+use crate::cases::Printed;
+use crate::claims::two_frames::{DrawnMember, TwoFramesCase};
 use crate::studies::drawn_member::{member, read, rebuild, theta_bound, Picture, Reading};
 
 /// The drawn angle agrees with the printed points' when their difference lies within the
@@ -24,7 +25,7 @@ fn fold(a: f64) -> f64 {
     }
 }
 
-fn flat(d: &crate::cases::Drawing) -> Vec<f64> {
+fn flat(d: &crate::claims::two_frames::Drawing) -> Vec<f64> {
     let p = |x: &[Printed; 2]| [x[0].to_f64(), x[1].to_f64()];
     let mut v: Vec<f64> = p(&d.corner).to_vec();
     d.edges.iter().for_each(|e| v.extend(p(e)));

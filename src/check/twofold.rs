@@ -2,7 +2,7 @@
 
 use super::audit::{points_details, points_tolerance};
 use super::{ClaimResult, Power, ResultBuilder, Tolerance, Value, Verdict};
-use crate::cases::{parse_signs, TwofoldCase};
+use crate::claims::twofold_squared::{parse_signs, TwofoldCase};
 use crate::error::Result;
 use crate::studies::twofold::{census, twofold, TwofoldStudy};
 
@@ -164,7 +164,7 @@ pub(super) fn polynomial(b: &ResultBuilder, case: &TwofoldCase) -> Result<ClaimR
     Ok(r.verdict(identity_verdict(&s)))
 }
 
-pub(super) fn check(b: &ResultBuilder, case: &TwofoldCase) -> Result<Vec<ClaimResult>> {
+pub(crate) fn check(b: &ResultBuilder, case: &TwofoldCase) -> Result<Vec<ClaimResult>> {
     Ok(vec![relations(b, case), polynomial(b, case)?])
 }
 

@@ -3,7 +3,8 @@
 use std::io::Write as _;
 use std::path::{Path, PathBuf};
 
-use orthocheck::cases::{Case, CaseCheck, TwofoldCase};
+use orthocheck::claims::twofold_squared::TwofoldCase;
+use orthocheck::claims::{Case, Check};
 use orthocheck::report::Report;
 use orthocheck::{cases, check, report, studies, Error};
 
@@ -65,7 +66,7 @@ fn selected(script_id: &str, id: &str) -> bool {
 fn export(loaded: &[Case], a: &Args, dir: &Path) -> Result<(), Error> {
     let mut scripts = Vec::new();
     for case in loaded {
-        if let CaseCheck::FormulaAudit(c) = &case.check {
+        if let Check::FormulaAudit(c) = &case.check {
             scripts.extend(studies::audit::sympy_scripts(c)?);
         }
     }
@@ -111,7 +112,7 @@ fn export(loaded: &[Case], a: &Args, dir: &Path) -> Result<(), Error> {
 /// The twofold-squared case named `id`, if `id` names one: it is shown in full.
 fn twofold_case<'a>(loaded: &'a [Case], id: &str) -> Option<&'a TwofoldCase> {
     loaded.iter().find_map(|c| match &c.check {
-        CaseCheck::TwofoldSquared(t) if c.id == id => Some(t),
+        Check::TwofoldSquared(t) if c.id == id => Some(t),
         _ => None,
     })
 }
@@ -120,7 +121,7 @@ fn twofold_case<'a>(loaded: &'a [Case], id: &str) -> Option<&'a TwofoldCase> {
 pub fn run(a: Args) -> Result<(), Error> {
     let origin = cases::CaseOrigin::from_arg(a.cases.as_deref());
     let source = cases::source_path(a.paper.as_deref());
-    let loaded = cases::load_inputs(&origin, source.as_deref())?.cases;
+    let loaded = cases::load_inputs::<Check>(&origin, source.as_deref())?.cases;
     if let Some(dir) = &a.out {
         return export(&loaded, &a, dir);
     }

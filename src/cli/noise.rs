@@ -4,7 +4,7 @@ use std::fmt::Write as _;
 use std::path::PathBuf;
 
 use clap::ValueEnum;
-use orthocheck::cases::{Case, CaseCheck};
+use orthocheck::claims::{Case, Check};
 use orthocheck::derivations::noise::LevelSummary;
 use orthocheck::studies::noise_request::{ModelChoice, NoiseRequest, RequestError};
 use orthocheck::{cases, Error};
@@ -61,7 +61,7 @@ impl From<ModelArg> for ModelChoice {
 pub fn run(a: Args) -> Result<(), Error> {
     check_limits(&a).map_err(Error::InvalidInput)?;
     let origin = cases::CaseOrigin::from_arg(a.cases.as_deref());
-    let all = cases::load_cases(&origin, None)?;
+    let all = cases::load_cases::<Check>(&origin, None)?;
     let request = NoiseRequest {
         case: a.case.clone(),
         levels: a.levels,
@@ -97,12 +97,7 @@ pub fn run(a: Args) -> Result<(), Error> {
 fn noise_ids(all: &[Case]) -> String {
     let ids: Vec<&str> = all
         .iter()
-        .filter(|c| {
-            matches!(
-                c.check,
-                CaseCheck::NoiseStudy(_) | CaseCheck::P4f3Example(_)
-            )
-        })
+        .filter(|c| matches!(c.check, Check::NoiseStudy(_) | Check::P4f3Example(_)))
         .map(|c| c.id.as_str())
         .collect();
     if ids.is_empty() {

@@ -5,6 +5,7 @@ use std::io::{IsTerminal, Write as _};
 use std::path::PathBuf;
 use std::time::Instant;
 
+use orthocheck::claims::Check;
 use orthocheck::report::Report;
 use orthocheck::{cases, provenance, Error};
 
@@ -28,7 +29,7 @@ pub struct Args {
 pub fn run(args: Args) -> Result<(), Error> {
     let origin = cases::CaseOrigin::from_arg(args.cases.as_deref());
     let source = cases::source_path(args.paper.as_deref());
-    let inputs = cases::load_inputs(&origin, source.as_deref())?;
+    let inputs = cases::load_inputs::<Check>(&origin, source.as_deref())?;
     let all = &inputs.cases;
     // an unwritable folder is found before the report is computed
     orthocheck::report::prepare_output_dir(&args.out)?;

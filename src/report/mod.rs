@@ -22,8 +22,8 @@ use std::path::Path;
 
 use serde::Serialize;
 
-use crate::cases::Case;
 use crate::check::{ClaimResult, Verdict};
+use crate::claims::Case;
 use crate::error::Result;
 
 pub use crate::cases::Paper;
@@ -124,7 +124,7 @@ impl Report {
         mut provenance: Provenance,
         progress: &dyn Fn(usize, &str),
     ) -> Result<Report> {
-        let (claims, figures) = crate::check::run_all_full(cases, progress)?;
+        let (claims, figures) = crate::claims::run_all_full(cases, progress)?;
         if provenance.command.is_empty() {
             provenance.command = "cargo run --release -- report".into();
         }

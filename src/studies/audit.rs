@@ -10,7 +10,9 @@ use num_traits::One;
 
 use super::points::{agree_at_points, PointCheck};
 use crate::algebra::{Monomial, Poly, RatFn};
-use crate::cases::{ArithmeticItem, ComputedTest, FormulaAuditCase, FormulaItem, Relation};
+use crate::claims::formula_audit::{
+    ArithmeticItem, ComputedTest, FormulaAuditCase, FormulaItem, Relation,
+};
 use crate::derivations::appendix_a::quadratic_formula_solves;
 use crate::derivations::formulas::{
     derived, ordered_choices, ordered_choices_enumerated, quadratic_in_squares,

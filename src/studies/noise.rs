@@ -2,7 +2,7 @@
 //! runs at every printed level under both noise models, and the errors of a printed run with
 //! the rounding of its digits carried along. Numbers only; the judging is in `check`.
 
-use crate::cases::NoiseStudyCase;
+use crate::claims::noise_study::NoiseStudyCase;
 use crate::derivations::noise::{models, run_level, stream, LevelResult, Study};
 use crate::derivations::p4f3::realize;
 use crate::derivations::rounding::quantile;

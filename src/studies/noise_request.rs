@@ -1,7 +1,7 @@
 //! A noise study as the command line asks for it: a noise case of the paper with the user's
 //! levels, trials, seed and model in place of the case's own.
 
-use crate::cases::{Case, CaseCheck};
+use crate::claims::{Case, Check};
 use crate::derivations::noise::{run_levels, LevelSummary, Study};
 use crate::error::Error;
 
@@ -67,11 +67,11 @@ pub struct NoiseRun {
 /// table's body under random motions, as the report runs them).
 fn study_of_case(case: &Case) -> Result<(Study, Vec<f64>), RequestError> {
     match &case.check {
-        CaseCheck::NoiseStudy(nc) => Ok((
+        Check::NoiseStudy(nc) => Ok((
             crate::check::study_of(nc).map_err(RequestError::Study)?,
             nc.levels.iter().map(|l| l.level.to_f64()).collect(),
         )),
-        CaseCheck::P4f3Example(p) => {
+        Check::P4f3Example(p) => {
             let squares: Vec<f64> = p.body.squares.iter().map(|s| s.to_f64()).collect();
             let body =
                 crate::studies::noise::body_of(&[], &squares).map_err(RequestError::Study)?;
@@ -144,11 +144,11 @@ mod tests {
 
     fn cases() -> Vec<Case> {
         let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/paper_cases");
-        crate::cases::load_all(std::path::Path::new(dir)).unwrap()
+        crate::cases::load_all::<crate::claims::Check>(std::path::Path::new(dir)).unwrap()
     }
 
     fn first(cases: &[Case], noise: bool) -> String {
-        let is_noise = |c: &&Case| matches!(c.check, CaseCheck::NoiseStudy(_));
+        let is_noise = |c: &&Case| matches!(c.check, Check::NoiseStudy(_));
         let c = cases.iter().find(|c| is_noise(c) == noise).unwrap();
         c.id.clone()
     }

@@ -8,7 +8,9 @@
 use std::path::{Path, PathBuf};
 use std::sync::OnceLock;
 
-use orthocheck::cases::{self, Case, CaseOrigin, PaperInputs};
+use orthocheck::cases::{self, CaseOrigin};
+use orthocheck::claims::Case;
+use orthocheck::claims::PaperInputs;
 use orthocheck::report::{Provenance, Report};
 
 /// The folder of the paper's cases.
@@ -43,7 +45,8 @@ pub fn inputs() -> Result<&'static PaperInputs, String> {
     INPUTS
         .get_or_init(|| {
             let origin = CaseOrigin::Folder(Path::new(CASES_DIR).to_path_buf());
-            cases::load_inputs(&origin, paper_source().as_deref()).map_err(|e| e.to_string())
+            cases::load_inputs::<orthocheck::claims::Check>(&origin, paper_source().as_deref())
+                .map_err(|e| e.to_string())
         })
         .as_ref()
         .map_err(Clone::clone)

@@ -2,8 +2,9 @@
 //! every symbol of the source reaches the reader in its order. The checker reads the source
 //! and the output with scanners of its own (`checker`), not with the renderer's tokenizer.
 
-use orthocheck::cases::{CaseCheck, FormulaAuditCase};
 use orthocheck::check::Value;
+use orthocheck::claims::formula_audit::FormulaAuditCase;
+use orthocheck::claims::Check;
 use orthocheck::report::math::{math_html, math_text, Macros};
 
 use crate::common;
@@ -354,9 +355,9 @@ fn case_formulas() -> Vec<(String, String)> {
     for case in common::cases().expect("the paper's cases load") {
         let mut add = |what: String, s: &str| out.push((format!("{}: {what}", case.id), s.into()));
         match &case.check {
-            CaseCheck::FormulaAudit(a) => audit_formulas(a, &mut add),
-            CaseCheck::TwofoldSquared(t) => add("polynomial".into(), &t.polynomial.printed),
-            CaseCheck::DofIdentifiability(d) => {
+            Check::FormulaAudit(a) => audit_formulas(a, &mut add),
+            Check::TwofoldSquared(t) => add("polynomial".into(), &t.polynomial.printed),
+            Check::DofIdentifiability(d) => {
                 add("unknowns".into(), &d.formula.unknowns);
                 add("measurements".into(), &d.formula.measurements);
             }
@@ -501,7 +502,7 @@ fn eq_p3f3sqr_reads_2a2b2() {
     let item = all
         .iter()
         .find_map(|c| match &c.check {
-            CaseCheck::FormulaAudit(a) => a
+            Check::FormulaAudit(a) => a
                 .formulas
                 .iter()
                 .find(|f| f.place.label.as_deref() == Some("p3f3sqr")),
@@ -525,7 +526,7 @@ fn eq_p3f3sqr_reads_2a2b2() {
     let twofold = all
         .iter()
         .find_map(|c| match &c.check {
-            CaseCheck::TwofoldSquared(t) => Some(&t.polynomial.printed),
+            Check::TwofoldSquared(t) => Some(&t.polynomial.printed),
             _ => None,
         })
         .expect("the twofold-squared case");

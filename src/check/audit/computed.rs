@@ -3,8 +3,8 @@
 use num_rational::BigRational;
 
 use super::Shown;
-use crate::cases::{ComputedItem, ComputedTest};
 use crate::check::{ClaimBuilder, ClaimResult, Power, ResultBuilder, Tolerance, Value, Verdict};
+use crate::claims::formula_audit::{ComputedItem, ComputedTest};
 use crate::derivations::two_frames::FourthRelation;
 use crate::studies::audit::ComputedFinding;
 

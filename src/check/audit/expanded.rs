@@ -3,7 +3,7 @@
 
 use super::{ClaimBuilder, ClaimResult, Power, ResultBuilder, Shown, Tolerance, Value, Verdict};
 use crate::algebra::Poly;
-use crate::cases::FormulaItem;
+use crate::claims::formula_audit::FormulaItem;
 use crate::derivations::formulas::NAMES;
 use crate::studies::audit::{ExpandedFinding, Form, Screened};
 

@@ -2,8 +2,9 @@
 //! to the drawn cube by `studies::figure_labels`.
 
 use super::{ClaimBuilder, Decided};
-use crate::cases::{LabelPicture, NamedPoint, Printed};
+use crate::cases::Printed;
 use crate::check::Value;
+use crate::claims::source_errata::{LabelPicture, NamedPoint};
 use crate::studies::figure_labels::{fit, LabelFit, Labelled, Picture};
 
 /// The point `name`, relative to the origin, with the half unit of its printed digits.

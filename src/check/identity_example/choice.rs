@@ -5,7 +5,7 @@ use nalgebra::Vector2;
 
 use super::debug::Block;
 use super::{num_g, ClaimResult, Power, ResultBuilder, Value, Verdict};
-use crate::cases::IdentityExampleCase;
+use crate::claims::identity_example::IdentityExampleCase;
 use crate::studies::author_program::choice_d::{distance_spread, fit_rules, PrintedD, Rule};
 use crate::studies::author_program::program::LINE_DIFF;
 use crate::studies::author_program::Example;

@@ -4,7 +4,7 @@
 
 use super::debug::Block;
 use super::{ClaimResult, Power, ResultBuilder, Tolerance, ToleranceSource, Value, Verdict};
-use crate::cases::IdentityExampleCase;
+use crate::claims::identity_example::IdentityExampleCase;
 use crate::studies::author_program::convention::{census, ConventionCensus};
 use crate::studies::author_program::Example;
 use crate::studies::identity_census::{distance_level, rank_example, ExampleRanking};

@@ -5,7 +5,8 @@ use super::{
     block_assignments, num_g, ClaimResult, Power, ResultBuilder, Tolerance, ToleranceSource, Value,
     Verdict,
 };
-use crate::cases::{DebugAttempt, IdentityExampleCase, Printed};
+use crate::cases::Printed;
+use crate::claims::identity_example::{DebugAttempt, IdentityExampleCase};
 use crate::studies::author_program::program::Bounded;
 use crate::studies::author_program::{
     delta_at_bound, float_sign_at_bound, recompute, DeltaAtBound, Example, Recomputed,

@@ -4,9 +4,10 @@ use super::debug::Block;
 use super::{
     num_f, num_g, ClaimResult, Power, ResultBuilder, Tolerance, ToleranceSource, Value, Verdict,
 };
-use crate::cases::{IdentityExampleCase, Printed};
+use crate::cases::Printed;
 use crate::check::figure::{clip_line, Figure, Layer, Plot, Shape, Style};
 use crate::check::ClaimBuilder;
+use crate::claims::identity_example::IdentityExampleCase;
 use crate::studies::author_program::{Example, Num};
 use crate::studies::panels::{fit_panel, BlockLine, PanelFit};
 
@@ -255,7 +256,7 @@ fn figure(
 
 /// The layers a fitted panel adds (the recomputed line, the endpoints off it) and its title.
 fn fit_layers(
-    p: &crate::cases::Panel,
+    p: &crate::claims::identity_example::Panel,
     f: &PanelFit,
     blocks: &[Block],
     box_half: f64,

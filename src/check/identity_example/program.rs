@@ -7,7 +7,8 @@ use nalgebra::Vector2;
 
 use super::debug::{judge_number, Block, NumberCheck};
 use super::{num_g, ClaimResult, Power, ResultBuilder, Tolerance, ToleranceSource, Value, Verdict};
-use crate::cases::{DebugAttempt, IdentityExampleCase, Printed};
+use crate::cases::Printed;
+use crate::claims::identity_example::{DebugAttempt, IdentityExampleCase};
 use crate::studies::author_program::program::{
     run_bounded, Bounded, LINE_DIFF, LINE_L, LINE_R, P2_X, PA_Z, PB_Z, PRINTED,
 };

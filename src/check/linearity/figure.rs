@@ -1,8 +1,8 @@
 //! The figure of the price of linearity: per body, the median error of every method against
 //! the noise level, both on logarithmic axes, in percent as the paper speaks of both.
 
-use crate::cases::LinearityCase;
 use crate::check::figure::{Figure, Layer, Plot, Shape, Style};
+use crate::claims::linearity_price::LinearityCase;
 use crate::studies::linearity::{Method, Results};
 
 /// Errors and levels are drawn in percent.

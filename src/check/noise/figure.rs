@@ -4,9 +4,9 @@
 //! that says in the judge's numbers why the level holds or fails.
 
 use super::judge::{any_model, on_run, parts, Claim, Decision, Judged, Part, TYPICAL_BAND};
-use crate::cases::{Direction, NoiseLevel};
 use crate::check::figure::{ecdf, percent_text, Figure, Layer, Plot, Shape, Style};
 use crate::check::ClaimResult;
+use crate::claims::shared::{Direction, NoiseLevel};
 use crate::derivations::noise::LevelResult;
 use crate::numfmt::sig;
 use crate::report::values::{sampled_digits, sig_digits};

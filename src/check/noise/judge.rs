@@ -2,8 +2,10 @@
 //! the rule of `docs/verdicts.md` ("Statistical claims"), each tested on both sides of its
 //! threshold.
 
-use crate::cases::{Direction, NoiseLevel, OverEdges, Quantity as Symbols, StatementSubject};
 use crate::check::{Power, Verdict};
+use crate::claims::shared::{
+    Direction, NoiseLevel, OverEdges, Quantity as Symbols, StatementSubject,
+};
 use crate::derivations::noise::LevelResult;
 use crate::studies::noise::RunErrors;
 

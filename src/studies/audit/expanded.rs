@@ -12,7 +12,7 @@ use num_traits::One;
 use super::{accepted_quadratic, flip_one_term, Form};
 use crate::algebra::modp::{agree_mod_p, proportional_mod_p, ModPAgreement};
 use crate::algebra::{Monomial, Poly, RatFn};
-use crate::cases::{FormulaAuditCase, FormulaItem, Relation};
+use crate::claims::formula_audit::{FormulaAuditCase, FormulaItem, Relation};
 use crate::derivations::appendix_a::in_squares;
 use crate::derivations::formulas::derived;
 use crate::derivations::twofold::frame_equation;

@@ -11,7 +11,7 @@ use num_rational::BigRational;
 use super::expanded::Expansions;
 use super::{expanded, formulas};
 use crate::algebra::{Poly, RatFn};
-use crate::cases::FormulaAuditCase;
+use crate::claims::formula_audit::FormulaAuditCase;
 use crate::derivations::formulas::derived;
 use crate::error::{Error, Result};
 

@@ -9,8 +9,9 @@ use std::collections::BTreeMap;
 
 use serde::Deserialize;
 
-use super::load::invalid;
-use super::{ClaimRef, Printed};
+use crate::cases::{
+    invalid, parse_lines, quote_at, quote_within, ClaimRef, Printed, SourceText, Validator,
+};
 use crate::error::Result;
 
 /// The errata of the text.
@@ -23,13 +24,6 @@ pub struct SourceErrataCase {
     /// source is given (absent otherwise: the quotes are then unverified).
     #[serde(skip)]
     pub text: Option<SourceText>,
-}
-
-/// The lines of the LaTeX source.
-#[derive(Clone, Debug, Default, PartialEq)]
-pub struct SourceText {
-    /// Line `n` (1-based) is `lines[n - 1]`.
-    pub lines: Vec<String>,
 }
 
 /// Whether a finding changes what the text says.
@@ -168,53 +162,6 @@ pub struct PrintedLabel {
     pub at: Vec<Printed>,
 }
 
-/// A line range `a-b` (or `a`), 1-based, inclusive.
-pub fn parse_lines(s: &str) -> Option<(usize, usize)> {
-    let s = s.trim();
-    let (a, b) = match s.split_once(['-', '–']) {
-        Some((a, b)) => (a.trim().parse().ok()?, b.trim().parse().ok()?),
-        None => {
-            let a = s.parse().ok()?;
-            (a, a)
-        }
-    };
-    (a >= 1 && a <= b).then_some((a, b))
-}
-
-/// Whether `quote` (white space collapsed) stands in `lines[first..=last]`, starting on the
-/// first line and ending on the last: a quote at the wrong lines, or at lines wider than it,
-/// is not found.
-pub fn quote_at(text: &SourceText, first: usize, last: usize, quote: &str) -> bool {
-    let want: Vec<char> = collapse(quote).chars().collect();
-    if want.is_empty() || first == 0 || last > text.lines.len() || first > last {
-        return false;
-    }
-    // the collapsed text of the range, each character with its source line
-    let mut chars: Vec<(char, usize)> = Vec::new();
-    for n in first..=last {
-        for w in text.lines[n - 1].split_whitespace() {
-            if !chars.is_empty() {
-                chars.push((' ', n));
-            }
-            chars.extend(w.chars().map(|c| (c, n)));
-        }
-    }
-    chars.windows(want.len()).any(|win| {
-        win[0].1 == first
-            && win[want.len() - 1].1 == last
-            && win.iter().zip(&want).all(|((c, _), w)| c == w)
-    })
-}
-
-/// Whether `needle` (white space collapsed) stands anywhere within `lines[first..=last]`.
-pub fn quote_within(text: &SourceText, first: usize, last: usize, needle: &str) -> bool {
-    let want = collapse(needle);
-    if want.is_empty() || first == 0 || last > text.lines.len() || first > last {
-        return false;
-    }
-    collapse(&text.lines[first - 1..last].join("\n")).contains(&want)
-}
-
 /// The source strings of a picture's printed coordinates: its corner, edge ends and labels.
 fn picture_strings(p: &LabelPicture) -> Vec<String> {
     let xy = |v: &[Printed]| {
@@ -240,18 +187,13 @@ fn picture_strings(p: &LabelPicture) -> Vec<String> {
     out
 }
 
-/// White space runs as one space, trimmed.
-fn collapse(s: &str) -> String {
-    s.split_whitespace().collect::<Vec<_>>().join(" ")
-}
-
 /// Verify every quote of the case at its lines of `latex` and attach the source's lines: a
 /// quote that is not there is an input error naming the field.
 pub(super) fn attach_source(
     c: &mut SourceErrataCase,
     case_text: &str,
     case_path: &Path,
-    latex: &super::LatexSource,
+    latex: &crate::cases::LatexSource,
 ) -> Result<()> {
     let path = &latex.path;
     let text = latex.text.clone();
@@ -301,39 +243,85 @@ pub(super) fn attach_source(
     Ok(())
 }
 
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    fn text() -> SourceText {
-        SourceText {
-            lines: ["one two", "  three\tfour ", "five", ""]
-                .iter()
-                .map(|s| s.to_string())
-                .collect(),
+/// Result ids unique, line ranges that parse, a correction and a reading for each finding.
+pub(super) fn checks(c: &SourceErrataCase, v: &Validator) -> Result<()> {
+    let base = "findings";
+    let mut seen = std::collections::BTreeSet::new();
+    for (i, f) in c.findings.iter().enumerate() {
+        if !seen.insert((f.claim.claim.as_str(), f.id.as_str())) {
+            return v.err(
+                &format!("{base}[{i}].id"),
+                format!("{}/{} appears twice", f.claim.claim, f.id),
+            );
+        }
+        let ranges = std::iter::once(&f.claim.lines).chain(f.also.iter().map(|p| &p.lines));
+        if let Some(bad) = ranges.clone().find(|l| parse_lines(l).is_none()) {
+            return v.err(
+                &format!("{base}[{i}].claim.lines"),
+                format!("`{bad}` is not a line range a-b"),
+            );
+        }
+        if f.corrected.trim().is_empty() || f.defect.trim().is_empty() {
+            return v.err(
+                &format!("{base}[{i}].corrected"),
+                "say the defect and the correction".into(),
+            );
+        }
+        match &f.decide {
+            Some(Decision::DofCount {
+                printed, corrected, ..
+            }) if corrected.is_empty() || printed == corrected => {
+                return v.err(
+                    &format!("{base}[{i}].decide"),
+                    "the corrected reading must name configurations, other than the printed".into(),
+                );
+            }
+            Some(Decision::FigureLabels {
+                origin,
+                points,
+                pictures,
+                ..
+            }) => {
+                figure_labels(origin, points, pictures, v, &format!("{base}[{i}].decide"))?;
+            }
+            _ => {}
         }
     }
+    Ok(())
+}
 
-    #[test]
-    fn line_ranges_parse() {
-        assert_eq!(parse_lines("119-122"), Some((119, 122)));
-        assert_eq!(parse_lines("157"), Some((157, 157)));
-        assert_eq!(parse_lines("12–10"), None);
-        assert_eq!(parse_lines("0"), None);
-        assert_eq!(parse_lines("x"), None);
+/// Coordinates of the right lengths; every label (as printed and as renamed) names a point.
+fn figure_labels(
+    origin: &str,
+    points: &[NamedPoint],
+    pictures: &[LabelPicture],
+    v: &Validator,
+    field: &str,
+) -> Result<()> {
+    let known = |n: &str| points.iter().any(|p| p.name == n);
+    if !known(origin) || points.iter().any(|p| p.at.len() != 3) {
+        return v.err(
+            field,
+            "the points need three coordinates each, the origin among them".into(),
+        );
     }
-
-    #[test]
-    fn a_quote_is_found_only_at_its_own_lines() {
-        let t = text();
-        assert!(quote_at(&t, 1, 2, "two three four"));
-        assert!(quote_at(&t, 2, 2, "three four"));
-        assert!(quote_at(&t, 1, 3, "two\n three four five"));
-        // wider or shifted ranges, a changed word, an empty quote: not found
-        assert!(!quote_at(&t, 1, 3, "two three four"));
-        assert!(!quote_at(&t, 2, 3, "two three four"));
-        assert!(!quote_at(&t, 1, 2, "two three fours"));
-        assert!(!quote_at(&t, 1, 2, "  "));
-        assert!(!quote_at(&t, 3, 9, "five"));
+    for (j, p) in pictures.iter().enumerate() {
+        let shapes = p.corner.len() == 2
+            && p.ends.len() == 3
+            && p.ends.iter().all(|e| e.len() == 2)
+            && p.labels.iter().all(|l| l.at.len() == 2);
+        let named = p.labels.iter().all(|l| known(&l.name))
+            && p.rename.values().all(|n| known(n))
+            && p.rename
+                .keys()
+                .all(|k| p.labels.iter().any(|l| &l.name == k))
+            && p.labels.iter().any(|l| l.name == origin);
+        if !shapes || !named {
+            return v.err(
+                &format!("{field}.figure_labels.pictures[{j}]"),
+                "a picture needs a corner, three edge ends, labels of known points (the origin's among them)".into(),
+            );
+        }
     }
+    Ok(())
 }

@@ -1,90 +1,10 @@
-//! §5: the two-frame construction, the identity example with its debug printouts and panels, the identity census.
+//! The case schema of §5.2's example: the frames, the hidden table, the debug printouts, the panels.
 
 use serde::Deserialize;
 
-use super::{ClaimRef, Printed};
-
-/// §5.1's printed construction and the general two-frame claims.
-#[derive(Clone, Debug, Deserialize, PartialEq)]
-#[serde(deny_unknown_fields)]
-pub struct TwoFramesCase {
-    /// The printed points P, Q, R, Q′, R′.
-    pub counterexample: PrintedPoints,
-    /// The construction as the text describes it.
-    pub construction: ClaimRef,
-    /// "no possibility of recovery … from two images" (the family, at random scenes).
-    pub family: ClaimRef,
-    /// "the forth point T2 does carry only one piece of information".
-    pub fourth_point: ClaimRef,
-    /// §5.4: curves.
-    pub curves: ClaimRef,
-    /// Points of the random scenes (≥ 4).
-    pub points: usize,
-    /// Random scenes.
-    pub trials: usize,
-    /// Samples of the curve.
-    pub curve_samples: usize,
-    /// The angles β of the family members compared (each in (0, π)).
-    pub betas: Vec<f64>,
-    /// The control: how far one point of frame 2 is moved off the body (fraction of the
-    /// image size), which the family's reprojection must then reject.
-    pub control_shift: f64,
-    /// The counterexample's mutant: Q′'s second coordinate moved by this many half units.
-    pub mutant_half_units: f64,
-    /// The member of the family the figures draw, when judged.
-    #[serde(default)]
-    pub drawn_member: Option<DrawnMember>,
-    /// Seed.
-    pub seed: u64,
-}
-
-/// §5.1's figures as drawn, against the printed points.
-#[derive(Clone, Debug, Deserialize, PartialEq)]
-#[serde(deny_unknown_fields)]
-pub struct DrawnMember {
-    /// The claim.
-    pub claim: ClaimRef,
-    /// The figure label the text says shows the rotated body (the other shows the original).
-    pub rotated_figure: String,
-    /// The pictures.
-    pub drawings: Vec<Drawing>,
-}
-
-/// One picture: drawing coordinates as printed in its `\put` commands.
-#[derive(Clone, Debug, Deserialize, PartialEq)]
-#[serde(deny_unknown_fields)]
-pub struct Drawing {
-    /// Line range.
-    pub lines: String,
-    /// The figure label it belongs to.
-    pub figure: String,
-    /// The hidden corner of the cube, where its three thin edges start.
-    pub corner: [Printed; 2],
-    /// The other ends of the three thin edges.
-    pub edges: Vec<[Printed; 2]>,
-    /// The names of the three body points labelled (P first).
-    pub label_names: Vec<String>,
-    /// Their label positions.
-    pub labels: Vec<[Printed; 2]>,
-    /// The line n (two ends).
-    pub n: [[Printed; 2]; 2],
-    /// One frame-1 ray (two ends).
-    pub frame1_ray: [[Printed; 2]; 2],
-    /// The frame-2 rays (two ends each).
-    pub frame2_rays: Vec<[[Printed; 2]; 2]>,
-}
-
-/// Printed 3-D points.
-#[derive(Clone, Debug, Deserialize, PartialEq)]
-#[serde(deny_unknown_fields)]
-pub struct PrintedPoints {
-    /// The claim.
-    pub claim: ClaimRef,
-    /// Names, as printed.
-    pub names: Vec<String>,
-    /// Coordinates, as printed.
-    pub points: Vec<[Printed; 3]>,
-}
+use crate::cases::{ClaimRef, Printed, Validator};
+use crate::error::Result;
+use crate::limits;
 
 /// §5.2's example.
 #[derive(Clone, Debug, Deserialize, PartialEq)]
@@ -255,25 +175,87 @@ pub struct Panel {
     pub segment: Vec<[Printed; 2]>,
 }
 
-/// The identity tests over seeded random scenes.
-#[derive(Clone, Debug, Deserialize, PartialEq)]
-#[serde(deny_unknown_fields)]
-pub struct IdentityCensusCase {
-    /// "Three traced points ensure that … we can identify the line".
-    pub line: ClaimRef,
-    /// The procedure (c, b, a, T_a, T_b) and its c.
-    pub procedure: ClaimRef,
-    /// §5.3: five points.
-    pub five_points: ClaimRef,
-    /// The abstract's and the conclusions' identification claim.
-    pub tracing: ClaimRef,
-    /// Random scenes.
-    pub trials: usize,
-    /// Values of c per scene, as multiples of the smallest allowed c.
-    pub c_factors: Vec<f64>,
-    /// The control: how far T₂ (and S₂) is moved off the body (fraction of the image size),
-    /// which the same tests must then reject.
-    pub control_shift: f64,
-    /// Seed.
-    pub seed: u64,
+pub(super) fn sizes(c: &IdentityExampleCase, v: &Validator) -> Result<()> {
+    v.limit(
+        "census_trials",
+        "census_trials",
+        c.census_trials,
+        limits::CASE_TRIALS,
+    )?;
+    if !c.census_c_factor.is_finite() || !c.debug.mutant_half_units.is_finite() {
+        return v.err("census_c_factor", "must be a finite number".into());
+    }
+    v.digits("table.significant_digits", c.table.significant_digits)?;
+    v.digits("debug.significant_digits", c.debug.significant_digits)?;
+    v.names("frames.figure_labels", &c.frames.figure_labels)?;
+    v.names("table.point_names", &c.table.point_names)?;
+    v.names("table.columns", &c.table.columns)?;
+    v.names("debug.program_order", &c.debug.program_order)
+}
+
+pub(super) fn checks(c: &IdentityExampleCase, v: &Validator) -> Result<()> {
+    let f = &c.frames;
+    if f.frame1.len() != 4 || f.frame2.len() != 4 || f.figure_labels.len() != 4 {
+        return v.err(
+            "frames.frame1",
+            "needs two frames of 4 points and 4 figure labels".into(),
+        );
+    }
+    let t = &c.table;
+    let n = t.columns.len();
+    if n != 6
+        || [&t.real, &t.real2, &t.squared, &t.projected1, &t.projected2]
+            .iter()
+            .any(|r| r.len() != n)
+        || t.columns.iter().any(|h| h.chars().count() != 2)
+    {
+        return v.err(
+            "table.columns",
+            "needs 6 two-letter columns and 6 values per row".into(),
+        );
+    }
+    if let Some(i) = c
+        .panels
+        .items
+        .iter()
+        .position(|p| p.points.len() != 4 || p.segment.len() != 2)
+    {
+        return v.err(
+            &format!("panels.items[{i}].points"),
+            "needs 4 points and a segment of 2".into(),
+        );
+    }
+    let names = &t.point_names;
+    let mut order = c.debug.program_order.clone();
+    order.sort();
+    let mut sorted = names.clone();
+    sorted.sort();
+    if names.len() != 4 || order != sorted {
+        return v.err(
+            "debug.program_order",
+            "needs four point names, and the program order a permutation of them".into(),
+        );
+    }
+    if c.debug.quantities.len() != 12 || c.debug.mutant_half_units <= 1.0 {
+        return v.err(
+            "debug.quantities",
+            "needs the 12 labels of a block's recomputed numbers and a mutant of more than one half unit".into(),
+        );
+    }
+    if c.debug.printed_labels.len() != 31
+        || c.debug
+            .d_factors
+            .iter()
+            .any(|k| !(k.is_finite() && *k > 0.0))
+    {
+        return v.err(
+            "debug.printed_labels",
+            "needs the 31 labels of a block's printed numbers, and positive finite d factors"
+                .into(),
+        );
+    }
+    if c.census_c_factor.is_nan() || c.census_c_factor < 1.0 {
+        return v.err("census_c_factor", "must be at least 1".into());
+    }
+    Ok(())
 }

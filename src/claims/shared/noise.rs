@@ -2,42 +2,9 @@
 
 use serde::Deserialize;
 
-use super::{ClaimRef, Printed};
-
-/// A noise study as the paper reports it.
-#[derive(Clone, Debug, Deserialize, PartialEq)]
-#[serde(deny_unknown_fields)]
-pub struct NoiseStudyCase {
-    /// The solver the paper used.
-    pub solver: crate::model::StudySolver,
-    /// The body.
-    pub body: NoiseBody,
-    /// Frames per trial.
-    pub frames: usize,
-    /// Trials per level and noise model.
-    pub trials: usize,
-    /// Seed.
-    pub seed: u64,
-    /// The levels the paper reports.
-    pub levels: Vec<NoiseLevel>,
-}
-
-/// The body of a noise study: printed lengths (and squares, when printed).
-#[derive(Clone, Debug, Deserialize, PartialEq)]
-#[serde(deny_unknown_fields)]
-pub struct NoiseBody {
-    /// The claim about the printed body, if any.
-    #[serde(default)]
-    pub claim: Option<ClaimRef>,
-    /// Printed lengths in edge order (PQ, QR, RP, then TP, TQ, TR for four points).
-    pub lengths: Vec<Printed>,
-    /// Printed squares, if printed.
-    #[serde(default)]
-    pub squares: Vec<Printed>,
-    /// Significant digits the program printed the squares with.
-    #[serde(default)]
-    pub significant_digits: Option<u32>,
-}
+use crate::cases::{ClaimRef, Printed, Validator};
+use crate::error::Result;
+use crate::limits;
 
 /// What the paper's symbols say the printed values are.
 #[derive(Clone, Copy, Debug, Deserialize, PartialEq, Eq, serde::Serialize)]
@@ -115,4 +82,24 @@ pub enum Direction {
     Below,
     /// The error is above the bound.
     Above,
+}
+
+/// ε of each level in [0, 1] (a negative ε empties the sampler's range).
+pub fn levels(v: &Validator, at: &str, levels: &[NoiseLevel]) -> Result<()> {
+    v.list(at, levels.len())?;
+    if levels.len() > limits::NOISE_LEVELS {
+        return v.err(
+            at,
+            format!(
+                "more than {} noise levels (see docs/limits.md)",
+                limits::NOISE_LEVELS
+            ),
+        );
+    }
+    for (i, l) in levels.iter().enumerate() {
+        if let Err(m) = limits::noise_level("level", l.level.to_f64()) {
+            return v.err(&format!("{at}[{i}].level"), m);
+        }
+    }
+    Ok(())
 }

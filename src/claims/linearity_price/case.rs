@@ -3,7 +3,8 @@
 
 use serde::Deserialize;
 
-use super::{ClaimRef, Printed};
+use crate::cases::{ClaimRef, Printed, Validator};
+use crate::error::Result;
 
 /// The comparison study behind §4's "the linearity has clearly its price".
 #[derive(Clone, Debug, Deserialize, PartialEq)]
@@ -61,10 +62,7 @@ pub struct LinearityBody {
 pub const MAX_RANDOM_POINTS: usize = 20;
 
 /// Checks serde cannot express: sizes, names, levels and the deciding subset.
-pub(super) fn validate(
-    c: &LinearityCase,
-    v: &super::validate::Validator,
-) -> crate::error::Result<()> {
+pub(super) fn validate(c: &LinearityCase, v: &Validator) -> Result<()> {
     v.limit(
         "check.linearity_price.trials",
         "trials",
@@ -114,7 +112,7 @@ pub(super) fn validate(
 }
 
 /// A body is printed edges of three or more points, or random points, not both.
-fn body(b: &LinearityBody, at: &str, v: &super::validate::Validator) -> crate::error::Result<()> {
+fn body(b: &LinearityBody, at: &str, v: &Validator) -> Result<()> {
     match (b.lengths.len(), b.random_points) {
         (0, Some(p)) if (3..=MAX_RANDOM_POINTS).contains(&p) => Ok(()),
         (0, Some(p)) => v.err(

@@ -1,9 +1,10 @@
-//! Exact solution counts (`solution_count`): what the paper says about the number of
+//! The case schema of exact solution counts: what the paper says about the number of
 //! solutions of three and four points in three frames, and what the literature prints.
 
 use serde::Deserialize;
 
-use super::{ClaimRef, Printed};
+use crate::cases::{ClaimRef, Printed, Validator};
+use crate::error::Result;
 
 /// A count the paper states in words, with the number those words bound.
 #[derive(Clone, Debug, Deserialize, PartialEq)]
@@ -47,4 +48,23 @@ pub struct SolutionCountCase {
     pub instances: usize,
     /// Seed of the first instance (the others follow it).
     pub seed: u64,
+}
+
+/// The printed counts must be whole numbers (they are counts of solutions).
+pub(super) fn checks(c: &SolutionCountCase, v: &Validator) -> Result<()> {
+    let fields = [
+        ("three_points.at_most", &c.three_points.at_most),
+        ("four_points.at_most", &c.four_points.at_most),
+        ("literature.three_points", &c.literature.three_points),
+        ("literature.four_points", &c.literature.four_points),
+    ];
+    for (field, p) in fields {
+        if p.to_integer().is_none() || p.value < num_rational::BigRational::from_integer(0.into()) {
+            return v.err(
+                field,
+                format!("`{}` is not a whole number of solutions", p.text),
+            );
+        }
+    }
+    Ok(())
 }

@@ -5,7 +5,9 @@ use std::fmt;
 
 use serde::Deserialize;
 
-use super::{ClaimRef, Printed};
+use crate::algebra::Poly;
+use crate::cases::{ClaimRef, Printed, Validator};
+use crate::error::Result;
 
 /// The formula audit.
 #[derive(Clone, Debug, Deserialize, PartialEq)]
@@ -211,4 +213,59 @@ pub struct TextItem {
     pub corrected: String,
     /// Why it matters to a reader reproducing the result.
     pub effect: String,
+}
+
+pub(super) fn checks(c: &FormulaAuditCase, v: &Validator) -> Result<()> {
+    formula_audit_sizes(c, v)?;
+    for (i, d) in c.definitions.iter().enumerate() {
+        v.rat_formula(&format!("definitions[{i}].printed"), &d.printed)?;
+    }
+    for (i, f) in c.formulas.iter().enumerate() {
+        let at = |k: &str| format!("formulas[{i}].{k}");
+        if let Some(p) = &f.printed {
+            v.rat_formula(&at("printed"), p)?;
+        }
+        if let Some(p) = &f.corrected {
+            v.rat_formula(&at("corrected"), p)?;
+        }
+        if f.printed.is_none() && f.corrected.is_none() {
+            return v.err(
+                &at("printed"),
+                "needs a printed or a corrected formula".into(),
+            );
+        }
+    }
+    for (i, a) in c.arithmetic.iter().enumerate() {
+        for (j, st) in a.steps.iter().enumerate() {
+            let field = format!("arithmetic[{i}].steps[{j}]");
+            v.formula_size(&field, st, &Default::default())?;
+            if Poly::parse(st).is_err() {
+                return v.err(
+                    &format!("arithmetic[{i}].steps[{j}]"),
+                    format!("'{st}' does not parse"),
+                );
+            }
+        }
+    }
+    Ok(())
+}
+
+/// The audit's formulas within the formula limits, each definition counted at its size
+/// wherever a later formula names it (the audit substitutes definitions).
+fn formula_audit_sizes(c: &FormulaAuditCase, v: &Validator) -> Result<()> {
+    let mut defs = std::collections::BTreeMap::new();
+    for (i, d) in c.definitions.iter().enumerate() {
+        let field = format!("definitions[{i}].printed");
+        let size = v.formula_size(&field, &d.printed, &defs)?;
+        defs.insert(d.name.clone(), size);
+    }
+    for (i, f) in c.formulas.iter().enumerate() {
+        for (k, text) in [("printed", &f.printed), ("corrected", &f.corrected)] {
+            if let Some(t) = text {
+                let field = format!("formulas[{i}].{k}");
+                v.formula_size(&field, t, &defs)?;
+            }
+        }
+    }
+    Ok(())
 }

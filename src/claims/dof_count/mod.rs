@@ -1,0 +1,29 @@
+//! §2.1's worked counts: degrees of freedom of points and frames, as printed.
+
+mod case;
+
+pub use case::*;
+
+use crate::cases::Validator;
+use crate::check::{ClaimResult, ResultBuilder};
+use crate::claims::ClaimKind;
+use crate::error::Result;
+
+impl ClaimKind for DofCountCase {
+    fn trials(&self) -> Vec<(&'static str, usize)> {
+        Vec::new()
+    }
+
+    fn validate(&self, v: &Validator) -> Result<()> {
+        case::sizes(self, v)?;
+        case::checks(self, v)
+    }
+
+    fn seeds(&self) -> Vec<u64> {
+        vec![self.seed]
+    }
+
+    fn run(&self, b: &ResultBuilder, _earlier: &[ClaimResult]) -> Result<Vec<ClaimResult>> {
+        crate::check::dof::check_count(b, self)
+    }
+}

@@ -1,0 +1,29 @@
+//! Identifiability decided by Jacobian rank (§2.1, the abstract).
+
+mod case;
+
+pub use case::*;
+
+use crate::cases::Validator;
+use crate::check::{ClaimResult, ResultBuilder};
+use crate::claims::ClaimKind;
+use crate::error::Result;
+
+impl ClaimKind for DofIdentifiabilityCase {
+    fn trials(&self) -> Vec<(&'static str, usize)> {
+        Vec::new()
+    }
+
+    fn validate(&self, v: &Validator) -> Result<()> {
+        case::sizes(self, v)?;
+        case::checks(self, v)
+    }
+
+    fn seeds(&self) -> Vec<u64> {
+        vec![self.seed]
+    }
+
+    fn run(&self, b: &ResultBuilder, _earlier: &[ClaimResult]) -> Result<Vec<ClaimResult>> {
+        crate::check::dof::check_identifiability(b, self)
+    }
+}

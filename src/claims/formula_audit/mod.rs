@@ -1,0 +1,34 @@
+//! Every displayed formula and derivation step, machine-checked against its derivation.
+
+mod case;
+
+pub use case::*;
+
+use crate::cases::Validator;
+use crate::check::{ClaimResult, ResultBuilder};
+use crate::claims::ClaimKind;
+use crate::error::Result;
+
+impl ClaimKind for FormulaAuditCase {
+    fn trials(&self) -> Vec<(&'static str, usize)> {
+        vec![("evaluation_points", self.evaluation_points)]
+    }
+
+    fn validate(&self, v: &Validator) -> Result<()> {
+        v.limit(
+            "evaluation_points",
+            "evaluation_points",
+            self.evaluation_points,
+            crate::limits::EVALUATION_POINTS,
+        )?;
+        case::checks(self, v)
+    }
+
+    fn seeds(&self) -> Vec<u64> {
+        vec![self.seed]
+    }
+
+    fn run(&self, b: &ResultBuilder, _earlier: &[ClaimResult]) -> Result<Vec<ClaimResult>> {
+        crate::check::audit::check(b, self)
+    }
+}

@@ -1,0 +1,28 @@
+//! §4's price of linearity: the paper's solvers against the standard method.
+
+mod case;
+
+pub use case::*;
+
+use crate::cases::Validator;
+use crate::check::{ClaimResult, ResultBuilder};
+use crate::claims::ClaimKind;
+use crate::error::Result;
+
+impl ClaimKind for LinearityCase {
+    fn trials(&self) -> Vec<(&'static str, usize)> {
+        vec![("trials", self.trials)]
+    }
+
+    fn validate(&self, v: &Validator) -> Result<()> {
+        case::validate(self, v)
+    }
+
+    fn seeds(&self) -> Vec<u64> {
+        vec![self.seed]
+    }
+
+    fn run(&self, b: &ResultBuilder, _earlier: &[ClaimResult]) -> Result<Vec<ClaimResult>> {
+        crate::check::linearity::check(b, self)
+    }
+}

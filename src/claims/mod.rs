@@ -1,0 +1,242 @@
+//! The claims of the paper, one folder per kind of case: each folder holds the kind's case
+//! schema, its validation and limits, its seeds, its study (or its calls to the shared engines
+//! of [`crate::studies`]), its judge and its figures. A kind's folder is named as its case
+//! files name it under `check:`.
+//!
+//! Every kind implements [`ClaimKind`] and is registered once, in the [`kinds!`] list below:
+//! that list is the only place where the kinds are enumerated.
+
+use std::path::Path;
+
+use serde::Deserialize;
+
+use crate::cases::{LatexSource, Schema, Validator};
+use crate::check::{figure::Figure, ClaimResult, ResultBuilder};
+use crate::error::Result;
+
+pub mod dof_count;
+pub mod dof_identifiability;
+pub mod formula_audit;
+pub mod identity_census;
+pub mod identity_example;
+pub mod linearity_price;
+pub mod noise_study;
+pub mod not_reproducible;
+pub mod p3f3_census;
+pub mod p3f3_example;
+pub mod p3f4_census;
+pub mod p4f3_census;
+pub mod p4f3_example;
+pub mod restatements;
+pub mod shared;
+pub mod solution_count;
+pub mod source_errata;
+pub mod two_frames;
+pub mod twofold_squared;
+
+/// A case file with its check, one of the registered kinds.
+pub type Case = crate::cases::Case<Check>;
+
+/// The cases, the paper file and the verification, the check of each case one of the kinds.
+pub type PaperInputs = crate::cases::PaperInputs<Check>;
+
+/// What every kind of claim does. The registry calls these in this order: `trials` and
+/// `validate` as the file is read, then `run`, restatements last.
+pub trait ClaimKind {
+    /// Every count of trials, points or instances the case asks for, with its field: each must
+    /// be at least 1, since a check over nothing holds vacuously. No default, so that a new
+    /// kind cannot forget the rule; a kind without trials returns none.
+    fn trials(&self) -> Vec<(&'static str, usize)>;
+
+    /// What serde cannot check: counts, limits (`docs/limits.md`), formulas that parse. `v`
+    /// names fields relative to `check.<kind>`.
+    fn validate(&self, v: &Validator) -> Result<()>;
+
+    /// Every seed the case sets (the report lists them, so that a run can be repeated).
+    fn seeds(&self) -> Vec<u64>;
+
+    /// The claim results (figures go to `b`). `earlier` holds the results of every kind that
+    /// is not a restatement; only restatements read it.
+    fn run(&self, b: &ResultBuilder, earlier: &[ClaimResult]) -> Result<Vec<ClaimResult>>;
+
+    /// Whether the kind is decided from the other cases' results (so runs after them).
+    fn restates(&self) -> bool {
+        false
+    }
+
+    /// Claim ids the case restates, with the field naming each (checked against the folder).
+    fn restated_ids(&self) -> Vec<(String, String)> {
+        Vec::new()
+    }
+
+    /// Attach the paper's LaTeX source as the case is read (the errata verify their quotes).
+    fn attach_source(&mut self, _text: &str, _path: &Path, _latex: &LatexSource) -> Result<()> {
+        Ok(())
+    }
+}
+
+/// The registry: `name => Variant(Type)`, one line per kind, `name` its folder and the key
+/// under `check:` (serde's snake case of `Variant`, tested). It declares [`Check`] and its one
+/// dispatch to the kind's [`ClaimKind`].
+macro_rules! kinds {
+    ($($(#[$doc:meta])* $name:ident => $variant:ident($ty:ty),)*) => {
+        /// The `check:` of a case file: one variant per registered kind.
+        #[derive(Clone, Debug, Deserialize, PartialEq)]
+        #[serde(rename_all = "snake_case", deny_unknown_fields)]
+        pub enum Check {
+            $($(#[$doc])* $variant($ty),)*
+        }
+
+        impl Check {
+            /// The kind of this check.
+            pub fn kind(&self) -> &dyn ClaimKind {
+                match self { $(Check::$variant(c) => c,)* }
+            }
+
+            fn kind_mut(&mut self) -> &mut dyn ClaimKind {
+                match self { $(Check::$variant(c) => c,)* }
+            }
+
+            /// The kind's name, as case files and folders name it.
+            pub fn name(&self) -> &'static str {
+                match self { $(Check::$variant(_) => stringify!($name),)* }
+            }
+        }
+
+        /// Every registered kind: its name and its variant's name.
+        pub const KINDS: &[(&str, &str)] = &[$((stringify!($name), stringify!($variant))),*];
+    };
+}
+
+kinds! {
+    /// §2.1's worked counts.
+    dof_count => DofCount(dof_count::DofCountCase),
+    /// §2.1 and the abstract: identifiability decided by Jacobian rank.
+    dof_identifiability => DofIdentifiability(dof_identifiability::DofIdentifiabilityCase),
+    /// Eq. p3f3sqr and the signed relations.
+    twofold_squared => TwofoldSquared(twofold_squared::TwofoldCase),
+    /// §2's worked example.
+    p3f3_example => P3f3Example(p3f3_example::P3f3ExampleCase),
+    /// §4's worked example.
+    p4f3_example => P4f3Example(p4f3_example::P4f3ExampleCase),
+    /// §4's uniqueness over generic and degenerate scenes.
+    p4f3_census => P4f3Census(p4f3_census::P4f3Census),
+    /// §2.2's solution count over generic and degenerate scenes.
+    p3f3_census => P3f3Census(p3f3_census::P3f3Census),
+    /// §3's uniqueness over generic and special motions.
+    p3f4_census => P3f4Census(p3f4_census::P3f4Census),
+    /// Claims the paper gives no data for: what is printed and what a reproduction lacks.
+    not_reproducible => NotReproducible(not_reproducible::NotReproducibleCase),
+    /// Every displayed formula and derivation step, machine-checked.
+    formula_audit => FormulaAudit(formula_audit::FormulaAuditCase),
+    /// §5.1 and §5.4: two frames are not enough; the counterexample; curves.
+    two_frames => TwoFrames(two_frames::TwoFramesCase),
+    /// §5.2 and §5.3 over seeded random scenes: the identity tests.
+    identity_census => IdentityCensus(identity_census::IdentityCensusCase),
+    /// §5.2's example: the frames, the hidden table, the debug printouts, the panels.
+    identity_example => IdentityExample(identity_example::IdentityExampleCase),
+    /// Restatements (discussion, conclusions): each decided by the claims it restates.
+    restatements => Restatements(restatements::RestatementsCase),
+    /// A noise study (§2, §3).
+    noise_study => NoiseStudy(noise_study::NoiseStudyCase),
+    /// Errata of the text, each quoted at its lines of the LaTeX source.
+    source_errata => SourceErrata(source_errata::SourceErrataCase),
+    /// Exact solution counts of three and four points in three frames, and the literature's.
+    solution_count => SolutionCount(solution_count::SolutionCountCase),
+    /// §4's price of linearity: the paper's solvers against the standard method.
+    linearity_price => LinearityPrice(linearity_price::LinearityCase),
+}
+
+impl Schema for Check {
+    fn validate(&self, v: &Validator) -> Result<()> {
+        let v = v.at(&format!("check.{}", self.name()));
+        for (field, n) in self.kind().trials() {
+            v.positive(field, n)?;
+        }
+        self.kind().validate(&v)
+    }
+
+    fn attach_source(&mut self, text: &str, path: &Path, latex: &LatexSource) -> Result<()> {
+        self.kind_mut().attach_source(text, path, latex)
+    }
+
+    fn restated_ids(&self) -> Vec<(String, String)> {
+        let at = format!("check.{}", self.name());
+        self.kind()
+            .restated_ids()
+            .into_iter()
+            .map(|(id, field)| (id, format!("{at}.{field}")))
+            .collect()
+    }
+}
+
+impl Case {
+    /// Every seed the case sets.
+    pub fn seeds(&self) -> Vec<u64> {
+        self.check.kind().seeds()
+    }
+}
+
+/// Run one case into its claim results (a restatement has nothing to restate on its own).
+pub fn run_case(case: &Case) -> Result<Vec<ClaimResult>> {
+    Ok(run_case_full(case, &[])?.0)
+}
+
+/// Run one case into its claim results and the figures its checks drew; `earlier` are the
+/// results a restatement restates.
+pub fn run_case_full(
+    case: &Case,
+    earlier: &[ClaimResult],
+) -> Result<(Vec<ClaimResult>, Vec<Figure>)> {
+    let b = ResultBuilder::new(case);
+    let results = case.check.kind().run(&b, earlier)?;
+    Ok((results, b.into_figures()))
+}
+
+/// Run every case: first all the others, then the restatements, decided from their results.
+pub fn run_all(cases: &[Case]) -> Result<Vec<ClaimResult>> {
+    Ok(run_all_full(cases, &|_, _| {})?.0)
+}
+
+/// [`run_all`] with the figures; `progress` hears of each case as it finishes (index, id).
+pub fn run_all_full(
+    cases: &[Case],
+    progress: &dyn Fn(usize, &str),
+) -> Result<(Vec<ClaimResult>, Vec<Figure>)> {
+    let mut out = Vec::new();
+    let mut figures = Vec::new();
+    for (i, case) in cases.iter().enumerate() {
+        if !case.check.kind().restates() {
+            let (r, f) = run_case_full(case, &[])?;
+            out.extend(r);
+            figures.extend(f);
+        }
+        progress(i, &case.id);
+    }
+    let mut restated = Vec::new();
+    for case in cases.iter().filter(|c| c.check.kind().restates()) {
+        restated.extend(run_case_full(case, &out)?.0);
+    }
+    out.extend(restated);
+    Ok((out, figures))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::KINDS;
+
+    /// serde names a variant by its snake case; the registry names the folder: the same word.
+    #[test]
+    fn every_kind_is_named_alike_in_yaml_and_folder() {
+        for (name, variant) in KINDS {
+            let mut snake = String::new();
+            for (i, ch) in variant.chars().enumerate() {
+                if ch.is_ascii_uppercase() && i > 0 {
+                    snake.push('_');
+                }
+                snake.push(ch.to_ascii_lowercase());
+            }
+            assert_eq!(&snake, name, "variant {variant}");
+        }
+    }
+}

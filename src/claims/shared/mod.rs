@@ -1,0 +1,9 @@
+//! Case schema pieces more than one kind reads.
+
+pub mod census;
+mod noise;
+mod tables;
+
+pub use census::{CensusCase, CensusException};
+pub use noise::*;
+pub use tables::{body_digits, BodyTable, FigureFrames, PrintedSolutions};

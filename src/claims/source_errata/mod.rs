@@ -1,0 +1,38 @@
+//! Errata of the text, each quoted at its lines of the LaTeX source.
+
+mod case;
+
+pub use case::*;
+
+use crate::cases::Validator;
+use crate::check::{ClaimResult, ResultBuilder};
+use crate::claims::ClaimKind;
+use crate::error::Result;
+
+impl ClaimKind for SourceErrataCase {
+    fn trials(&self) -> Vec<(&'static str, usize)> {
+        Vec::new()
+    }
+
+    fn validate(&self, v: &Validator) -> Result<()> {
+        case::checks(self, v)
+    }
+
+    fn seeds(&self) -> Vec<u64> {
+        Vec::new()
+    }
+
+    fn run(&self, b: &ResultBuilder, _earlier: &[ClaimResult]) -> Result<Vec<ClaimResult>> {
+        crate::check::errata::check(b, self)
+    }
+
+    fn attach_source(
+        &mut self,
+        text: &str,
+        path: &std::path::Path,
+        latex: &crate::cases::LatexSource,
+    ) -> Result<()> {
+        // the quotes are verified against the source as it is read
+        case::attach_source(self, text, path, latex)
+    }
+}
