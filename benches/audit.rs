@@ -3,7 +3,7 @@
 use std::path::Path;
 
 use criterion::{criterion_group, criterion_main, Criterion};
-use orthocheck::{cases, check};
+use orthocheck::cases;
 
 fn audit(c: &mut Criterion) {
     let all = cases::load_all::<orthocheck::claims::Check>(Path::new(concat!(
@@ -14,7 +14,7 @@ fn audit(c: &mut Criterion) {
     let mut g = c.benchmark_group("audit");
     g.sample_size(10);
     g.bench_function("whole_audit", |b| {
-        b.iter(|| check::audit_all(&all).expect("the audit runs"))
+        b.iter(|| orthocheck::claims::audit::audit_all(&all).expect("the audit runs"))
     });
     g.finish();
 }

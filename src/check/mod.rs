@@ -1,26 +1,11 @@
 //! Judgement: a case runs into claim results, each a comparison of what the paper printed
 //! with what the derivations compute, ending in a [`Verdict`].
 
-pub(crate) mod audit;
-pub(crate) mod dof;
-pub(crate) mod errata;
 pub mod figure;
-pub(crate) mod identity;
-pub(crate) mod identity_example;
-pub(crate) mod linearity;
-pub(crate) mod noise;
-pub(crate) mod p3f3;
-mod p3f3_restricted;
-pub(crate) mod p4f3;
-mod p4f3_joint;
-pub(crate) mod solution_count;
-pub(crate) mod two_frames;
-mod two_frames_member;
-pub(crate) mod twofold;
+pub mod noise;
+mod points;
 
-pub use crate::studies::noise::{run_study, study_of};
-pub use audit::{audit_all, counts as audit_counts, AuditItem};
-pub use twofold::{audit as audit_twofold, TwofoldAudit};
+pub use points::{points_details, points_tolerance};
 
 mod result;
 pub use result::{

@@ -1,525 +1,460 @@
-//! Claims of the noise studies (§2, §3, §4): the paper's words about its noisy runs, judged
-//! against seeded distributions by the rule of `docs/verdicts.md` ("Statistical claims").
+//! The judges of the noise claims: small pure functions from numbers to a [`Decision`], by
+//! the rule of `docs/verdicts.md` ("Statistical claims"), each tested on both sides of its
+//! threshold.
 
-use super::{
-    ClaimResult, Evidence, Power, ResultBuilder, Tolerance, ToleranceSource, Value, Verdict,
+use crate::check::{Power, Verdict};
+use crate::claims::shared::{
+    Direction, NoiseLevel, OverEdges, Quantity as Symbols, StatementSubject,
 };
-use crate::claims::noise_study::NoiseStudyCase;
-use crate::claims::shared::{Direction, NoiseLevel, OverEdges, Quantity as Symbols};
-use crate::derivations::noise::{LevelResult, Study, METRICS, QUANTILES};
-use crate::derivations::solver::default_edge_names;
-use crate::error::Result;
-use crate::model::Body;
-use crate::studies::noise::{edge_medians, run_both, run_errors, run_study, SymbolDistances};
-use judge::{
-    claim_of, decide, judge_bound, margin, metric_of, metric_phrase, power, Claim, Decision, Facts,
-    Judged, TYPICAL_BAND,
-};
-mod figure;
-mod judge;
+use crate::derivations::noise::LevelResult;
+use crate::studies::noise::RunErrors;
 
-pub(crate) fn check(b: &ResultBuilder, case: &NoiseStudyCase) -> Result<Vec<ClaimResult>> {
-    let mut out = Vec::new();
-    let lengths: Vec<f64> = case.body.lengths.iter().map(|p| p.to_f64()).collect();
-    // the printed squares when there are any (the runs are compared with them), else the
-    // squares of the printed lengths
-    let truth: Vec<f64> = if case.body.squares.is_empty() {
-        lengths.iter().map(|x| x * x).collect()
+/// The central band of the seeded distribution a printed "e.g." run must fall in (as
+/// fractions): a run outside it under every noise model is not what the stated noise gives.
+pub(crate) const TYPICAL_BAND: (f64, f64) = (0.025, 0.975);
+/// A Monte Carlo proportion nearer its threshold than this many binomial standard errors
+/// (√(p(1−p)/n) at the threshold) is too close to call.
+const CLOSE_SE: f64 = 2.0;
+/// The threshold mutant: a "below" bound is divided, an "above" bound multiplied by this.
+const MUTANT_FACTOR: f64 = 2.0;
+
+/// The outcome of one judge.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Decision {
+    /// The reading holds.
+    Holds,
+    /// The reading fails.
+    Fails,
+    /// Within the rounding of the printed digits or the sampling error of the trials.
+    TooClose,
+}
+
+impl Decision {
+    pub(crate) fn verdict(self) -> Verdict {
+        match self {
+            Decision::Holds => Verdict::StatisticalHolds,
+            Decision::Fails => Verdict::StatisticalFails,
+            Decision::TooClose => Verdict::Inconclusive,
+        }
+    }
+
+    pub(crate) fn name(self) -> &'static str {
+        match self {
+            Decision::Holds => "holds",
+            Decision::Fails => "fails",
+            Decision::TooClose => "too close to call",
+        }
+    }
+}
+
+/// An error whose range (over the rounding of the printed digits) is `range`, against a
+/// `bound` the paper says it is below or above.
+pub(crate) fn judge_bound(range: (f64, f64), bound: f64, direction: Direction) -> Decision {
+    let (lo, hi) = range;
+    let (holds, fails) = match direction {
+        Direction::Below => (hi < bound, lo >= bound),
+        Direction::Above => (lo > bound, hi <= bound),
+    };
+    match (holds, fails) {
+        (true, _) => Decision::Holds,
+        (_, true) => Decision::Fails,
+        _ => Decision::TooClose,
+    }
+}
+
+/// Two binomial standard errors of a proportion of `n` trials at `p`.
+pub(crate) fn margin(p: f64, n: usize) -> f64 {
+    CLOSE_SE * (p * (1.0 - p) / n as f64).sqrt()
+}
+
+/// A printed run at percentile rank `p` (fraction of `n` trials not above it): inside the
+/// typical band, outside it, or too near an edge for the trial count.
+pub(crate) fn judge_band(p: f64, n: usize) -> Decision {
+    if n == 0 {
+        return Decision::TooClose;
+    }
+    let (lo, hi) = TYPICAL_BAND;
+    let (ml, mh) = (margin(lo, n), margin(hi, n));
+    if p > lo + ml && p < hi - mh {
+        Decision::Holds
+    } else if p < lo - ml || p > hi + mh {
+        Decision::Fails
     } else {
-        case.body.squares.iter().map(|p| p.to_f64()).collect()
-    };
-    if let Some(claim) = &case.body.claim {
-        out.push(body_result(b, claim, case));
+        Decision::TooClose
     }
-    let results = run_study(case)?;
-    let ctx = Context {
-        truth: &truth,
-        names: &default_edge_names(truth.len()),
-        trials: case.trials,
-        seed: case.seed,
-        setting: setting(truth.len(), case.frames),
-    };
-    for (i, (lv, res)) in case.levels.iter().zip(&results).enumerate() {
-        // one claim quoted at several levels gets one result per level
-        let repeated = case
-            .levels
-            .iter()
-            .filter(|l| l.claim.claim == lv.claim.claim)
-            .count()
-            > 1;
-        let neighbour = results
-            .get(i + 1)
-            .or(i.checked_sub(1).and_then(|j| results.get(j)));
-        out.extend(ctx.level(b, lv, repeated, res, neighbour.map(|n| n.as_slice())));
-    }
-    Ok(out)
 }
 
-/// The printed body: its squares against the squares of its printed lengths.
-fn body_result(
-    b: &ResultBuilder,
-    claim: &crate::cases::ClaimRef,
-    case: &NoiseStudyCase,
-) -> ClaimResult {
-    let digits = case.body.significant_digits.unwrap_or(6);
-    let pairs: Vec<(f64, f64, f64)> = case
-        .body
-        .lengths
+/// The median trial against a bound: `rank` is the fraction of the `n` trials not above the
+/// bound, so the median is below it when more than half are.
+pub(crate) fn judge_median(rank: f64, n: usize, direction: Direction) -> Decision {
+    if n == 0 {
+        return Decision::TooClose;
+    }
+    let m = margin(0.5, n);
+    let below = match direction {
+        Direction::Below => rank - 0.5,
+        Direction::Above => 0.5 - rank,
+    };
+    if below > m {
+        Decision::Holds
+    } else if below < -m {
+        Decision::Fails
+    } else {
+        Decision::TooClose
+    }
+}
+
+/// The paper does not say which noise model it used: a reading holds when it holds under
+/// one of them, fails when it fails under all.
+pub(crate) fn any_model(ds: impl IntoIterator<Item = Decision>) -> Decision {
+    let ds: Vec<Decision> = ds.into_iter().collect();
+    if ds.contains(&Decision::Holds) {
+        Decision::Holds
+    } else if ds.is_empty() || ds.contains(&Decision::TooClose) {
+        Decision::TooClose
+    } else {
+        Decision::Fails
+    }
+}
+
+/// Both parts of a claim must hold; either failing fails it.
+pub(crate) fn both(a: Decision, b: Decision) -> Decision {
+    match (a, b) {
+        (Decision::Fails, _) | (_, Decision::Fails) => Decision::Fails,
+        (Decision::Holds, Decision::Holds) => Decision::Holds,
+        _ => Decision::TooClose,
+    }
+}
+
+/// What a level's claim says, read by the rule of `docs/verdicts.md`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) enum Claim {
+    /// An "e.g." run with words only: the run is a typical outcome of the stated noise.
+    Typical,
+    /// A bound on the printed run's error, and the run typical.
+    Example(f64, Direction),
+    /// A bound on the median trial's error ("the average performance").
+    Median(f64, Direction),
+}
+
+impl Claim {
+    /// The claim with its bound moved by [`MUTANT_FACTOR`] against the paper (a "below" bound
+    /// lowered, an "above" bound raised); `None` without a bound.
+    pub(crate) fn mutant(self) -> Option<Claim> {
+        let moved = |b: f64, d: Direction| match d {
+            Direction::Below => b / MUTANT_FACTOR,
+            Direction::Above => b * MUTANT_FACTOR,
+        };
+        match self {
+            Claim::Typical => None,
+            Claim::Example(b, d) => Some(Claim::Example(moved(b, d), d)),
+            Claim::Median(b, d) => Some(Claim::Median(moved(b, d), d)),
+        }
+    }
+
+    pub(crate) fn bound(self) -> Option<f64> {
+        match self {
+            Claim::Typical => None,
+            Claim::Example(b, _) | Claim::Median(b, _) => Some(b),
+        }
+    }
+}
+
+/// The numbers one level's claim is judged on.
+pub(crate) struct Facts<'a> {
+    /// The metric of the reading (index into [`METRICS`]).
+    pub metric: usize,
+    /// The printed run's errors (`None` when its digits cannot be read as squares).
+    pub run: Option<&'a RunErrors>,
+    /// The seeded distributions, one per noise model (or scene).
+    pub dists: &'a [LevelResult],
+}
+
+/// One noise model's part in a decision: where the judge reads the model's distribution, and
+/// what it decides there.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Part {
+    /// The fraction of the model's trials not above the value the judge reads: the bound, for
+    /// a claim on the median trial; the printed run's error otherwise (`None` when the run's
+    /// digits cannot be read).
+    pub rank: Option<f64>,
+    /// What the model decides: the median against the bound, or the run inside the typical
+    /// band.
+    pub decision: Decision,
+}
+
+/// Each model's part in the decision of `claim`, in the order of `f.dists`.
+pub(crate) fn parts(claim: Claim, f: &Facts) -> Vec<Part> {
+    let m = f.metric;
+    f.dists
         .iter()
-        .zip(&case.body.squares)
-        .map(|(l, s)| {
-            (
-                l.to_f64() * l.to_f64(),
-                s.to_f64(),
-                s.half_unit_significant(digits),
+        .map(|r| {
+            let n = r.sorted[m].len();
+            match (claim, f.run) {
+                (Claim::Median(bound, d), _) => {
+                    let rank = r.rank_of(m, bound);
+                    Part {
+                        rank: Some(rank),
+                        decision: judge_median(rank, n, d),
+                    }
+                }
+                (_, Some(run)) => {
+                    let rank = r.rank_of(m, run.metrics[m]);
+                    Part {
+                        rank: Some(rank),
+                        decision: judge_band(rank, n),
+                    }
+                }
+                (_, None) => Part {
+                    rank: None,
+                    decision: Decision::TooClose,
+                },
+            }
+        })
+        .collect()
+}
+
+/// The printed run's error (over the rounding of its digits) against a bound; too close to
+/// call without a readable run.
+pub(crate) fn on_run(f: &Facts, bound: f64, direction: Direction) -> Decision {
+    f.run.map_or(Decision::TooClose, |r| {
+        judge_bound(r.ranges[f.metric], bound, direction)
+    })
+}
+
+/// The judge of a level's claim: the models' parts (one model suffices), and for a bound on
+/// the printed run, the run's error against it as well.
+pub(crate) fn decide(claim: Claim, f: &Facts) -> Decision {
+    let models = any_model(parts(claim, f).into_iter().map(|p| p.decision));
+    match claim {
+        Claim::Example(bound, d) => both(on_run(f, bound, d), models),
+        Claim::Typical | Claim::Median(..) => models,
+    }
+}
+
+/// A level's claim, the facts it is judged on, and the judge's decision: what the result
+/// reports and the figure shows.
+pub(crate) struct Judged<'a> {
+    /// The claim as read.
+    pub claim: Claim,
+    /// Its facts.
+    pub facts: Facts<'a>,
+    /// The judge's decision ([`decide`]).
+    pub decision: Decision,
+}
+
+impl<'a> Judged<'a> {
+    /// `claim` judged on `facts`.
+    pub(crate) fn new(claim: Claim, facts: Facts<'a>) -> Self {
+        let decision = decide(claim, &facts);
+        Judged {
+            claim,
+            facts,
+            decision,
+        }
+    }
+}
+
+/// The negative control: the same judge on the claim with its bound moved, or, for a claim
+/// without a bound, on the distributions of the neighbouring printed level (ten times more or
+/// less noise) must fail.
+pub(crate) fn power(claim: Claim, f: &Facts, neighbour: Option<&[LevelResult]>) -> Power {
+    if let Some(mutant) = claim.mutant() {
+        let rejected = decide(mutant, f) == Decision::Fails;
+        return Power::mutant(
+            rejected,
+            "the same judge with the paper's bound moved by a factor 2 against it (a 'below' bound halved, an 'above' bound doubled)",
+        );
+    }
+    match neighbour {
+        Some(dists) => {
+            let g = Facts { dists, ..*f };
+            Power::mutant(
+                decide(claim, &g) == Decision::Fails,
+                "the same judge with the printed run placed in the distributions of the neighbouring printed noise level",
             )
-        })
-        .collect();
-    let agree = pairs.iter().all(|(sq, s, h)| (sq - s).abs() <= *h);
-    // the acceptance region of the edge with the widest half unit: the printed squares the
-    // same check would pass there
-    let widest = pairs
-        .iter()
-        .copied()
-        .max_by(|a, b| a.2.total_cmp(&b.2))
-        .unwrap_or((0.0, 0.0, 0.0));
-    let mut r = b.claim(claim);
-    for l in &case.body.lengths {
-        r = r.printed("length", l);
+        }
+        None => Power::none("no bound to move and no neighbouring level"),
     }
-    for s in &case.body.squares {
-        r = r.printed("square", s);
+}
+
+/// The metric of a reading: the quantity (squares or lengths) and how the edges combine.
+pub(crate) fn metric_of(quantity: Symbols, edges: OverEdges) -> usize {
+    let q = if quantity == Symbols::Lengths { 2 } else { 0 };
+    q + usize::from(edges == OverEdges::Mean)
+}
+
+pub(crate) fn metric_phrase(m: usize) -> &'static str {
+    [
+        "largest relative error over the edges, in squares",
+        "mean relative error over the edges, in squares",
+        "largest relative error over the edges, in lengths",
+        "mean relative error over the edges, in lengths",
+    ][m]
+}
+
+pub(crate) fn claim_of(lv: &NoiseLevel) -> Claim {
+    match &lv.statement {
+        None => Claim::Typical,
+        Some(st) => match st.about {
+            StatementSubject::Example => Claim::Example(st.bound.to_f64(), st.direction),
+            StatementSubject::TypicalTrial => Claim::Median(st.bound.to_f64(), st.direction),
+        },
     }
-    let squares: Vec<f64> = pairs.iter().map(|p| p.0).collect();
-    let halves: Vec<f64> = pairs.iter().map(|p| p.2).collect();
-    r.computed("squares of the printed lengths", Value::reals(&squares))
-        .tolerance(Tolerance::bound(
-            widest.2,
-            ToleranceSource::PrintedPrecision,
-            "half a unit in the last significant digit the program printed, per square",
-        ))
-        // the region is the printed squares within half a unit of the computed square: exactly
-        // those the printed digits would call right, so it is centred on the computed square
-        .power(Power::interval(
-            widest.0 - widest.2,
-            widest.0 + widest.2,
-            widest.0,
-            widest.2,
-            "printed squares the same check accepts for the edge with the widest half unit",
-        ))
-        .method("squares of the printed lengths against the printed squares")
-        .detail("half units of the printed squares", Value::reals(&halves))
-        .verdict(Verdict::holds(agree))
 }
 
-/// What every level of a study is judged against.
-pub(super) struct Context<'a> {
-    /// True squared edges.
-    pub truth: &'a [f64],
-    /// Edge names.
-    pub names: &'a [String],
-    /// Trials per distribution.
-    pub trials: usize,
-    /// Seed.
-    pub seed: u64,
-    /// The scene in words, for the figures' titles ("three points, four frames").
-    pub setting: String,
-}
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use Decision::{Fails, Holds, TooClose};
 
-/// The scene of a study in words: its points (from its `edges`, all pairs) and `frames`.
-fn setting(edges: usize, frames: usize) -> String {
-    let points = (2usize..).find(|&p| p * (p - 1) / 2 >= edges).unwrap_or(2);
-    format!(
-        "{} points, {} frames",
-        count_word(points),
-        count_word(frames)
-    )
-}
+    #[test]
+    fn bound_on_the_run_both_sides_and_the_rounding() {
+        let (below, above) = (Direction::Below, Direction::Above);
+        assert_eq!(judge_bound((0.29, 0.295), 0.3, below), Holds);
+        assert_eq!(judge_bound((0.31, 0.32), 0.3, below), Fails);
+        assert_eq!(judge_bound((0.3, 0.32), 0.3, below), Fails);
+        assert_eq!(judge_bound((0.29, 0.31), 0.3, below), TooClose);
+        assert_eq!(judge_bound((0.31, 0.32), 0.3, above), Holds);
+        assert_eq!(judge_bound((0.28, 0.29), 0.3, above), Fails);
+        assert_eq!(judge_bound((0.29, 0.31), 0.3, above), TooClose);
+    }
 
-/// A small count as a word, a larger one in digits.
-fn count_word(n: usize) -> String {
-    const WORDS: [&str; 11] = [
-        "no", "one", "two", "three", "four", "five", "six", "seven", "eight", "nine", "ten",
-    ];
-    WORDS
-        .get(n)
-        .map_or_else(|| n.to_string(), |w| (*w).to_string())
-}
+    #[test]
+    fn band_inside_outside_and_near_an_edge() {
+        let n = 10_000;
+        // two standard errors at 2.5 % of 10⁴ trials: 0.31 percentile points
+        assert_eq!(judge_band(0.5, n), Holds);
+        assert_eq!(judge_band(0.03, n), Holds);
+        assert_eq!(judge_band(0.02, n), Fails);
+        assert_eq!(judge_band(0.025, n), TooClose);
+        assert_eq!(judge_band(0.97, n), Holds);
+        assert_eq!(judge_band(0.98, n), Fails);
+        assert_eq!(judge_band(0.5, 0), TooClose);
+    }
 
-impl Context<'_> {
-    /// The results of one printed level against its distributions `res` (one per noise model
-    /// or scene); `repeated` when the claim is quoted at several levels (each gets its own
-    /// id); `neighbour` the distributions of the next printed level, for the power.
-    pub(super) fn level(
-        &self,
-        b: &ResultBuilder,
-        lv: &NoiseLevel,
-        repeated: bool,
-        res: &[LevelResult],
-        neighbour: Option<&[LevelResult]>,
-    ) -> Vec<ClaimResult> {
-        let level_id = format!("eps-{}", lv.level.text);
-        let suffix = |s: Option<&str>| match (repeated, s) {
-            (true, Some(s)) => Some(format!("{level_id}/{s}")),
-            (true, None) => Some(level_id.clone()),
-            (false, s) => s.map(str::to_string),
+    #[test]
+    fn median_against_a_bound() {
+        let n = 10_000; // two standard errors at 50 %: 1 percentile point
+        assert_eq!(judge_median(0.52, n, Direction::Below), Holds);
+        assert_eq!(judge_median(0.48, n, Direction::Below), Fails);
+        assert_eq!(judge_median(0.505, n, Direction::Below), TooClose);
+        assert_eq!(judge_median(0.48, n, Direction::Above), Holds);
+        assert_eq!(judge_median(0.52, n, Direction::Above), Fails);
+    }
+
+    #[test]
+    fn models_and_parts_combine() {
+        assert_eq!(any_model([Fails, Holds]), Holds);
+        assert_eq!(any_model([Fails, TooClose]), TooClose);
+        assert_eq!(any_model([Fails, Fails]), Fails);
+        assert_eq!(any_model([]), TooClose);
+        assert_eq!(both(Holds, Holds), Holds);
+        assert_eq!(both(Holds, Fails), Fails);
+        assert_eq!(both(TooClose, Fails), Fails);
+        assert_eq!(both(Holds, TooClose), TooClose);
+    }
+
+    /// A level whose every metric is uniform on 1..=n thousandths.
+    fn uniform(n: usize) -> LevelResult {
+        let v: Vec<f64> = (1..=n).map(|i| i as f64 / 1000.0).collect();
+        LevelResult {
+            level: 0.0,
+            model: "test".into(),
+            trials: n,
+            failures: 0,
+            sorted: std::array::from_fn(|_| v.clone()),
+            ratios: Vec::new(),
+            edges: 3,
+            sums: None,
+        }
+    }
+
+    fn run(err: f64) -> RunErrors {
+        RunErrors {
+            metrics: [err; 4],
+            ranges: [(err, err); 4],
+            edge_squares: vec![err; 3],
+            edge_lengths: vec![err; 3],
+        }
+    }
+
+    #[test]
+    fn decide_and_its_mutants() {
+        let d = [uniform(10_000)];
+        let r = run(4.0); // rank 0.4
+        let f = Facts {
+            metric: 0,
+            run: Some(&r),
+            dists: &d,
         };
-        let first = lv.printed.first().map_or(&[][..], |v| v.as_slice());
-        let values: Vec<f64> = first.iter().map(|p| p.to_f64()).collect();
-        let half: Vec<f64> = first.iter().map(|p| p.half_unit()).collect();
-        let dist = SymbolDistances::of(&values, self.truth);
-        let read_as = if dist.are_squares() {
-            Symbols::Squares
-        } else {
-            Symbols::Lengths
+        assert_eq!(decide(Claim::Typical, &f), Holds);
+        assert_eq!(decide(Claim::Example(5.0, Direction::Below), &f), Holds);
+        assert_eq!(decide(Claim::Example(3.0, Direction::Below), &f), Fails);
+        // the median is 5: below 6 holds, below 4 fails, above 4 holds
+        assert_eq!(decide(Claim::Median(6.0, Direction::Below), &f), Holds);
+        assert_eq!(decide(Claim::Median(4.0, Direction::Below), &f), Fails);
+        assert_eq!(decide(Claim::Median(4.0, Direction::Above), &f), Holds);
+        // halving "below 5" to "below 2.5" fails: the power is not weak
+        assert!(!power(Claim::Example(5.0, Direction::Below), &f, None).weak);
+        // "below 50" halved is still above the run: weak
+        assert!(power(Claim::Example(50.0, Direction::Below), &f, None).weak);
+        // a run far outside the band is not typical
+        let far = run(9.9);
+        let g = Facts {
+            run: Some(&far),
+            ..f
         };
-        let mut out = Vec::new();
-        if read_as != lv.labelled_as {
-            out.push(self.symbols_result(b, lv, suffix(Some("symbols")), dist, read_as));
-        }
-        let run = run_errors(&values, &half, dist.are_squares(), self.truth);
-        let (quantity, edges) = match &lv.statement {
-            Some(st) => (st.quantity.unwrap_or(read_as), st.over_edges),
-            None => (read_as, OverEdges::Max),
+        assert_eq!(decide(Claim::Typical, &g), Fails);
+        // the neighbouring level rejects the run: typical claim has power
+        // ten times the spread: the run at 0.9 ranks 0.009 there, outside the band
+        let shifted = [uniform(100_000)];
+        let near = run(0.9);
+        let h = Facts {
+            run: Some(&near),
+            ..f
         };
-        let facts = Facts {
-            metric: metric_of(quantity, edges),
-            run: run.as_ref(),
-            dists: res,
+        assert_eq!(decide(Claim::Typical, &h), Holds);
+        assert!(!power(Claim::Typical, &h, Some(&shifted)).weak);
+        assert!(power(Claim::Typical, &h, Some(&d)).weak);
+    }
+
+    #[test]
+    fn parts_are_read_where_the_judge_reads() {
+        let d = [uniform(10_000), uniform(20_000)];
+        let r = run(4.0);
+        let f = Facts {
+            metric: 0,
+            run: Some(&r),
+            dists: &d,
         };
-        let judged = Judged::new(claim_of(lv), facts);
-        let result = self.main_result(b, lv, suffix(None), read_as, &judged, neighbour);
-        b.figure(figure::figure(
-            &result,
-            &self.setting,
-            lv,
-            &judged,
-            (self.trials, self.seed),
-        ));
-        out.push(result);
-        out
-    }
-
-    /// The printed symbols (a, b, c or a², b², c²) against what the values are.
-    fn symbols_result(
-        &self,
-        b: &ResultBuilder,
-        lv: &NoiseLevel,
-        suffix: Option<String>,
-        dist: SymbolDistances,
-        read_as: Symbols,
-    ) -> ClaimResult {
-        let lengths: Vec<f64> = self.truth.iter().map(|t| t.sqrt()).collect();
-        // the same test on the true lengths must read them as lengths
-        let control = !SymbolDistances::of(&lengths, self.truth).are_squares();
-        let mut r = b.claim(&lv.claim);
-        if let Some(s) = &suffix {
-            r = r.suffix(s);
-        }
-        r = r.printed("symbols", symbols_name(lv.labelled_as));
-        for p in lv.printed.first().into_iter().flatten() {
-            r = r.printed("value", p);
-        }
-        r.computed(
-            "largest relative distance to the true squares",
-            dist.to_squares,
-        )
-        .computed(
-            "largest relative distance to the true lengths",
-            dist.to_lengths,
-        )
-        .computed("the values are", symbols_name(read_as))
-        .correction(format!("read the values as {}", symbols_name(read_as)))
-        .tolerance(Tolerance::exact("the nearer of the two readings"))
-        .power(Power::mutant(
-            control,
-            "the same test reads the true lengths themselves as lengths",
-        ))
-        .method(
-            "relative distance of the printed values to the true lengths and to the true squares",
-        )
-        .detail("true squares", Value::reals(self.truth))
-        .detail("true lengths", Value::reals(&lengths))
-        .verdict(Verdict::Erratum)
-    }
-
-    /// The level's claim, as [`Judged`] (decided by [`decide`]).
-    fn main_result(
-        &self,
-        b: &ResultBuilder,
-        lv: &NoiseLevel,
-        suffix: Option<String>,
-        read_as: Symbols,
-        judged: &Judged,
-        neighbour: Option<&[LevelResult]>,
-    ) -> ClaimResult {
-        let (claim, decision, f) = (judged.claim, judged.decision, &judged.facts);
-        let mut r = b.claim(&lv.claim).printed("ε", &lv.level);
-        if let Some(s) = &suffix {
-            r = r.suffix(s);
-        }
-        for (k, sol) in lv.printed.iter().enumerate() {
-            for (p, n) in sol.iter().zip(self.names) {
-                r = r.printed(&format!("run, solution {}, {n}", k + 1), p);
-            }
-        }
-        if let Some(st) = &lv.statement {
-            r = r.printed(direction_name(st.direction), &st.bound);
-        }
-        let m = f.metric;
-        r = r
-            .computed("the values are", symbols_name(read_as))
-            .computed("reading", metric_phrase(m));
-        if let Some(run) = f.run {
-            r = r.computed("printed run: error", run.metrics[m]);
-            for d in f.dists {
-                r = r.computed(
-                    &format!("{}: percentile of the printed run", d.model),
-                    100.0 * d.rank_of(m, run.metrics[m]),
-                );
-            }
-        }
-        if let Claim::Median(bound, _) = claim {
-            for d in f.dists {
-                if let Some(q) = d.quantile(m, 0.5) {
-                    r = r.computed(&format!("{}: median trial's error", d.model), q);
-                }
-                r = r.computed(
-                    &format!("{}: percentile rank of the bound", d.model),
-                    100.0 * d.rank_of(m, bound),
-                );
-            }
-        }
-        let r = r
-            .tolerance(self.tolerance(claim, f))
-            .power(power(claim, f, neighbour))
-            .evidence(self.evidence(lv, claim, f, decision, neighbour));
-        r.verdict(decision.verdict())
-    }
-
-    /// The Monte Carlo tolerance of a decision: the sampling margin at the threshold that
-    /// decides it (a band edge, or the median).
-    fn tolerance(&self, claim: Claim, f: &Facts) -> Tolerance {
-        let n = f
-            .dists
-            .iter()
-            .map(|d| d.sorted[f.metric].len())
-            .min()
-            .unwrap_or(0)
-            .max(1);
-        let (p, how) = match claim {
-            Claim::Median(..) => (
-                0.5,
-                "the bound's percentile rank must differ from 50 by more than two binomial standard errors (the bound, in percentile points)",
-            ),
-            _ => (
-                TYPICAL_BAND.1,
-                "the printed run's percentile must lie inside the 2.5–97.5 band of one model by more than two binomial standard errors (the bound, in percentile points, at the upper edge)",
-            ),
-        };
-        Tolerance::bound(
-            100.0 * margin(p, n),
-            ToleranceSource::MonteCarlo {
-                percentile: super::Real(100.0 * p),
-                trials: self.trials as u64,
-            },
-            how,
-        )
-    }
-}
-
-fn symbols_name(q: Symbols) -> &'static str {
-    match q {
-        Symbols::Squares => "a², b², c² (squared lengths)",
-        Symbols::Lengths => "a, b, c (lengths)",
-    }
-}
-
-fn direction_name(d: Direction) -> &'static str {
-    match d {
-        Direction::Below => "error below",
-        Direction::Above => "error above",
-    }
-}
-
-const METHOD: &str =
-    "seeded Monte Carlo: the body under uniformly random rotations in every frame \
-(or at the paper's own scene where the model says so), P at the origin, noise, the solver, and the \
-real solution nearest the truth; errors relative to the truth; percentiles among the trials with a \
-real solution";
-
-impl Context<'_> {
-    /// The evidence of a level: the printed run under every reading, the distributions.
-    fn evidence(
-        &self,
-        lv: &NoiseLevel,
-        claim: Claim,
-        f: &Facts,
-        decision: Decision,
-        neighbour: Option<&[LevelResult]>,
-    ) -> Evidence {
-        let m = f.metric;
-        let mut ev = Evidence::new(METHOD)
-            .with("trials per model", self.trials)
-            .with("seed", self.seed)
-            .with("decision", decision.name());
-        if let Some(run) = f.run {
-            ev = ev.with(
-                "printed run: error over the rounding of its digits",
-                Value::interval(run.ranges[m].0, run.ranges[m].1),
-            );
-            if let Claim::Example(bound, d) = claim {
-                ev = ev.with(
-                    "bound on the printed run",
-                    judge_bound(run.ranges[m], bound, d).name(),
-                );
-                // the other readings, for comparison (they do not decide)
-                for (k, phrase) in METRICS.iter().enumerate() {
-                    ev = ev
-                        .with(&format!("printed run, {phrase}"), run.metrics[k])
-                        .with(
-                            &format!("printed run, {phrase}: bound holds"),
-                            judge_bound(run.ranges[k], bound, d) == Decision::Holds,
-                        );
-                }
-            }
-            if !matches!(claim, Claim::Median(..)) {
-                let band = decide(Claim::Typical, f);
-                ev = ev.with("printed run inside the typical band", band.name());
-            }
-            if self.truth.len() > 3 {
-                ev = ev
-                    .with(
-                        "printed run, per edge: error in squares",
-                        Value::reals(&run.edge_squares),
-                    )
-                    .with(
-                        "printed run, per edge: error in lengths",
-                        Value::reals(&run.edge_lengths),
-                    );
-            }
-        }
-        for d in f.dists {
-            ev = self.dist_evidence(ev, claim, m, d);
-        }
-        if let Some(mb) = claim.mutant().and_then(Claim::bound) {
-            ev = ev.with("mutant bound", mb);
-        }
-        if let (Claim::Typical, Some(run), Some(ns)) = (claim, f.run, neighbour) {
-            if let Some(d) = ns.first() {
-                ev = ev.with("mutant: the neighbouring level's ε", d.level);
-            }
-            for d in ns {
-                ev = ev.with(
-                    &format!("mutant: percentile of the printed run there, {}", d.model),
-                    100.0 * d.rank_of(m, run.metrics[m]),
-                );
-            }
-        }
-        if lv.printed.len() > 1 {
-            ev = ev.with(
-                "the run's other solutions",
-                "cannot be checked: the paper does not print the noisy projections of its runs",
-            );
-        }
-        ev
-    }
-
-    /// One distribution's evidence: failures, quantiles and mean of the reading's metric,
-    /// the share of trials the bound holds for, the medians under every reading.
-    fn dist_evidence(&self, mut ev: Evidence, claim: Claim, m: usize, d: &LevelResult) -> Evidence {
-        let model = &d.model;
-        ev = ev.with(
-            &format!("{model}: trials without a real solution"),
-            Value::count_of(d.failures, d.trials),
+        // the run: its rank in each model, inside the band
+        let p = parts(Claim::Example(5.0, Direction::Below), &f);
+        assert_eq!(p.len(), 2);
+        assert_eq!(p[0].rank, Some(0.4));
+        assert_eq!(p[1].rank, Some(0.2));
+        assert!(p.iter().all(|x| x.decision == Holds));
+        // the median: the bound's rank (0.6 and 0.3), above and below one half
+        let p = parts(Claim::Median(6.0, Direction::Below), &f);
+        assert_eq!((p[0].rank, p[0].decision), (Some(0.6), Holds));
+        assert_eq!((p[1].rank, p[1].decision), (Some(0.3), Fails));
+        let j = Judged::new(
+            Claim::Median(6.0, Direction::Below),
+            Facts { metric: 0, ..f },
         );
-        let qs: Vec<f64> = QUANTILES.iter().filter_map(|&q| d.quantile(m, q)).collect();
-        ev = ev.with(
-            &format!("{model}: 5/25/50/75/95/99 % quantiles"),
-            Value::reals(&qs),
-        );
-        if !d.sorted[m].is_empty() {
-            ev = ev.with(&format!("{model}: mean over the trials"), d.mean(m));
-        }
-        if let Some(bound) = claim.bound() {
-            let below = d.rank_of(m, bound);
-            let share = match claim {
-                Claim::Example(_, Direction::Above) | Claim::Median(_, Direction::Above) => {
-                    1.0 - below
-                }
-                _ => below,
-            };
-            ev = ev.with(
-                &format!("{model}: share of trials for which the bound holds"),
-                share,
-            );
-        }
-        if matches!(claim, Claim::Median(..)) {
-            let med: Vec<f64> = (0..METRICS.len())
-                .filter_map(|k| d.quantile(k, 0.5))
-                .collect();
-            ev = ev.with(
-                &format!("{model}: median trial under every reading (max/mean in squares, max/mean in lengths)"),
-                Value::reals(&med),
-            );
-        }
-        if self.truth.len() > 3 {
-            let [sq, ln] = edge_medians(d);
-            ev = ev
-                .with(
-                    &format!("{model}: median error per edge, squares"),
-                    Value::reals(&sq),
-                )
-                .with(
-                    &format!("{model}: median error per edge, lengths"),
-                    Value::reals(&ln),
-                );
-        }
-        ev
+        assert_eq!(j.decision, Holds);
+        // no readable run: nothing to read
+        let g = Facts { run: None, ..f };
+        assert!(parts(Claim::Typical, &g).iter().all(|x| x.rank.is_none()));
+        assert_eq!(decide(Claim::Typical, &g), TooClose);
+        assert_eq!(on_run(&g, 5.0, Direction::Below), TooClose);
     }
-}
 
-/// The §4 printed runs: the body under random motions (both noise models) and, when given,
-/// at the paper's own scene (`scene[i]` for level `i`), judged like every noise level;
-/// `study` is (trials, seed).
-pub(crate) fn check_runs_of_body(
-    b: &ResultBuilder,
-    levels: &[NoiseLevel],
-    truth: &[f64],
-    body: Body,
-    study: (usize, u64),
-    scene: &[LevelResult],
-) -> Vec<ClaimResult> {
-    let (trials, seed) = study;
-    let random = Study {
-        solver: crate::model::StudySolver::P4f3,
-        body,
-        frames: 3,
-        trials,
-        seed,
-        motions: None,
-    };
-    let eps: Vec<f64> = levels.iter().map(|l| l.level.to_f64()).collect();
-    let all: Vec<Vec<LevelResult>> = run_both(&random, &eps)
-        .into_iter()
-        .enumerate()
-        .map(|(i, pair)| {
-            let mut v = pair.to_vec();
-            v.extend(scene.get(i).cloned());
-            v
-        })
-        .collect();
-    let ctx = Context {
-        truth,
-        names: &default_edge_names(truth.len()),
-        trials,
-        seed,
-        setting: setting(truth.len(), random.frames),
-    };
-    let mut out = Vec::new();
-    for (i, (lv, res)) in levels.iter().zip(&all).enumerate() {
-        let neighbour = all.get(i + 1).or(i.checked_sub(1).and_then(|j| all.get(j)));
-        out.extend(ctx.level(b, lv, false, res, neighbour.map(|n| n.as_slice())));
+    #[test]
+    fn readings_map_to_metrics() {
+        assert_eq!(metric_of(Symbols::Squares, OverEdges::Max), 0);
+        assert_eq!(metric_of(Symbols::Squares, OverEdges::Mean), 1);
+        assert_eq!(metric_of(Symbols::Lengths, OverEdges::Max), 2);
+        assert_eq!(metric_of(Symbols::Lengths, OverEdges::Mean), 3);
     }
-    out
 }

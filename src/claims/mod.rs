@@ -14,6 +14,7 @@ use crate::cases::{LatexSource, Schema, Validator};
 use crate::check::{figure::Figure, ClaimResult, ResultBuilder};
 use crate::error::Result;
 
+pub mod audit;
 pub mod dof_count;
 pub mod dof_identifiability;
 pub mod formula_audit;
@@ -67,6 +68,16 @@ pub trait ClaimKind {
     /// Claim ids the case restates, with the field naming each (checked against the folder).
     fn restated_ids(&self) -> Vec<(String, String)> {
         Vec::new()
+    }
+
+    /// The items `orthocheck audit` shows: formulas and text the kind audits, each with what
+    /// it shows beside its result. Most kinds audit nothing.
+    fn audit_items(
+        &self,
+        _b: &ResultBuilder,
+        _source: &crate::cases::Source,
+    ) -> Result<Vec<(ClaimResult, audit::Shown)>> {
+        Ok(Vec::new())
     }
 
     /// Attach the paper's LaTeX source as the case is read (the errata verify their quotes).

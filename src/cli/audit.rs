@@ -1,12 +1,19 @@
 //! `orthocheck audit`: the paper's printed formulas, machine-checked.
 
+use std::fmt::Write as _;
 use std::io::Write as _;
 use std::path::{Path, PathBuf};
 
+use orthocheck::check::{ClaimResult, Verdict};
+use orthocheck::claims::audit::Shown;
+use orthocheck::claims::formula_audit::Place;
+use orthocheck::claims::twofold_squared::TwofoldAudit;
 use orthocheck::claims::twofold_squared::TwofoldCase;
 use orthocheck::claims::{Case, Check};
+use orthocheck::report::values::quantities_text;
 use orthocheck::report::Report;
-use orthocheck::{cases, check, report, studies, Error};
+use orthocheck::{cases, report, Error};
+use serde::Serialize;
 
 use super::{emit, out};
 
@@ -67,7 +74,7 @@ fn export(loaded: &[Case], a: &Args, dir: &Path) -> Result<(), Error> {
     let mut scripts = Vec::new();
     for case in loaded {
         if let Check::FormulaAudit(c) = &case.check {
-            scripts.extend(studies::audit::sympy_scripts(c)?);
+            scripts.extend(orthocheck::claims::formula_audit::study::sympy_scripts(c)?);
         }
     }
     if a.export == Some(Export::Sympy) && !a.all {
@@ -131,11 +138,14 @@ pub fn run(a: Args) -> Result<(), Error> {
         return Ok(());
     }
     if let Some(case) = a.id.as_deref().and_then(|id| twofold_case(&loaded, id)) {
-        let audit = check::audit_twofold(case)?;
-        emit(a.json, &audit, report::twofold_text)?;
+        let audit = orthocheck::claims::twofold_squared::audit(case)?;
+        emit(a.json, &audit, twofold_text)?;
         return Ok(());
     }
-    let mut items = check::audit_all(&loaded)?;
+    let mut items: Vec<AuditItem> = orthocheck::claims::audit::audit_all(&loaded)?
+        .into_iter()
+        .map(|(r, s)| item(&r, s))
+        .collect();
     if let Some(id) = &a.id {
         items.retain(|it| &it.id == id || &it.claim == id);
         if items.is_empty() {
@@ -144,6 +154,116 @@ pub fn run(a: Args) -> Result<(), Error> {
             )));
         }
     }
-    emit(a.json, &items, |items| report::audit_text(items, !a.all))?;
+    emit(a.json, &items, |items| audit_text(items, !a.all))?;
     Ok(())
+}
+
+/// `orthocheck audit twofold-squared` as text.
+fn twofold_text(a: &TwofoldAudit) -> String {
+    let ratios: Vec<String> = a
+        .ratios
+        .iter()
+        .map(|r| r.clone().unwrap_or_else(|| "not a multiple".into()))
+        .collect();
+    format!(
+        "eq. p3f3sqr (twofold squaring of ±√(a²−aᵢ²) ± √(b²−bᵢ²) ± √(c²−cᵢ²) = 0)\n\
+         printed:  {transcription} = 0\n\
+         expanded: {printed} = 0\n\
+         derived:  {derived} = 0\n\
+         method:   symbolic squaring with √A, √B, √C as variables, (√X)² = X; exact expansion over ℚ\n\
+         derived / printed per sign pattern: {ratios}\n\
+         product over the four sign classes / printed: {prod}\n\
+         quadratic in a², b², c²: {quad}\n\
+         random rational points: {agree}/{n} agree (seed {seed})\n\
+         verdict:  {verdict}\n",
+        transcription = a.transcription,
+        printed = a.printed,
+        derived = a.derived,
+        ratios = ratios.join(", "),
+        prod = a.product_ratio.clone().unwrap_or_else(|| "not a multiple".into()),
+        quad = a.quadratic_in_squares,
+        agree = a.evaluation.2,
+        n = a.evaluation.0,
+        seed = a.evaluation.1,
+        verdict = a.verdict.name()
+    )
+}
+
+/// `orthocheck audit` as text: one block per item when `detailed`, else one line each.
+fn audit_text(items: &[AuditItem], detailed: bool) -> String {
+    let mut s = String::new();
+    for it in items {
+        if detailed {
+            let _ = writeln!(s, "{} — {}", it.id, it.verdict.name());
+            let _ = writeln!(s, "  where:     {} (lines {})", it.place, it.lines);
+            let _ = writeln!(s, "  printed:   {}", it.printed);
+            if let Some(d) = &it.defect {
+                let _ = writeln!(s, "  defect:    {d}");
+            }
+            let _ = writeln!(s, "  should be: {}", it.should_be);
+            let _ = writeln!(s, "  method:    {}", it.method);
+            let _ = writeln!(s, "  found:     {}", it.finding);
+            let _ = writeln!(s, "  verdict:   {}\n", it.verdict.name());
+        } else {
+            let _ = writeln!(s, "{:<26} {}", it.verdict.name(), it.id);
+        }
+    }
+    if !detailed {
+        let counts: Vec<String> = counts(items)
+            .iter()
+            .map(|(v, n)| format!("{}: {n}", v.name()))
+            .collect();
+        let _ = writeln!(s, "\n{} items; {}", items.len(), counts.join(", "));
+    }
+    s
+}
+
+/// One audited item: what `orthocheck audit` prints.
+#[derive(Clone, Debug, Serialize)]
+pub struct AuditItem {
+    /// The result id (`claim/suffix`).
+    pub id: String,
+    /// The claim id (paper_cases/claims.md).
+    pub claim: String,
+    /// Where it is.
+    #[serde(rename = "where")]
+    pub place: Place,
+    /// Lines.
+    pub lines: String,
+    /// As printed.
+    pub printed: String,
+    /// The defect, if any.
+    pub defect: Option<String>,
+    /// What it should be.
+    pub should_be: String,
+    /// How it was checked.
+    pub method: String,
+    /// What the check found.
+    pub finding: String,
+    /// The verdict.
+    pub verdict: Verdict,
+}
+
+fn item(r: &ClaimResult, s: Shown) -> AuditItem {
+    AuditItem {
+        id: r.id.clone(),
+        claim: r.claim.clone(),
+        place: s.place,
+        lines: r.lines.clone(),
+        printed: s.printed,
+        defect: s.defect,
+        should_be: s.should_be,
+        method: r.evidence.method.clone(),
+        finding: quantities_text(&r.computed),
+        verdict: r.verdict,
+    }
+}
+
+/// Verdict counts for the audit, in report order.
+fn counts(items: &[AuditItem]) -> Vec<(Verdict, usize)> {
+    Verdict::ALL
+        .iter()
+        .map(|v| (*v, items.iter().filter(|i| i.verdict == *v).count()))
+        .filter(|(_, n)| *n > 0)
+        .collect()
 }

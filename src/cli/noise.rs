@@ -4,9 +4,9 @@ use std::fmt::Write as _;
 use std::path::PathBuf;
 
 use clap::ValueEnum;
+use orthocheck::claims::noise_study::request::{ModelChoice, NoiseRequest, RequestError};
 use orthocheck::claims::{Case, Check};
 use orthocheck::derivations::noise::LevelSummary;
-use orthocheck::studies::noise_request::{ModelChoice, NoiseRequest, RequestError};
 use orthocheck::{cases, Error};
 
 use super::emit;

@@ -285,37 +285,6 @@ pub fn dof_text(r: &crate::derivations::dof::Identifiability) -> String {
     )
 }
 
-/// `orthocheck audit twofold-squared` as text.
-pub fn twofold_text(a: &crate::check::TwofoldAudit) -> String {
-    let ratios: Vec<String> = a
-        .ratios
-        .iter()
-        .map(|r| r.clone().unwrap_or_else(|| "not a multiple".into()))
-        .collect();
-    format!(
-        "eq. p3f3sqr (twofold squaring of ±√(a²−aᵢ²) ± √(b²−bᵢ²) ± √(c²−cᵢ²) = 0)\n\
-         printed:  {transcription} = 0\n\
-         expanded: {printed} = 0\n\
-         derived:  {derived} = 0\n\
-         method:   symbolic squaring with √A, √B, √C as variables, (√X)² = X; exact expansion over ℚ\n\
-         derived / printed per sign pattern: {ratios}\n\
-         product over the four sign classes / printed: {prod}\n\
-         quadratic in a², b², c²: {quad}\n\
-         random rational points: {agree}/{n} agree (seed {seed})\n\
-         verdict:  {verdict}\n",
-        transcription = a.transcription,
-        printed = a.printed,
-        derived = a.derived,
-        ratios = ratios.join(", "),
-        prod = a.product_ratio.clone().unwrap_or_else(|| "not a multiple".into()),
-        quad = a.quadratic_in_squares,
-        agree = a.evaluation.2,
-        n = a.evaluation.0,
-        seed = a.evaluation.1,
-        verdict = a.verdict.name()
-    )
-}
-
 /// `orthocheck solve --json`: `{"method", "why", "solutions": [{"squared_edges": {"PQ": …},
 /// "feasible", "reason", "residual", …}], "degenerate": null | "…", "condition"}`.
 pub fn solve_json(s: &crate::derivations::solver::Solved) -> serde_json::Value {
@@ -399,35 +368,6 @@ pub fn synth_header(scene: &crate::model::Scene, seed: u64, noise: Option<f64>) 
         noise.map_or(String::new(), |e| format!(" --noise {e}")),
         truth.join(" ")
     )
-}
-
-/// `orthocheck audit` as text: one block per item when `detailed`, else one line each.
-pub fn audit_text(items: &[crate::check::AuditItem], detailed: bool) -> String {
-    let mut s = String::new();
-    for it in items {
-        if detailed {
-            let _ = writeln!(s, "{} — {}", it.id, it.verdict.name());
-            let _ = writeln!(s, "  where:     {} (lines {})", it.place, it.lines);
-            let _ = writeln!(s, "  printed:   {}", it.printed);
-            if let Some(d) = &it.defect {
-                let _ = writeln!(s, "  defect:    {d}");
-            }
-            let _ = writeln!(s, "  should be: {}", it.should_be);
-            let _ = writeln!(s, "  method:    {}", it.method);
-            let _ = writeln!(s, "  found:     {}", it.finding);
-            let _ = writeln!(s, "  verdict:   {}\n", it.verdict.name());
-        } else {
-            let _ = writeln!(s, "{:<26} {}", it.verdict.name(), it.id);
-        }
-    }
-    if !detailed {
-        let counts: Vec<String> = crate::check::audit_counts(items)
-            .iter()
-            .map(|(v, n)| format!("{}: {n}", v.name()))
-            .collect();
-        let _ = writeln!(s, "\n{} items; {}", items.len(), counts.join(", "));
-    }
-    s
 }
 
 /// The errata list (Markdown): every claim result whose verdict is `erratum`, `contradicted`

@@ -21,11 +21,11 @@ fn docs_errata_is_up_to_date() {
         "docs/errata.md is out of date: run `cargo run --release -- audit --all --markdown > docs/errata.md`"
     );
     // the audit's errata stay found
-    let items = check::audit_all(all).unwrap();
+    let items = orthocheck::claims::audit::audit_all(all).unwrap();
     assert!(
         items
             .iter()
-            .filter(|i| i.verdict == check::Verdict::Erratum)
+            .filter(|(r, _)| r.verdict == check::Verdict::Erratum)
             .count()
             >= 11
     );

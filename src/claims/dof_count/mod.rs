@@ -1,6 +1,7 @@
 //! §2.1's worked counts: degrees of freedom of points and frames, as printed.
 
 mod case;
+mod judge;
 
 pub use case::*;
 
@@ -24,6 +25,6 @@ impl ClaimKind for DofCountCase {
     }
 
     fn run(&self, b: &ResultBuilder, _earlier: &[ClaimResult]) -> Result<Vec<ClaimResult>> {
-        crate::check::dof::check_count(b, self)
+        judge::check(b, self)
     }
 }

@@ -1,6 +1,7 @@
 //! Identifiability decided by Jacobian rank (§2.1, the abstract).
 
 mod case;
+mod judge;
 
 pub use case::*;
 
@@ -24,6 +25,6 @@ impl ClaimKind for DofIdentifiabilityCase {
     }
 
     fn run(&self, b: &ResultBuilder, _earlier: &[ClaimResult]) -> Result<Vec<ClaimResult>> {
-        crate::check::dof::check_identifiability(b, self)
+        judge::check(b, self)
     }
 }

@@ -1,6 +1,8 @@
 //! Every displayed formula and derivation step, machine-checked against its derivation.
 
 mod case;
+mod judge;
+pub mod study;
 
 pub use case::*;
 
@@ -29,6 +31,15 @@ impl ClaimKind for FormulaAuditCase {
     }
 
     fn run(&self, b: &ResultBuilder, _earlier: &[ClaimResult]) -> Result<Vec<ClaimResult>> {
-        crate::check::audit::check(b, self)
+        judge::check(b, self)
+    }
+
+    fn audit_items(
+        &self,
+        b: &ResultBuilder,
+        source: &crate::cases::Source,
+    ) -> Result<Vec<(ClaimResult, crate::claims::audit::Shown)>> {
+        let _ = source;
+        judge::judged(b, self)
     }
 }

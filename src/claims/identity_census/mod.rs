@@ -1,6 +1,8 @@
 //! §5.2 and §5.3 over seeded scenes: the identity tests.
 
 mod case;
+mod judge;
+pub mod study;
 
 pub use case::*;
 
@@ -25,6 +27,6 @@ impl ClaimKind for IdentityCensusCase {
     }
 
     fn run(&self, b: &ResultBuilder, _earlier: &[ClaimResult]) -> Result<Vec<ClaimResult>> {
-        crate::check::identity::check(b, self)
+        judge::check(b, self)
     }
 }

@@ -1,6 +1,9 @@
 //! §5.2's example: the frames, the hidden table, the debug printouts, the panels.
 
+pub mod author_program;
 mod case;
+mod judge;
+pub mod panels;
 
 pub use case::*;
 
@@ -24,6 +27,6 @@ impl ClaimKind for IdentityExampleCase {
     }
 
     fn run(&self, b: &ResultBuilder, _earlier: &[ClaimResult]) -> Result<Vec<ClaimResult>> {
-        crate::check::identity_example::check(b, self)
+        judge::check(b, self)
     }
 }

@@ -1,6 +1,8 @@
 //! §4's price of linearity: the paper's solvers against the standard method.
 
 mod case;
+mod judge;
+pub mod study;
 
 pub use case::*;
 
@@ -23,6 +25,6 @@ impl ClaimKind for LinearityCase {
     }
 
     fn run(&self, b: &ResultBuilder, _earlier: &[ClaimResult]) -> Result<Vec<ClaimResult>> {
-        crate::check::linearity::check(b, self)
+        judge::check(b, self)
     }
 }

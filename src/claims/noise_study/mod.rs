@@ -1,6 +1,10 @@
 //! A noise study (§2, §3): the paper's statements about errors under noise.
 
 mod case;
+mod judge;
+pub mod request;
+
+pub(crate) use judge::check_runs_of_body;
 
 pub use case::*;
 
@@ -24,6 +28,6 @@ impl ClaimKind for NoiseStudyCase {
     }
 
     fn run(&self, b: &ResultBuilder, _earlier: &[ClaimResult]) -> Result<Vec<ClaimResult>> {
-        crate::check::noise::check(b, self)
+        judge::check(b, self)
     }
 }

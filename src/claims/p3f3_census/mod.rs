@@ -1,5 +1,7 @@
 //! §2.2's solution count over generic and degenerate scenes.
 
+mod judge;
+
 use serde::Deserialize;
 
 use crate::cases::Validator;
@@ -29,6 +31,6 @@ impl ClaimKind for P3f3Census {
     }
 
     fn run(&self, b: &ResultBuilder, _earlier: &[ClaimResult]) -> Result<Vec<ClaimResult>> {
-        crate::check::p3f3::check_census(b, &self.0)
+        judge::check(b, &self.0)
     }
 }

@@ -1,6 +1,10 @@
 //! §2's worked example: three points in three frames.
 
 mod case;
+mod judge;
+pub mod restricted;
+pub mod restricted_study;
+pub mod study;
 
 pub use case::*;
 
@@ -24,6 +28,6 @@ impl ClaimKind for P3f3ExampleCase {
     }
 
     fn run(&self, b: &ResultBuilder, _earlier: &[ClaimResult]) -> Result<Vec<ClaimResult>> {
-        crate::check::p3f3::check_example(b, self)
+        judge::check(b, self)
     }
 }

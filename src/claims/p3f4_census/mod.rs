@@ -1,5 +1,7 @@
 //! §3's uniqueness over generic and special motions.
 
+mod judge;
+
 use serde::Deserialize;
 
 use crate::cases::Validator;
@@ -29,6 +31,6 @@ impl ClaimKind for P3f4Census {
     }
 
     fn run(&self, b: &ResultBuilder, _earlier: &[ClaimResult]) -> Result<Vec<ClaimResult>> {
-        crate::check::p3f3::check_p3f4_census(b, &self.0)
+        judge::check(b, &self.0)
     }
 }

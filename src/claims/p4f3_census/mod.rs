@@ -1,5 +1,7 @@
 //! §4's uniqueness over generic and degenerate scenes.
 
+mod judge;
+
 use serde::Deserialize;
 
 use crate::cases::Validator;
@@ -29,6 +31,6 @@ impl ClaimKind for P4f3Census {
     }
 
     fn run(&self, b: &ResultBuilder, _earlier: &[ClaimResult]) -> Result<Vec<ClaimResult>> {
-        crate::check::p4f3::check_census(b, &self.0)
+        judge::check(b, &self.0)
     }
 }

@@ -1,6 +1,11 @@
 //! §4's worked example: four points in three frames.
 
 mod case;
+pub mod joint;
+pub mod joint_study;
+mod judge;
+pub mod printed_matrix;
+pub mod study;
 
 pub use case::*;
 
@@ -24,6 +29,6 @@ impl ClaimKind for P4f3ExampleCase {
     }
 
     fn run(&self, b: &ResultBuilder, _earlier: &[ClaimResult]) -> Result<Vec<ClaimResult>> {
-        crate::check::p4f3::check_example(b, self)
+        judge::check(b, self)
     }
 }

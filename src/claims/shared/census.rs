@@ -3,6 +3,7 @@
 use serde::Deserialize;
 
 use crate::cases::{ClaimRef, Validator};
+use crate::check::{ClaimBuilder, ResultBuilder};
 use crate::error::Result;
 use crate::limits;
 
@@ -82,4 +83,16 @@ pub(crate) fn p3_census(c: &CensusCase, needed: usize, v: &Validator) -> Result<
 pub(crate) fn sizes(c: &CensusCase, v: &Validator) -> Result<()> {
     v.limit("trials", "trials", c.trials, limits::CASE_TRIALS)?;
     v.limit("frames", "frames", c.frames, limits::DOF_FRAMES)
+}
+
+/// The result id of `claim` in a census case: its suffix from the case, when it has one.
+pub(crate) fn census_claim<'b>(
+    b: &'b ResultBuilder,
+    case: &'b CensusCase,
+    claim: &'b ClaimRef,
+) -> ClaimBuilder<'b> {
+    match case.suffixes.get(&claim.claim) {
+        Some(s) => b.claim(claim).suffix(s),
+        None => b.claim(claim),
+    }
 }

@@ -2,6 +2,7 @@
 
 pub mod census;
 mod noise;
+pub(crate) mod rank;
 mod tables;
 
 pub use census::{CensusCase, CensusException};

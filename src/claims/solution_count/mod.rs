@@ -1,6 +1,8 @@
 //! Exact solution counts of three and four points in three frames, and the literature's.
 
 mod case;
+mod judge;
+pub mod study;
 
 pub use case::*;
 
@@ -29,6 +31,6 @@ impl ClaimKind for SolutionCountCase {
     }
 
     fn run(&self, b: &ResultBuilder, _earlier: &[ClaimResult]) -> Result<Vec<ClaimResult>> {
-        crate::check::solution_count::check(b, self)
+        judge::check(b, self)
     }
 }

@@ -1,6 +1,8 @@
 //! Errata of the text, each quoted at its lines of the LaTeX source.
 
 mod case;
+pub mod figure_labels;
+mod judge;
 
 pub use case::*;
 
@@ -23,7 +25,7 @@ impl ClaimKind for SourceErrataCase {
     }
 
     fn run(&self, b: &ResultBuilder, _earlier: &[ClaimResult]) -> Result<Vec<ClaimResult>> {
-        crate::check::errata::check(b, self)
+        judge::check(b, self)
     }
 
     fn attach_source(
@@ -34,5 +36,31 @@ impl ClaimKind for SourceErrataCase {
     ) -> Result<()> {
         // the quotes are verified against the source as it is read
         case::attach_source(self, text, path, latex)
+    }
+
+    fn audit_items(
+        &self,
+        b: &ResultBuilder,
+        _source: &crate::cases::Source,
+    ) -> Result<Vec<(ClaimResult, crate::claims::audit::Shown)>> {
+        let results = judge::check(b, self)?;
+        Ok(self
+            .findings
+            .iter()
+            .zip(&results)
+            .map(|(f, r)| {
+                let shown = crate::claims::audit::Shown {
+                    place: crate::claims::formula_audit::Place {
+                        section: r.section.clone(),
+                        label: None,
+                        macros: Vec::new(),
+                    },
+                    printed: f.claim.quote.clone(),
+                    defect: Some(f.defect.clone()),
+                    should_be: f.corrected.clone(),
+                };
+                (r.clone(), shown)
+            })
+            .collect())
     }
 }

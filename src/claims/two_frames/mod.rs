@@ -1,6 +1,10 @@
 //! §5.1 and §5.4: two frames are not enough; the counterexample; the curves.
 
 mod case;
+pub mod drawn_member;
+mod judge;
+pub mod member;
+pub mod study;
 
 pub use case::*;
 
@@ -24,6 +28,6 @@ impl ClaimKind for TwoFramesCase {
     }
 
     fn run(&self, b: &ResultBuilder, _earlier: &[ClaimResult]) -> Result<Vec<ClaimResult>> {
-        crate::check::two_frames::check(b, self)
+        judge::check(b, self)
     }
 }

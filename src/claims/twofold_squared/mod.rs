@@ -1,6 +1,10 @@
 //! Eq. p3f3sqr: the signed relations and their twofold squaring.
 
 mod case;
+mod judge;
+pub mod study;
+
+pub use judge::{audit, TwofoldAudit};
 
 pub use case::*;
 
@@ -27,6 +31,29 @@ impl ClaimKind for TwofoldCase {
     }
 
     fn run(&self, b: &ResultBuilder, _earlier: &[ClaimResult]) -> Result<Vec<ClaimResult>> {
-        crate::check::twofold::check(b, self)
+        judge::check(b, self)
+    }
+
+    fn audit_items(
+        &self,
+        b: &ResultBuilder,
+        source: &crate::cases::Source,
+    ) -> Result<Vec<(ClaimResult, crate::claims::audit::Shown)>> {
+        let r = judge::polynomial(b, self)?;
+        let a = judge::audit(self)?;
+        let shown = crate::claims::audit::Shown {
+            place: crate::claims::formula_audit::Place {
+                section: source.section.clone(),
+                label: source.label.clone(),
+                macros: Vec::new(),
+            },
+            printed: format!("{} = 0", a.transcription),
+            defect: None,
+            should_be: format!(
+                "±√(a²−aᵢ²) ± √(b²−bᵢ²) ± √(c²−cᵢ²) = 0 squared twice: {} = 0",
+                a.derived
+            ),
+        };
+        Ok(vec![(r, shown)])
     }
 }

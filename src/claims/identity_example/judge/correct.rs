@@ -1,0 +1,201 @@
+//! "The first two attempts are the correct ones, differing only by the sign in the formula
+//! for calculating b" (§5.2): in the example, in seeded scenes under the program's own depth
+//! conventions, and its cause.
+
+use super::debug::Block;
+use super::{ClaimResult, Power, ResultBuilder, Tolerance, ToleranceSource, Value, Verdict};
+use crate::claims::identity_census::study::{distance_level, rank_example, ExampleRanking};
+use crate::claims::identity_example::author_program::convention::{census, ConventionCensus};
+use crate::claims::identity_example::author_program::Example;
+use crate::claims::identity_example::IdentityExampleCase;
+
+pub(super) fn results(
+    b: &ResultBuilder,
+    case: &IdentityExampleCase,
+    ex: &Example,
+    truth: &[usize; 4],
+    blocks: &[Block],
+) -> Vec<ClaimResult> {
+    let r = rank_example(ex, truth, case.census_c_factor);
+    let factors = [case.census_c_factor];
+    let generic = census(case.census_trials, case.seed, &factors, false);
+    let planar = census(case.census_trials, case.seed, &factors, true);
+    vec![
+        first_result(b, case, truth, blocks, &r, &generic),
+        ranking_result(b, case, truth, &r),
+        generic_result(b, case, &generic, &planar),
+        cause_result(b, case, truth, blocks, &generic, &planar),
+    ]
+}
+
+fn tolerance(r: &ExampleRanking) -> Tolerance {
+    Tolerance::bound(
+        r.true_bound,
+        ToleranceSource::Propagated,
+        "first-order effect of the frames' rounding on the distance, plus 3√(64ε) × the image size",
+    )
+}
+
+fn runner_up(r: &ExampleRanking, truth: &[usize; 4]) -> f64 {
+    r.by_paper
+        .iter()
+        .find(|x| x.0 != *truth)
+        .map_or(f64::INFINITY, |x| x.1)
+}
+
+fn first_result(
+    b: &ResultBuilder,
+    case: &IdentityExampleCase,
+    truth: &[usize; 4],
+    blocks: &[Block],
+    r: &ExampleRanking,
+    generic: &ConventionCensus,
+) -> ClaimResult {
+    let first_two = blocks.len() >= 2
+        && blocks[0].assignment() == Some(*truth)
+        && blocks[1].assignment() == Some(*truth)
+        && blocks[0].attempt.version != blocks[1].attempt.version;
+    let on_line =
+        !r.true_distances.is_empty() && r.true_distances.iter().all(|d| *d <= r.true_bound);
+    let runner = runner_up(r, truth);
+    b.claim(&case.correct)
+        .printed("attempts called correct", Value::count(2))
+        .computed("first two blocks: the true assignment, opposite signs of b", Value::flag(first_two))
+        .computed("distances of T₂ from its line, true assignment", Value::reals(&r.true_distances))
+        .computed("generic scenes where both signs of b pass under the program's conventions (see ex5-correct/generic)", Value::count_of(generic.both, generic.scenes))
+        .tolerance(tolerance(r))
+        .power(Power::mutant(runner > r.true_bound, "the best wrong assignment, through the same distance test, is rejected"))
+        .method("the procedure at c = census_c_factor × the smallest admissible c for the true assignment, both signs of b; true of the example, which owes it to its planar body (ex5-correct/cause): in generic scenes exactly one sign passes (ex5-correct/generic)")
+        .detail("best wrong assignment's distance", Value::real(runner))
+        .verdict(Verdict::holds(first_two && on_line))
+}
+
+fn ranking_result(
+    b: &ResultBuilder,
+    case: &IdentityExampleCase,
+    truth: &[usize; 4],
+    r: &ExampleRanking,
+) -> ClaimResult {
+    let runner = runner_up(r, truth);
+    let within: Vec<[usize; 4]> = r
+        .by_paper
+        .iter()
+        .filter(|x| x.1 <= r.true_bound)
+        .map(|x| x.0)
+        .collect();
+    let epi_first = r.by_epipolar.first().map(|x| x.0);
+    // an assignment without an admissible c has no line, so no distance (not an infinite one)
+    let finite_distances: Vec<f64> = r
+        .by_paper
+        .iter()
+        .map(|x| x.1)
+        .filter(|d| d.is_finite())
+        .collect();
+    let no_line = r.by_paper.len() - finite_distances.len();
+    b.claim(&case.correct)
+        .suffix("ranking")
+        .printed("the assignment that puts T₂ on its line", Value::label(format!("{truth:?}")))
+        .computed("assignments within the bound by the paper's distance", Value::label(format!("{within:?}")))
+        .computed("first by the equal-scale epipolar residual", Value::label(format!("{:?}", epi_first.unwrap_or([0; 4]))))
+        .tolerance(tolerance(r))
+        .power(Power::mutant(runner > r.true_bound, "every wrong assignment is rejected by the same bound"))
+        .method("every assignment of frame 2 (re-centred at its R) through the paper's procedure at census_c_factor × its smallest admissible c, and through the affine epipolar constraint with the coordinates' rounding (the body is planar: equal scale is met inside a two-dimensional null space)")
+        .detail("by the paper's distance", Value::reals(&finite_distances))
+        .detail("assignments with no real line (no admissible c: the paper's distance does not exist)", Value::count_of(no_line, r.by_paper.len()))
+        .detail("by the epipolar residual", Value::reals(&r.by_epipolar.iter().map(|x| x.1).collect::<Vec<_>>()))
+        .verdict(if within == [*truth] && epi_first == Some(*truth) { Verdict::Reproduced } else { Verdict::Contradicted })
+}
+
+/// "Both signs of b are correct" as a property of the method (docs/verdicts.md, §5.2): the
+/// proportion of seeded scenes where both versions pass, against 1/2 with two binomial
+/// standard errors 2√(¼ / n): above → holds, below → fails, within → inconclusive.
+pub(super) fn judge_both_signs(both: usize, n: usize) -> Verdict {
+    if n == 0 {
+        return Verdict::Inconclusive;
+    }
+    let p = both as f64 / n as f64;
+    let band = 2.0 * (0.25 / n as f64).sqrt();
+    if p > 0.5 + band {
+        Verdict::StatisticalHolds
+    } else if p < 0.5 - band {
+        Verdict::StatisticalFails
+    } else {
+        Verdict::Inconclusive
+    }
+}
+
+fn generic_result(
+    b: &ResultBuilder,
+    case: &IdentityExampleCase,
+    g: &ConventionCensus,
+    p: &ConventionCensus,
+) -> ClaimResult {
+    let control = judge_both_signs(p.both, p.scenes);
+    b.claim(&case.correct)
+        .suffix("generic")
+        .printed("both attempts correct, differing only in the sign of b", Value::flag(true))
+        .computed("generic scenes: both versions put P₂ on its line", Value::count_of(g.both, g.scenes))
+        .computed("… exactly one version", Value::count_of(g.exactly_one, g.scenes))
+        .computed("… neither", Value::count_of(g.neither, g.scenes))
+        .computed("the passing version is the true root of b² when T's depth has the same sign in both frames, the other root otherwise", Value::count_of(g.predicted, g.exactly_one))
+        .computed("the outcome is the same at every d tried", Value::count_of(g.c_independent, g.scenes))
+        .computed("planar scenes (P in the plane RTQ): both versions pass", Value::count_of(p.both, p.scenes))
+        .computed("the reading that also tries both frame-2 mirror images: both signs pass in generic scenes", Value::count_of(g.mirrors_both, g.scenes))
+        .tolerance(Tolerance::bound(distance_level(), ToleranceSource::ErrorBound, "a version passes when the distance of P₂ from its line is within 3√(64ε) of the image size"))
+        .power(Power::mutant(control == Verdict::StatisticalHolds, "the same judge on the planar scenes says the claim holds"))
+        .method("seeded random bodies of four points in two frames (program order P, Q, R, T), the program's conventions (T's depth positive in both frames, Q's flag closing the triangle, one frame-2 orientation), d at its true value and at census_c_factor × the smallest admissible d; rule: docs/verdicts.md (§5.2). A sign of b and a frame-2 mirror trade places: with both mirrors allowed both signs pass, which is why the old reading found 'both' in every scene")
+        .detail("seed", Value::exact(case.seed))
+        .detail("verdict of the same judge on the planar scenes", Value::label(control.name()))
+        .verdict(judge_both_signs(g.both, g.scenes))
+}
+
+/// The example owes its two passing versions to its body: P₁ = α T₁ + β Q₁ with P in the
+/// plane R, T, Q puts Pa on P₂ whatever d and b.
+fn cause_result(
+    b: &ResultBuilder,
+    case: &IdentityExampleCase,
+    truth: &[usize; 4],
+    blocks: &[Block],
+    g: &ConventionCensus,
+    p: &ConventionCensus,
+) -> ClaimResult {
+    let true_blocks: Vec<_> = blocks
+        .iter()
+        .filter(|bl| bl.assignment() == Some(*truth))
+        .filter_map(|bl| bl.program.as_ref())
+        .collect();
+    let on = true_blocks
+        .iter()
+        .filter(|r| r.block.pa_off <= r.pa_off_bound + r.float_bound)
+        .count();
+    let offs: Vec<f64> = true_blocks.iter().map(|r| r.block.pa_off).collect();
+    let level = distance_level();
+    let rejected = g.pa_off_min > level && p.pa_off_max <= level;
+    b.claim(&case.correct)
+        .suffix("cause")
+        .printed("attempts called correct", Value::count(2))
+        .computed("true-assignment blocks with Pa.xy = P2 within the propagated bound (both versions)", Value::count_of(on, true_blocks.len()))
+        .computed("|Pa.xy − P2| in those blocks", Value::reals(&offs))
+        .computed("generic scenes: smallest |Pa.xy − P₂| / image size", Value::real(g.pa_off_min))
+        .computed("planar scenes: largest |Pa.xy − P₂| / image size", Value::real(p.pa_off_max))
+        .tolerance(Tolerance::bound(0.0, ToleranceSource::Propagated, "the first-order effect of the frames' and d0's rounding on |Pa.xy − P2| + 64ε × the block's largest number"))
+        .power(Power::mutant(rejected, "the same test in the generic scenes finds Pa off P₂ in every one (and on it in every planar one)"))
+        .method("the tested point lies in the plane of R, T, Q (the hidden table's Gram matrix has exact rank 2, ex5-hidden-table): then T_a is the tested point itself, its image is P₂ for either sign of b and any d, and the line through it passes P₂ trivially; this, not the method, makes both attempts correct")
+        .verdict(if on == true_blocks.len() && on > 0 { Verdict::ReproducedWithinRounding } else { Verdict::Contradicted })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn both_signs_judge_both_sides() {
+        assert_eq!(judge_both_signs(200, 200), Verdict::StatisticalHolds);
+        assert_eq!(judge_both_signs(0, 200), Verdict::StatisticalFails);
+        assert_eq!(judge_both_signs(100, 200), Verdict::Inconclusive);
+        // the band at n = 100 is ±0.1
+        assert_eq!(judge_both_signs(61, 100), Verdict::StatisticalHolds);
+        assert_eq!(judge_both_signs(59, 100), Verdict::Inconclusive);
+        assert_eq!(judge_both_signs(0, 0), Verdict::Inconclusive);
+    }
+}

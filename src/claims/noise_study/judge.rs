@@ -1,0 +1,524 @@
+//! Claims of the noise studies (§2, §3, §4): the paper's words about its noisy runs, judged
+//! against seeded distributions by the rule of `docs/verdicts.md` ("Statistical claims").
+
+use crate::check::noise::{
+    claim_of, decide, judge_bound, margin, metric_of, metric_phrase, power, Claim, Decision, Facts,
+    Judged, TYPICAL_BAND,
+};
+use crate::check::{
+    ClaimResult, Evidence, Power, ResultBuilder, Tolerance, ToleranceSource, Value, Verdict,
+};
+use crate::claims::noise_study::NoiseStudyCase;
+use crate::claims::shared::{Direction, NoiseLevel, OverEdges, Quantity as Symbols};
+use crate::derivations::noise::{LevelResult, Study, METRICS, QUANTILES};
+use crate::derivations::solver::default_edge_names;
+use crate::error::Result;
+use crate::model::Body;
+use crate::studies::noise::{edge_medians, run_both, run_errors, run_study, SymbolDistances};
+mod figure;
+
+pub(super) fn check(b: &ResultBuilder, case: &NoiseStudyCase) -> Result<Vec<ClaimResult>> {
+    let mut out = Vec::new();
+    let lengths: Vec<f64> = case.body.lengths.iter().map(|p| p.to_f64()).collect();
+    // the printed squares when there are any (the runs are compared with them), else the
+    // squares of the printed lengths
+    let truth: Vec<f64> = if case.body.squares.is_empty() {
+        lengths.iter().map(|x| x * x).collect()
+    } else {
+        case.body.squares.iter().map(|p| p.to_f64()).collect()
+    };
+    if let Some(claim) = &case.body.claim {
+        out.push(body_result(b, claim, case));
+    }
+    let results = run_study(case)?;
+    let ctx = Context {
+        truth: &truth,
+        names: &default_edge_names(truth.len()),
+        trials: case.trials,
+        seed: case.seed,
+        setting: setting(truth.len(), case.frames),
+    };
+    for (i, (lv, res)) in case.levels.iter().zip(&results).enumerate() {
+        // one claim quoted at several levels gets one result per level
+        let repeated = case
+            .levels
+            .iter()
+            .filter(|l| l.claim.claim == lv.claim.claim)
+            .count()
+            > 1;
+        let neighbour = results
+            .get(i + 1)
+            .or(i.checked_sub(1).and_then(|j| results.get(j)));
+        out.extend(ctx.level(b, lv, repeated, res, neighbour.map(|n| n.as_slice())));
+    }
+    Ok(out)
+}
+
+/// The printed body: its squares against the squares of its printed lengths.
+fn body_result(
+    b: &ResultBuilder,
+    claim: &crate::cases::ClaimRef,
+    case: &NoiseStudyCase,
+) -> ClaimResult {
+    let digits = case.body.significant_digits.unwrap_or(6);
+    let pairs: Vec<(f64, f64, f64)> = case
+        .body
+        .lengths
+        .iter()
+        .zip(&case.body.squares)
+        .map(|(l, s)| {
+            (
+                l.to_f64() * l.to_f64(),
+                s.to_f64(),
+                s.half_unit_significant(digits),
+            )
+        })
+        .collect();
+    let agree = pairs.iter().all(|(sq, s, h)| (sq - s).abs() <= *h);
+    // the acceptance region of the edge with the widest half unit: the printed squares the
+    // same check would pass there
+    let widest = pairs
+        .iter()
+        .copied()
+        .max_by(|a, b| a.2.total_cmp(&b.2))
+        .unwrap_or((0.0, 0.0, 0.0));
+    let mut r = b.claim(claim);
+    for l in &case.body.lengths {
+        r = r.printed("length", l);
+    }
+    for s in &case.body.squares {
+        r = r.printed("square", s);
+    }
+    let squares: Vec<f64> = pairs.iter().map(|p| p.0).collect();
+    let halves: Vec<f64> = pairs.iter().map(|p| p.2).collect();
+    r.computed("squares of the printed lengths", Value::reals(&squares))
+        .tolerance(Tolerance::bound(
+            widest.2,
+            ToleranceSource::PrintedPrecision,
+            "half a unit in the last significant digit the program printed, per square",
+        ))
+        // the region is the printed squares within half a unit of the computed square: exactly
+        // those the printed digits would call right, so it is centred on the computed square
+        .power(Power::interval(
+            widest.0 - widest.2,
+            widest.0 + widest.2,
+            widest.0,
+            widest.2,
+            "printed squares the same check accepts for the edge with the widest half unit",
+        ))
+        .method("squares of the printed lengths against the printed squares")
+        .detail("half units of the printed squares", Value::reals(&halves))
+        .verdict(Verdict::holds(agree))
+}
+
+/// What every level of a study is judged against.
+pub(super) struct Context<'a> {
+    /// True squared edges.
+    pub truth: &'a [f64],
+    /// Edge names.
+    pub names: &'a [String],
+    /// Trials per distribution.
+    pub trials: usize,
+    /// Seed.
+    pub seed: u64,
+    /// The scene in words, for the figures' titles ("three points, four frames").
+    pub setting: String,
+}
+
+/// The scene of a study in words: its points (from its `edges`, all pairs) and `frames`.
+fn setting(edges: usize, frames: usize) -> String {
+    let points = (2usize..).find(|&p| p * (p - 1) / 2 >= edges).unwrap_or(2);
+    format!(
+        "{} points, {} frames",
+        count_word(points),
+        count_word(frames)
+    )
+}
+
+/// A small count as a word, a larger one in digits.
+fn count_word(n: usize) -> String {
+    const WORDS: [&str; 11] = [
+        "no", "one", "two", "three", "four", "five", "six", "seven", "eight", "nine", "ten",
+    ];
+    WORDS
+        .get(n)
+        .map_or_else(|| n.to_string(), |w| (*w).to_string())
+}
+
+impl Context<'_> {
+    /// The results of one printed level against its distributions `res` (one per noise model
+    /// or scene); `repeated` when the claim is quoted at several levels (each gets its own
+    /// id); `neighbour` the distributions of the next printed level, for the power.
+    pub(super) fn level(
+        &self,
+        b: &ResultBuilder,
+        lv: &NoiseLevel,
+        repeated: bool,
+        res: &[LevelResult],
+        neighbour: Option<&[LevelResult]>,
+    ) -> Vec<ClaimResult> {
+        let level_id = format!("eps-{}", lv.level.text);
+        let suffix = |s: Option<&str>| match (repeated, s) {
+            (true, Some(s)) => Some(format!("{level_id}/{s}")),
+            (true, None) => Some(level_id.clone()),
+            (false, s) => s.map(str::to_string),
+        };
+        let first = lv.printed.first().map_or(&[][..], |v| v.as_slice());
+        let values: Vec<f64> = first.iter().map(|p| p.to_f64()).collect();
+        let half: Vec<f64> = first.iter().map(|p| p.half_unit()).collect();
+        let dist = SymbolDistances::of(&values, self.truth);
+        let read_as = if dist.are_squares() {
+            Symbols::Squares
+        } else {
+            Symbols::Lengths
+        };
+        let mut out = Vec::new();
+        if read_as != lv.labelled_as {
+            out.push(self.symbols_result(b, lv, suffix(Some("symbols")), dist, read_as));
+        }
+        let run = run_errors(&values, &half, dist.are_squares(), self.truth);
+        let (quantity, edges) = match &lv.statement {
+            Some(st) => (st.quantity.unwrap_or(read_as), st.over_edges),
+            None => (read_as, OverEdges::Max),
+        };
+        let facts = Facts {
+            metric: metric_of(quantity, edges),
+            run: run.as_ref(),
+            dists: res,
+        };
+        let judged = Judged::new(claim_of(lv), facts);
+        let result = self.main_result(b, lv, suffix(None), read_as, &judged, neighbour);
+        b.figure(figure::figure(
+            &result,
+            &self.setting,
+            lv,
+            &judged,
+            (self.trials, self.seed),
+        ));
+        out.push(result);
+        out
+    }
+
+    /// The printed symbols (a, b, c or a², b², c²) against what the values are.
+    fn symbols_result(
+        &self,
+        b: &ResultBuilder,
+        lv: &NoiseLevel,
+        suffix: Option<String>,
+        dist: SymbolDistances,
+        read_as: Symbols,
+    ) -> ClaimResult {
+        let lengths: Vec<f64> = self.truth.iter().map(|t| t.sqrt()).collect();
+        // the same test on the true lengths must read them as lengths
+        let control = !SymbolDistances::of(&lengths, self.truth).are_squares();
+        let mut r = b.claim(&lv.claim);
+        if let Some(s) = &suffix {
+            r = r.suffix(s);
+        }
+        r = r.printed("symbols", symbols_name(lv.labelled_as));
+        for p in lv.printed.first().into_iter().flatten() {
+            r = r.printed("value", p);
+        }
+        r.computed(
+            "largest relative distance to the true squares",
+            dist.to_squares,
+        )
+        .computed(
+            "largest relative distance to the true lengths",
+            dist.to_lengths,
+        )
+        .computed("the values are", symbols_name(read_as))
+        .correction(format!("read the values as {}", symbols_name(read_as)))
+        .tolerance(Tolerance::exact("the nearer of the two readings"))
+        .power(Power::mutant(
+            control,
+            "the same test reads the true lengths themselves as lengths",
+        ))
+        .method(
+            "relative distance of the printed values to the true lengths and to the true squares",
+        )
+        .detail("true squares", Value::reals(self.truth))
+        .detail("true lengths", Value::reals(&lengths))
+        .verdict(Verdict::Erratum)
+    }
+
+    /// The level's claim, as [`Judged`] (decided by [`decide`]).
+    fn main_result(
+        &self,
+        b: &ResultBuilder,
+        lv: &NoiseLevel,
+        suffix: Option<String>,
+        read_as: Symbols,
+        judged: &Judged,
+        neighbour: Option<&[LevelResult]>,
+    ) -> ClaimResult {
+        let (claim, decision, f) = (judged.claim, judged.decision, &judged.facts);
+        let mut r = b.claim(&lv.claim).printed("ε", &lv.level);
+        if let Some(s) = &suffix {
+            r = r.suffix(s);
+        }
+        for (k, sol) in lv.printed.iter().enumerate() {
+            for (p, n) in sol.iter().zip(self.names) {
+                r = r.printed(&format!("run, solution {}, {n}", k + 1), p);
+            }
+        }
+        if let Some(st) = &lv.statement {
+            r = r.printed(direction_name(st.direction), &st.bound);
+        }
+        let m = f.metric;
+        r = r
+            .computed("the values are", symbols_name(read_as))
+            .computed("reading", metric_phrase(m));
+        if let Some(run) = f.run {
+            r = r.computed("printed run: error", run.metrics[m]);
+            for d in f.dists {
+                r = r.computed(
+                    &format!("{}: percentile of the printed run", d.model),
+                    100.0 * d.rank_of(m, run.metrics[m]),
+                );
+            }
+        }
+        if let Claim::Median(bound, _) = claim {
+            for d in f.dists {
+                if let Some(q) = d.quantile(m, 0.5) {
+                    r = r.computed(&format!("{}: median trial's error", d.model), q);
+                }
+                r = r.computed(
+                    &format!("{}: percentile rank of the bound", d.model),
+                    100.0 * d.rank_of(m, bound),
+                );
+            }
+        }
+        let r = r
+            .tolerance(self.tolerance(claim, f))
+            .power(power(claim, f, neighbour))
+            .evidence(self.evidence(lv, claim, f, decision, neighbour));
+        r.verdict(decision.verdict())
+    }
+
+    /// The Monte Carlo tolerance of a decision: the sampling margin at the threshold that
+    /// decides it (a band edge, or the median).
+    fn tolerance(&self, claim: Claim, f: &Facts) -> Tolerance {
+        let n = f
+            .dists
+            .iter()
+            .map(|d| d.sorted[f.metric].len())
+            .min()
+            .unwrap_or(0)
+            .max(1);
+        let (p, how) = match claim {
+            Claim::Median(..) => (
+                0.5,
+                "the bound's percentile rank must differ from 50 by more than two binomial standard errors (the bound, in percentile points)",
+            ),
+            _ => (
+                TYPICAL_BAND.1,
+                "the printed run's percentile must lie inside the 2.5–97.5 band of one model by more than two binomial standard errors (the bound, in percentile points, at the upper edge)",
+            ),
+        };
+        Tolerance::bound(
+            100.0 * margin(p, n),
+            ToleranceSource::MonteCarlo {
+                percentile: crate::check::Real(100.0 * p),
+                trials: self.trials as u64,
+            },
+            how,
+        )
+    }
+}
+
+fn symbols_name(q: Symbols) -> &'static str {
+    match q {
+        Symbols::Squares => "a², b², c² (squared lengths)",
+        Symbols::Lengths => "a, b, c (lengths)",
+    }
+}
+
+fn direction_name(d: Direction) -> &'static str {
+    match d {
+        Direction::Below => "error below",
+        Direction::Above => "error above",
+    }
+}
+
+const METHOD: &str =
+    "seeded Monte Carlo: the body under uniformly random rotations in every frame \
+(or at the paper's own scene where the model says so), P at the origin, noise, the solver, and the \
+real solution nearest the truth; errors relative to the truth; percentiles among the trials with a \
+real solution";
+
+impl Context<'_> {
+    /// The evidence of a level: the printed run under every reading, the distributions.
+    fn evidence(
+        &self,
+        lv: &NoiseLevel,
+        claim: Claim,
+        f: &Facts,
+        decision: Decision,
+        neighbour: Option<&[LevelResult]>,
+    ) -> Evidence {
+        let m = f.metric;
+        let mut ev = Evidence::new(METHOD)
+            .with("trials per model", self.trials)
+            .with("seed", self.seed)
+            .with("decision", decision.name());
+        if let Some(run) = f.run {
+            ev = ev.with(
+                "printed run: error over the rounding of its digits",
+                Value::interval(run.ranges[m].0, run.ranges[m].1),
+            );
+            if let Claim::Example(bound, d) = claim {
+                ev = ev.with(
+                    "bound on the printed run",
+                    judge_bound(run.ranges[m], bound, d).name(),
+                );
+                // the other readings, for comparison (they do not decide)
+                for (k, phrase) in METRICS.iter().enumerate() {
+                    ev = ev
+                        .with(&format!("printed run, {phrase}"), run.metrics[k])
+                        .with(
+                            &format!("printed run, {phrase}: bound holds"),
+                            judge_bound(run.ranges[k], bound, d) == Decision::Holds,
+                        );
+                }
+            }
+            if !matches!(claim, Claim::Median(..)) {
+                let band = decide(Claim::Typical, f);
+                ev = ev.with("printed run inside the typical band", band.name());
+            }
+            if self.truth.len() > 3 {
+                ev = ev
+                    .with(
+                        "printed run, per edge: error in squares",
+                        Value::reals(&run.edge_squares),
+                    )
+                    .with(
+                        "printed run, per edge: error in lengths",
+                        Value::reals(&run.edge_lengths),
+                    );
+            }
+        }
+        for d in f.dists {
+            ev = self.dist_evidence(ev, claim, m, d);
+        }
+        if let Some(mb) = claim.mutant().and_then(Claim::bound) {
+            ev = ev.with("mutant bound", mb);
+        }
+        if let (Claim::Typical, Some(run), Some(ns)) = (claim, f.run, neighbour) {
+            if let Some(d) = ns.first() {
+                ev = ev.with("mutant: the neighbouring level's ε", d.level);
+            }
+            for d in ns {
+                ev = ev.with(
+                    &format!("mutant: percentile of the printed run there, {}", d.model),
+                    100.0 * d.rank_of(m, run.metrics[m]),
+                );
+            }
+        }
+        if lv.printed.len() > 1 {
+            ev = ev.with(
+                "the run's other solutions",
+                "cannot be checked: the paper does not print the noisy projections of its runs",
+            );
+        }
+        ev
+    }
+
+    /// One distribution's evidence: failures, quantiles and mean of the reading's metric,
+    /// the share of trials the bound holds for, the medians under every reading.
+    fn dist_evidence(&self, mut ev: Evidence, claim: Claim, m: usize, d: &LevelResult) -> Evidence {
+        let model = &d.model;
+        ev = ev.with(
+            &format!("{model}: trials without a real solution"),
+            Value::count_of(d.failures, d.trials),
+        );
+        let qs: Vec<f64> = QUANTILES.iter().filter_map(|&q| d.quantile(m, q)).collect();
+        ev = ev.with(
+            &format!("{model}: 5/25/50/75/95/99 % quantiles"),
+            Value::reals(&qs),
+        );
+        if !d.sorted[m].is_empty() {
+            ev = ev.with(&format!("{model}: mean over the trials"), d.mean(m));
+        }
+        if let Some(bound) = claim.bound() {
+            let below = d.rank_of(m, bound);
+            let share = match claim {
+                Claim::Example(_, Direction::Above) | Claim::Median(_, Direction::Above) => {
+                    1.0 - below
+                }
+                _ => below,
+            };
+            ev = ev.with(
+                &format!("{model}: share of trials for which the bound holds"),
+                share,
+            );
+        }
+        if matches!(claim, Claim::Median(..)) {
+            let med: Vec<f64> = (0..METRICS.len())
+                .filter_map(|k| d.quantile(k, 0.5))
+                .collect();
+            ev = ev.with(
+                &format!("{model}: median trial under every reading (max/mean in squares, max/mean in lengths)"),
+                Value::reals(&med),
+            );
+        }
+        if self.truth.len() > 3 {
+            let [sq, ln] = edge_medians(d);
+            ev = ev
+                .with(
+                    &format!("{model}: median error per edge, squares"),
+                    Value::reals(&sq),
+                )
+                .with(
+                    &format!("{model}: median error per edge, lengths"),
+                    Value::reals(&ln),
+                );
+        }
+        ev
+    }
+}
+
+/// The §4 printed runs: the body under random motions (both noise models) and, when given,
+/// at the paper's own scene (`scene[i]` for level `i`), judged like every noise level;
+/// `study` is (trials, seed).
+pub(crate) fn check_runs_of_body(
+    b: &ResultBuilder,
+    levels: &[NoiseLevel],
+    truth: &[f64],
+    body: Body,
+    study: (usize, u64),
+    scene: &[LevelResult],
+) -> Vec<ClaimResult> {
+    let (trials, seed) = study;
+    let random = Study {
+        solver: crate::model::StudySolver::P4f3,
+        body,
+        frames: 3,
+        trials,
+        seed,
+        motions: None,
+    };
+    let eps: Vec<f64> = levels.iter().map(|l| l.level.to_f64()).collect();
+    let all: Vec<Vec<LevelResult>> = run_both(&random, &eps)
+        .into_iter()
+        .enumerate()
+        .map(|(i, pair)| {
+            let mut v = pair.to_vec();
+            v.extend(scene.get(i).cloned());
+            v
+        })
+        .collect();
+    let ctx = Context {
+        truth,
+        names: &default_edge_names(truth.len()),
+        trials,
+        seed,
+        setting: setting(truth.len(), random.frames),
+    };
+    let mut out = Vec::new();
+    for (i, (lv, res)) in levels.iter().zip(&all).enumerate() {
+        let neighbour = all.get(i + 1).or(i.checked_sub(1).and_then(|j| all.get(j)));
+        out.extend(ctx.level(b, lv, false, res, neighbour.map(|n| n.as_slice())));
+    }
+    out
+}
