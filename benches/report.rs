@@ -7,7 +7,7 @@ use std::path::Path;
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use orthocheck::cases;
-use orthocheck::report::{html, Report};
+use orthocheck::report::html;
 
 fn report(c: &mut Criterion) {
     let all = cases::load_all::<orthocheck::claims::Check>(Path::new(concat!(
@@ -19,7 +19,7 @@ fn report(c: &mut Criterion) {
     g.sample_size(10);
     g.bench_function("full_report_with_html", |b| {
         b.iter(|| {
-            let r = Report::from_cases(&all).expect("the report runs");
+            let r = orthocheck::claims::report_of(&all).expect("the report runs");
             html::render(&r).len()
         })
     });
@@ -31,7 +31,7 @@ fn report(c: &mut Criterion) {
     assert_eq!(ex4.len(), 1, "the §4 case is among the paper cases");
     g.bench_function("ex4_four_points", |b| {
         b.iter(|| {
-            Report::from_cases(&ex4)
+            orthocheck::claims::report_of(&ex4)
                 .expect("the §4 case runs")
                 .claims
                 .len()

@@ -46,9 +46,7 @@ fn located(path: &Path, line: Option<u64>, field: &str, message: String) -> Erro
     }
 }
 
-/// The largest tracks file read, in bytes: a file (or device) beyond it is refused before it
-/// can fill the memory.
-pub const MAX_TRACKS_BYTES: u64 = 64 << 20;
+pub use crate::limits::INPUT_BYTES as MAX_TRACKS_BYTES;
 
 /// Read a tracks file; the extension (`.csv`, otherwise YAML) picks the format.
 ///

@@ -26,7 +26,7 @@ pub const SYNTH_POINTS: usize = 100_000;
 /// Frames of `synth`.
 pub const SYNTH_FRAMES: usize = 100_000;
 /// Points × frames of `synth`: the file it writes must stay readable by the tracks reader
-/// (`input::MAX_TRACKS_BYTES`); one image point takes about 45 bytes.
+/// ([`INPUT_BYTES`]); one image point takes about 45 bytes.
 pub const SYNTH_POINTS_TIMES_FRAMES: usize = 1_000_000;
 /// Monte Carlo trials per level and model of a noise study (case or `noise --trials`;
 /// `noise --max-trials` raises it: the statistics are streamed, so memory stays fixed).
@@ -137,6 +137,10 @@ fn short(x: f64) -> String {
         format!("{x}")
     }
 }
+
+/// The largest tracks file read, in bytes: a file (or device) beyond it is refused before it
+/// can fill the memory.
+pub const INPUT_BYTES: u64 = 64 << 20;
 
 #[cfg(test)]
 mod tests {

@@ -24,18 +24,52 @@ pub fn sig(x: f64) -> String {
     if x == 0.0 {
         return "0".into();
     }
+    let s = sig_digits(x, SIGNIFICANT);
+    match s.split_once('e') {
+        Some((m, e)) => format!("{}e{}", trim_zeros(m), e),
+        None => trim_zeros(&s),
+    }
+}
+
+/// Significant digits a Monte Carlo estimate from `trials` trials carries. Its relative
+/// sampling error is about 1/√trials (a quantile's or a share's standard error scales so), so
+/// the digits kept are those up to and including the first uncertain one:
+/// ⌊log₁₀ √trials⌋ + 1 (100 trials: 2 digits; 10 000 trials: 3 digits; at least 1).
+pub fn sampled_digits(trials: u64) -> usize {
+    if trials < 1 {
+        return 1;
+    }
+    // ⌊log₁₀ √n⌋ = ⌊log₁₀ n / 2⌋, computed on integers so that 10 000 gives exactly 2
+    let mut magnitude = 0usize;
+    let mut n = trials;
+    while n >= 10 {
+        n /= 10;
+        magnitude += 1;
+    }
+    magnitude / 2 + 1
+}
+
+/// `x` with `digits` significant digits: plain notation for magnitudes in [1e-4, 1e6),
+/// scientific otherwise (the notation of [`sig`]); trailing zeros are kept,
+/// since they are digits the estimate carries.
+pub fn sig_digits(x: f64, digits: usize) -> String {
+    if !x.is_finite() || x == 0.0 {
+        return sig(x);
+    }
+    let digits = digits.max(1);
     let a = x.abs();
     if (1e-4..1e6).contains(&a) {
         let magnitude = a.log10().floor() as i32;
-        let decimals = (SIGNIFICANT as i32 - 1 - magnitude).max(0) as usize;
-        let s = format!("{x:.decimals$}");
-        trim_zeros(&s)
-    } else {
-        let s = format!("{:.*e}", SIGNIFICANT - 1, x);
-        match s.split_once('e') {
-            Some((m, e)) => format!("{}e{}", trim_zeros(m), e),
-            None => s,
+        let decimals = digits as i32 - 1 - magnitude;
+        if decimals >= 0 {
+            format!("{x:.0$}", decimals as usize)
+        } else {
+            // digits left of the point beyond the significant ones are zeros
+            let scale = 10f64.powi(-decimals);
+            format!("{:.0}", (x / scale).round() * scale)
         }
+    } else {
+        format!("{:.*e}", digits - 1, x)
     }
 }
 

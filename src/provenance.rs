@@ -1,13 +1,13 @@
 //! Where a report comes from: the source revision and its date, asked of git, so that the
 //! report says how to make it again. Nothing here prints.
 
-use crate::report::Provenance;
+use serde::Serialize;
 
 /// The command that makes the whole report.
 pub const REPORT_COMMAND: &str = "cargo run --release -- report";
 
 /// The provenance of a report made now from this source tree (the seeds are filled in by
-/// [`crate::report::Report::run`]).
+/// [`crate::claims::run_paper`]).
 pub fn report_provenance() -> Provenance {
     Provenance {
         revision: revision(),
@@ -46,4 +46,33 @@ fn git(args: &[&str]) -> Option<String> {
     out.status
         .success()
         .then(|| String::from_utf8_lossy(&out.stdout).trim().to_string())
+}
+
+/// Where a report comes from, so that it can be made again.
+#[derive(Clone, Debug, Default, Serialize)]
+pub struct Provenance {
+    /// The source revision (git), when known, with "+changes" for uncommitted edits.
+    pub revision: Option<String>,
+    /// The date of that revision (or `SOURCE_DATE_EPOCH`), when known: the report itself is
+    /// the same on every day.
+    pub date: Option<String>,
+    /// The command that makes this report.
+    pub command: String,
+    /// Whether the transcription was verified against the paper's LaTeX source, in one
+    /// sentence (empty when the caller says nothing).
+    #[serde(skip_serializing_if = "String::is_empty")]
+    pub transcription: String,
+    /// The seeds each case sets.
+    pub seeds: Vec<CaseSeeds>,
+}
+
+/// One case's seeds.
+#[derive(Clone, Debug, Serialize)]
+pub struct CaseSeeds {
+    /// The case id.
+    pub case: String,
+    /// Its file.
+    pub file: String,
+    /// Its seeds.
+    pub seeds: Vec<u64>,
 }

@@ -173,7 +173,8 @@ pub fn proportional_mod_p(left: &RatFn, right: &RatFn, points: usize, seed: u64)
 /// At each seeded point: (`left.num · right.den`, `right.num · left.den`) in 𝔽ₚ, `None`
 /// where p divides the denominator of a content.
 fn cross_values(left: &RatFn, right: &RatFn, points: usize, seed: u64) -> Vec<Option<(Fp, Fp)>> {
-    let mut g = crate::model::rng(seed);
+    // the same portable stream as every seeded study (ChaCha8)
+    let mut g = <rand_chacha::ChaCha8Rng as rand::SeedableRng>::seed_from_u64(seed);
     let mut vars = left.variables();
     vars.extend(right.variables());
     vars.sort();

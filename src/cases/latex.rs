@@ -57,7 +57,7 @@ impl LatexSource {
     /// Read `path` and refuse it unless its SHA-256 is `record`'s: a transcription is
     /// verified only against the source it was made from.
     pub fn read(path: &Path, record: &SourceRecord) -> Result<LatexSource> {
-        let limit = crate::input::MAX_TRACKS_BYTES;
+        let limit = crate::limits::INPUT_BYTES;
         let bytes = read_limited(path, limit)?;
         let sha256 = sha256_hex(&bytes);
         if sha256 != record.sha256 {

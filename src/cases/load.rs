@@ -292,7 +292,7 @@ pub fn load_cases<C: Schema>(
 
 /// A case file's text, refused beyond the size limit or when it is not UTF-8.
 pub(super) fn read_case_text(path: &Path) -> Result<String> {
-    let bytes = super::latex::read_limited(path, crate::input::MAX_TRACKS_BYTES)?;
+    let bytes = super::latex::read_limited(path, crate::limits::INPUT_BYTES)?;
     String::from_utf8(bytes).map_err(|_| whole_file(path, "the file is not UTF-8 text".into()))
 }
 

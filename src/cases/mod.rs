@@ -35,7 +35,7 @@ use std::path::PathBuf;
 use serde::Deserialize;
 
 /// A case file: its id, title and place in the paper, and its check `C`, one of the kinds
-/// of [`crate::claims`].
+/// of the claims module.
 #[derive(Clone, Debug, Deserialize, PartialEq)]
 #[serde(deny_unknown_fields)]
 pub struct Case<C> {

@@ -3,11 +3,19 @@
 //! threshold.
 
 use crate::check::{Power, Verdict};
-use crate::claims::shared::{
-    Direction, NoiseLevel, OverEdges, Quantity as Symbols, StatementSubject,
-};
 use crate::derivations::noise::LevelResult;
 use crate::studies::noise::RunErrors;
+use serde::Deserialize;
+
+/// Below or above.
+#[derive(Clone, Copy, Debug, Deserialize, PartialEq, Eq)]
+#[serde(rename_all = "snake_case")]
+pub enum Direction {
+    /// The error is below the bound.
+    Below,
+    /// The error is above the bound.
+    Above,
+}
 
 /// The central band of the seeded distribution a printed "e.g." run must fall in (as
 /// fractions): a run outside it under every noise model is not what the stated noise gives.
@@ -278,12 +286,6 @@ pub(crate) fn power(claim: Claim, f: &Facts, neighbour: Option<&[LevelResult]>) 
     }
 }
 
-/// The metric of a reading: the quantity (squares or lengths) and how the edges combine.
-pub(crate) fn metric_of(quantity: Symbols, edges: OverEdges) -> usize {
-    let q = if quantity == Symbols::Lengths { 2 } else { 0 };
-    q + usize::from(edges == OverEdges::Mean)
-}
-
 pub(crate) fn metric_phrase(m: usize) -> &'static str {
     [
         "largest relative error over the edges, in squares",
@@ -291,16 +293,6 @@ pub(crate) fn metric_phrase(m: usize) -> &'static str {
         "largest relative error over the edges, in lengths",
         "mean relative error over the edges, in lengths",
     ][m]
-}
-
-pub(crate) fn claim_of(lv: &NoiseLevel) -> Claim {
-    match &lv.statement {
-        None => Claim::Typical,
-        Some(st) => match st.about {
-            StatementSubject::Example => Claim::Example(st.bound.to_f64(), st.direction),
-            StatementSubject::TypicalTrial => Claim::Median(st.bound.to_f64(), st.direction),
-        },
-    }
 }
 
 #[cfg(test)]
@@ -448,13 +440,5 @@ mod tests {
         assert!(parts(Claim::Typical, &g).iter().all(|x| x.rank.is_none()));
         assert_eq!(decide(Claim::Typical, &g), TooClose);
         assert_eq!(on_run(&g, 5.0, Direction::Below), TooClose);
-    }
-
-    #[test]
-    fn readings_map_to_metrics() {
-        assert_eq!(metric_of(Symbols::Squares, OverEdges::Max), 0);
-        assert_eq!(metric_of(Symbols::Squares, OverEdges::Mean), 1);
-        assert_eq!(metric_of(Symbols::Lengths, OverEdges::Max), 2);
-        assert_eq!(metric_of(Symbols::Lengths, OverEdges::Mean), 3);
     }
 }

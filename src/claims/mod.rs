@@ -13,6 +13,8 @@ use serde::Deserialize;
 use crate::cases::{LatexSource, Schema, Validator};
 use crate::check::{figure::Figure, ClaimResult, ResultBuilder};
 use crate::error::Result;
+use crate::provenance::{CaseSeeds, Provenance};
+use crate::report::Report;
 
 pub mod audit;
 pub mod dof_count;
@@ -230,6 +232,42 @@ pub fn run_all_full(
     }
     out.extend(restated);
     Ok((out, figures))
+}
+
+/// Run the whole paper into a report: every case's results and figures, with `provenance`
+/// completed by each case's seeds (and the report command, when it names none); `progress`
+/// hears of each finished case.
+pub fn run_paper(
+    cases: &[Case],
+    mut provenance: Provenance,
+    progress: &dyn Fn(usize, &str),
+) -> Result<Report> {
+    let (claims, figures) = run_all_full(cases, progress)?;
+    if provenance.command.is_empty() {
+        provenance.command = crate::provenance::REPORT_COMMAND.into();
+    }
+    provenance.seeds = cases.iter().map(case_seeds).collect();
+    Ok(Report::with(claims, figures, provenance))
+}
+
+/// The paper's report with no provenance beyond the seeds.
+pub fn report_of(cases: &[Case]) -> Result<Report> {
+    run_paper(cases, Provenance::default(), &|_, _| {})
+}
+
+/// A case's seeds, with the case file they are set in.
+fn case_seeds(c: &Case) -> CaseSeeds {
+    CaseSeeds {
+        case: c.id.clone(),
+        file: c
+            .file
+            .as_ref()
+            .and_then(|f| f.file_name())
+            .map_or_else(String::new, |f| {
+                format!("paper_cases/{}", f.to_string_lossy())
+            }),
+        seeds: c.seeds(),
+    }
 }
 
 #[cfg(test)]

@@ -11,7 +11,6 @@ use orthocheck::claims::twofold_squared::TwofoldAudit;
 use orthocheck::claims::twofold_squared::TwofoldCase;
 use orthocheck::claims::{Case, Check};
 use orthocheck::report::values::quantities_text;
-use orthocheck::report::Report;
 use orthocheck::{cases, report, Error};
 use serde::Serialize;
 
@@ -133,7 +132,7 @@ pub fn run(a: Args) -> Result<(), Error> {
         return export(&loaded, &a, dir);
     }
     if a.markdown {
-        let r = Report::from_cases(&loaded)?;
+        let r = orthocheck::claims::report_of(&loaded)?;
         out(&report::errata_markdown(&r.claims))?;
         return Ok(());
     }

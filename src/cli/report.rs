@@ -6,7 +6,6 @@ use std::path::PathBuf;
 use std::time::Instant;
 
 use orthocheck::claims::Check;
-use orthocheck::report::Report;
 use orthocheck::{cases, provenance, Error};
 
 /// Arguments of `report`.
@@ -44,7 +43,7 @@ pub fn run(args: Args) -> Result<(), Error> {
     };
     let mut prov = provenance::report_provenance();
     prov.transcription = inputs.transcription_sentence();
-    let r = Report::run(all, prov, &progress)?.with_paper(inputs.paper.clone());
+    let r = orthocheck::claims::run_paper(all, prov, &progress)?.with_paper(inputs.paper.clone());
     if show() {
         eprintln!();
     }

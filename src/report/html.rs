@@ -454,7 +454,7 @@ fn evidence_html(page: &Page, c: &ClaimResult, trials: Option<u64>) -> String {
         let _ = write!(
             s,
             "<p class=\"meta\">Statistics of {n} trials are shown to {} significant digits (sampling error about 1/√{n}).</p>",
-            super::values::sampled_digits(n)
+            crate::numfmt::sampled_digits(n)
         );
     }
     s.push_str("</details>");

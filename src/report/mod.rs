@@ -23,39 +23,10 @@ use std::path::Path;
 use serde::Serialize;
 
 use crate::check::{ClaimResult, Verdict};
-use crate::claims::Case;
 use crate::error::Result;
 
 pub use crate::cases::Paper;
-
-/// Where a report comes from, so that it can be made again.
-#[derive(Clone, Debug, Default, Serialize)]
-pub struct Provenance {
-    /// The source revision (git), when known, with "+changes" for uncommitted edits.
-    pub revision: Option<String>,
-    /// The date of that revision (or `SOURCE_DATE_EPOCH`), when known: the report itself is
-    /// the same on every day.
-    pub date: Option<String>,
-    /// The command that makes this report.
-    pub command: String,
-    /// Whether the transcription was verified against the paper's LaTeX source, in one
-    /// sentence (empty when the caller says nothing).
-    #[serde(skip_serializing_if = "String::is_empty")]
-    pub transcription: String,
-    /// The seeds each case sets.
-    pub seeds: Vec<CaseSeeds>,
-}
-
-/// One case's seeds.
-#[derive(Clone, Debug, Serialize)]
-pub struct CaseSeeds {
-    /// The case id.
-    pub case: String,
-    /// Its file.
-    pub file: String,
-    /// Its seeds.
-    pub seeds: Vec<u64>,
-}
+pub use crate::provenance::{CaseSeeds, Provenance};
 
 /// The whole report: what `report.json` holds.
 #[derive(Clone, Debug, Serialize)]
@@ -111,38 +82,6 @@ impl Report {
             paper: Some(paper),
             ..self
         }
-    }
-
-    /// Run every case.
-    pub fn from_cases(cases: &[Case]) -> Result<Report> {
-        Report::run(cases, Provenance::default(), &|_, _| {})
-    }
-
-    /// Run every case with the provenance to show; `progress` hears of each finished case.
-    pub fn run(
-        cases: &[Case],
-        mut provenance: Provenance,
-        progress: &dyn Fn(usize, &str),
-    ) -> Result<Report> {
-        let (claims, figures) = crate::claims::run_all_full(cases, progress)?;
-        if provenance.command.is_empty() {
-            provenance.command = "cargo run --release -- report".into();
-        }
-        provenance.seeds = cases
-            .iter()
-            .map(|c| CaseSeeds {
-                case: c.id.clone(),
-                file: c
-                    .file
-                    .as_ref()
-                    .and_then(|f| f.file_name())
-                    .map_or_else(String::new, |f| {
-                        format!("paper_cases/{}", f.to_string_lossy())
-                    }),
-                seeds: c.seeds(),
-            })
-            .collect();
-        Ok(Report::with(claims, figures, provenance))
     }
 
     /// Pretty JSON.

@@ -1,7 +1,7 @@
 //! The one place where typed claim values become text.
 
 use crate::check::{ClaimResult, Power, PowerKind, Quantity, Tolerance, ToleranceSource, Value};
-use crate::numfmt::sig;
+use crate::numfmt::{sampled_digits, sig, sig_digits};
 
 /// A value as text.
 pub fn value_text(v: &Value) -> String {
@@ -111,48 +111,6 @@ pub fn power_phrase(p: &Power) -> String {
         format!("{head} (weak: values the paper would call wrong pass too)")
     } else {
         head
-    }
-}
-
-/// Significant digits a Monte Carlo estimate from `trials` trials carries. Its relative
-/// sampling error is about 1/√trials (a quantile's or a share's standard error scales so), so
-/// the digits kept are those up to and including the first uncertain one:
-/// ⌊log₁₀ √trials⌋ + 1 (100 trials: 2 digits; 10 000 trials: 3 digits; at least 1).
-pub fn sampled_digits(trials: u64) -> usize {
-    if trials < 1 {
-        return 1;
-    }
-    // ⌊log₁₀ √n⌋ = ⌊log₁₀ n / 2⌋, computed on integers so that 10 000 gives exactly 2
-    let mut magnitude = 0usize;
-    let mut n = trials;
-    while n >= 10 {
-        n /= 10;
-        magnitude += 1;
-    }
-    magnitude / 2 + 1
-}
-
-/// `x` with `digits` significant digits: plain notation for magnitudes in [1e-4, 1e6),
-/// scientific otherwise (the notation of [`crate::numfmt::sig`]); trailing zeros are kept,
-/// since they are digits the estimate carries.
-pub fn sig_digits(x: f64, digits: usize) -> String {
-    if !x.is_finite() || x == 0.0 {
-        return sig(x);
-    }
-    let digits = digits.max(1);
-    let a = x.abs();
-    if (1e-4..1e6).contains(&a) {
-        let magnitude = a.log10().floor() as i32;
-        let decimals = digits as i32 - 1 - magnitude;
-        if decimals >= 0 {
-            format!("{x:.0$}", decimals as usize)
-        } else {
-            // digits left of the point beyond the significant ones are zeros
-            let scale = 10f64.powi(-decimals);
-            format!("{:.0}", (x / scale).round() * scale)
-        }
-    } else {
-        format!("{:.*e}", digits - 1, x)
     }
 }
 

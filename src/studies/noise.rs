@@ -2,7 +2,6 @@
 //! runs at every printed level under both noise models, and the errors of a printed run with
 //! the rounding of its digits carried along. Numbers only; the judging is in `check`.
 
-use crate::claims::noise_study::NoiseStudyCase;
 use crate::derivations::noise::{models, run_level, stream, LevelResult, Study};
 use crate::derivations::p4f3::realize;
 use crate::derivations::rounding::quantile;
@@ -33,20 +32,6 @@ pub fn body_of(lengths: &[f64], squares: &[f64]) -> Result<Body> {
     Ok(Body::new(r.points))
 }
 
-/// The study a noise case describes: its body, solver, frames, trials and seed.
-pub fn study_of(case: &NoiseStudyCase) -> Result<Study> {
-    let lengths: Vec<f64> = case.body.lengths.iter().map(|p| p.to_f64()).collect();
-    let squares: Vec<f64> = case.body.squares.iter().map(|p| p.to_f64()).collect();
-    Ok(Study {
-        solver: case.solver,
-        body: body_of(&lengths, &squares)?,
-        frames: case.frames,
-        trials: case.trials,
-        seed: case.seed,
-        motions: None,
-    })
-}
-
 /// Every level under both noise models (coordinate model first); level `i` under model `m`
 /// uses random stream `2i + m`, as the `noise` command does.
 pub fn run_both(study: &Study, levels: &[f64]) -> Vec<[LevelResult; 2]> {
@@ -58,13 +43,6 @@ pub fn run_both(study: &Study, levels: &[f64]) -> Vec<[LevelResult; 2]> {
             std::array::from_fn(|m| run_level(study, models[m], stream(i, m), &|_| {}))
         })
         .collect()
-}
-
-/// The studies a case asks for, one per level and noise model (coordinate model first).
-pub fn run_study(case: &NoiseStudyCase) -> Result<Vec<[LevelResult; 2]>> {
-    let study = study_of(case)?;
-    let levels: Vec<f64> = case.levels.iter().map(|l| l.level.to_f64()).collect();
-    Ok(run_both(&study, &levels))
 }
 
 /// How near printed values are to the true squares and to the true lengths: the largest

@@ -76,7 +76,7 @@ pub fn report() -> Result<&'static Report, String> {
                 transcription: inputs.transcription_sentence(),
                 ..Provenance::default()
             };
-            Report::run(all, provenance, &progress)
+            orthocheck::claims::run_paper(all, provenance, &progress)
                 .map(|r| r.with_paper(inputs.paper.clone()))
                 .map_err(|e| {
                     let at = done.lock().map(|d| *d).unwrap_or(0);

@@ -3,8 +3,9 @@
 
 use orthocheck::check::figure::{Figure, Layer, Plot, Shape, Style};
 use orthocheck::check::{ClaimResult, Value};
+use orthocheck::numfmt::{sampled_digits, sig_digits};
 use orthocheck::report::svg::{css_colour, figure_svg, min_width};
-use orthocheck::report::values::{sampled_digits, sig_digits, trials_of};
+use orthocheck::report::values::trials_of;
 use roxmltree::{Document, Node};
 
 fn figures() -> &'static [Figure] {

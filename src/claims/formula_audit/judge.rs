@@ -17,7 +17,6 @@ use crate::claims::formula_audit::study::{
 use crate::claims::formula_audit::{ArithmeticItem, FormulaAuditCase, FormulaItem, TextItem};
 use crate::derivations::formulas::NAMES;
 use crate::error::Result;
-use crate::report::values::value_text;
 
 /// Longest expansion shown in full; longer ones are named by their size only.
 const SHOWN: usize = 400;
@@ -187,10 +186,14 @@ fn arithmetic_result(b: &ResultBuilder, a: &ArithmeticItem) -> (ClaimResult, Sho
     for (s, v) in a.steps.iter().zip(&values) {
         r = r.computed(s, v.clone());
     }
-    let should_be = values
+    let should_be = x
+        .steps
         .iter()
-        .map(value_text)
-        .collect::<Vec<_>>()
+        .map(|s| {
+            s.as_ref()
+                .map_or("does not evaluate".into(), ToString::to_string)
+        })
+        .collect::<Vec<String>>()
         .join(" = ");
     if verdict == Verdict::Erratum {
         r = r.correction(should_be.clone());

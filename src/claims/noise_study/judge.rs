@@ -1,20 +1,22 @@
 //! Claims of the noise studies (§2, §3, §4): the paper's words about its noisy runs, judged
 //! against seeded distributions by the rule of `docs/verdicts.md` ("Statistical claims").
 
+use super::run_study;
 use crate::check::noise::{
-    claim_of, decide, judge_bound, margin, metric_of, metric_phrase, power, Claim, Decision, Facts,
-    Judged, TYPICAL_BAND,
+    decide, judge_bound, margin, metric_phrase, power, Claim, Decision, Facts, Judged, TYPICAL_BAND,
 };
 use crate::check::{
     ClaimResult, Evidence, Power, ResultBuilder, Tolerance, ToleranceSource, Value, Verdict,
 };
 use crate::claims::noise_study::NoiseStudyCase;
-use crate::claims::shared::{Direction, NoiseLevel, OverEdges, Quantity as Symbols};
+use crate::claims::shared::{
+    claim_of, metric_of, Direction, NoiseLevel, OverEdges, Quantity as Symbols,
+};
 use crate::derivations::noise::{LevelResult, Study, METRICS, QUANTILES};
 use crate::derivations::solver::default_edge_names;
 use crate::error::Result;
 use crate::model::Body;
-use crate::studies::noise::{edge_medians, run_both, run_errors, run_study, SymbolDistances};
+use crate::studies::noise::{edge_medians, run_both, run_errors, SymbolDistances};
 mod figure;
 
 pub(super) fn check(b: &ResultBuilder, case: &NoiseStudyCase) -> Result<Vec<ClaimResult>> {

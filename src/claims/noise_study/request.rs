@@ -68,7 +68,7 @@ pub struct NoiseRun {
 fn study_of_case(case: &Case) -> Result<(Study, Vec<f64>), RequestError> {
     match &case.check {
         Check::NoiseStudy(nc) => Ok((
-            crate::studies::noise::study_of(nc).map_err(RequestError::Study)?,
+            super::study_of(nc).map_err(RequestError::Study)?,
             nc.levels.iter().map(|l| l.level.to_f64()).collect(),
         )),
         Check::P4f3Example(p) => {

@@ -3,7 +3,10 @@
 use serde::Deserialize;
 
 use crate::cases::{ClaimRef, Printed, Validator};
+use crate::check::noise::Claim;
 use crate::error::Result;
+
+pub use crate::check::noise::Direction;
 use crate::limits;
 
 /// What the paper's symbols say the printed values are.
@@ -74,16 +77,6 @@ pub enum StatementSubject {
     TypicalTrial,
 }
 
-/// Below or above.
-#[derive(Clone, Copy, Debug, Deserialize, PartialEq, Eq)]
-#[serde(rename_all = "snake_case")]
-pub enum Direction {
-    /// The error is below the bound.
-    Below,
-    /// The error is above the bound.
-    Above,
-}
-
 /// ε of each level in [0, 1] (a negative ε empties the sampler's range).
 pub fn levels(v: &Validator, at: &str, levels: &[NoiseLevel]) -> Result<()> {
     v.list(at, levels.len())?;
@@ -102,4 +95,33 @@ pub fn levels(v: &Validator, at: &str, levels: &[NoiseLevel]) -> Result<()> {
         }
     }
     Ok(())
+}
+
+pub(crate) fn claim_of(lv: &NoiseLevel) -> Claim {
+    match &lv.statement {
+        None => Claim::Typical,
+        Some(st) => match st.about {
+            StatementSubject::Example => Claim::Example(st.bound.to_f64(), st.direction),
+            StatementSubject::TypicalTrial => Claim::Median(st.bound.to_f64(), st.direction),
+        },
+    }
+}
+
+/// The metric of a reading: the quantity (squares or lengths) and how the edges combine.
+pub(crate) fn metric_of(quantity: Quantity, edges: OverEdges) -> usize {
+    let q = if quantity == Quantity::Lengths { 2 } else { 0 };
+    q + usize::from(edges == OverEdges::Mean)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn readings_map_to_metrics() {
+        assert_eq!(metric_of(Quantity::Squares, OverEdges::Max), 0);
+        assert_eq!(metric_of(Quantity::Squares, OverEdges::Mean), 1);
+        assert_eq!(metric_of(Quantity::Lengths, OverEdges::Max), 2);
+        assert_eq!(metric_of(Quantity::Lengths, OverEdges::Mean), 3);
+    }
 }

@@ -81,7 +81,7 @@ fn figure(b: &ResultBuilder, case: &TwoFramesCase, pts: &[Vector3<f64>; 5], c: &
     };
     let sides = |s: &[f64; 3]| {
         s.iter()
-            .map(|x| crate::report::values::sig_digits(*x, 3))
+            .map(|x| crate::numfmt::sig_digits(*x, 3))
             .collect::<Vec<_>>()
             .join(", ")
     };

@@ -9,7 +9,7 @@ use crate::check::ClaimResult;
 use crate::claims::shared::{Direction, NoiseLevel};
 use crate::derivations::noise::LevelResult;
 use crate::numfmt::sig;
-use crate::report::values::{sampled_digits, sig_digits};
+use crate::numfmt::{sampled_digits, sig_digits};
 
 /// Steps drawn per distribution.
 const STEPS: usize = 200;
