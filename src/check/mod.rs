@@ -9,8 +9,8 @@ pub use points::{points_details, points_tolerance};
 
 mod result;
 pub use result::{
-    ClaimResult, Evidence, Power, PowerKind, Quantity, Real, Tolerance, ToleranceSource, Value,
-    Verdict,
+    ClaimResult, Evidence, Power, PowerKind, Quantity, Real, Role, Tolerance, ToleranceSource,
+    Value, Verdict,
 };
 
 use crate::cases::Case;
@@ -121,6 +121,34 @@ impl ClaimBuilder<'_> {
     /// The method.
     pub fn method(mut self, m: &str) -> Self {
         self.evidence.method = m.into();
+        self
+    }
+
+    /// What the paper printed, in `role`.
+    pub fn printed_as(mut self, name: &str, v: impl Into<Value>, role: Role) -> Self {
+        self.printed.push(Quantity::with_role(name, v, role));
+        self
+    }
+
+    /// What the computation gives, as one cell of a table: `statistic` of `model`.
+    pub fn computed_cell(mut self, model: &str, statistic: &str, v: impl Into<Value>) -> Self {
+        self.computed.push(Quantity::cell(model, statistic, v));
+        self
+    }
+
+    /// One piece of evidence, one cell of a table: `statistic` of `model`.
+    pub fn cell(mut self, model: &str, statistic: &str, v: impl Into<Value>) -> Self {
+        self.evidence
+            .details
+            .push(Quantity::cell(model, statistic, v));
+        self
+    }
+
+    /// One piece of evidence in `role`.
+    pub fn detail_as(mut self, name: &str, v: impl Into<Value>, role: Role) -> Self {
+        self.evidence
+            .details
+            .push(Quantity::with_role(name, v, role));
         self
     }
 

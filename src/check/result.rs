@@ -330,22 +330,79 @@ impl From<String> for Value {
     }
 }
 
-/// A named value.
+/// A named value, with the role the renderers read (never its name).
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Quantity {
-    /// What it is.
+    /// What it is, in words.
     pub name: String,
     /// Its value.
     pub value: Value,
+    /// What it is to the layout: a plain row unless said otherwise.
+    #[serde(skip_serializing_if = "Role::is_plain")]
+    pub role: Role,
 }
 
 impl Quantity {
-    /// A named value.
+    /// A named value, a plain row.
     pub fn new(name: &str, value: impl Into<Value>) -> Quantity {
+        Quantity::with_role(name, value, Role::Plain)
+    }
+
+    /// A named value in `role`.
+    pub fn with_role(name: &str, value: impl Into<Value>, role: Role) -> Quantity {
         Quantity {
             name: name.into(),
             value: value.into(),
+            role,
         }
+    }
+
+    /// One cell of a table: `statistic` of `model` (named "model: statistic").
+    pub fn cell(model: &str, statistic: &str, value: impl Into<Value>) -> Quantity {
+        Quantity::with_role(
+            &format!("{model}: {statistic}"),
+            value,
+            Role::Cell {
+                model: model.into(),
+                statistic: statistic.into(),
+            },
+        )
+    }
+}
+
+/// What a quantity is to the renderers. A renderer reads the role, never the name: renaming
+/// a quantity changes words, not the layout.
+#[derive(Clone, Debug, Default, PartialEq, Serialize)]
+#[serde(tag = "kind", rename_all = "kebab-case")]
+pub enum Role {
+    /// A row of its own.
+    #[default]
+    Plain,
+    /// A statistic of one model (or method, or variant): where two models share a statistic,
+    /// the cells form a table (models × statistics); a claim resting on Monte Carlo trials
+    /// shows them with the digits its trials resolve.
+    Cell {
+        /// The row: the model.
+        model: String,
+        /// The column: the statistic.
+        statistic: String,
+    },
+    /// The text as printed (the source's LaTeX): an erratum's printed side shows it alone.
+    AsPrinted,
+    /// What is wrong, in words (an erratum's defect).
+    Defect,
+    /// What the text should say.
+    ShouldBe,
+    /// The number of trials the claim's numbers rest on.
+    Trials,
+    /// A value whose name adds nothing ("paper"): alone in a line, the value is printed alone.
+    ValueOnly,
+}
+
+impl Role {
+    /// Whether it is a plain row (not serialized, so that most quantities stay two fields).
+    pub fn is_plain(&self) -> bool {
+        *self == Role::Plain
     }
 }
 
@@ -497,6 +554,18 @@ impl Evidence {
             method: method.into(),
             details: Vec::new(),
         }
+    }
+
+    /// One cell of a table: `statistic` of `model`.
+    pub fn with_cell(mut self, model: &str, statistic: &str, value: impl Into<Value>) -> Self {
+        self.details.push(Quantity::cell(model, statistic, value));
+        self
+    }
+
+    /// One detail in `role`.
+    pub fn with_role(mut self, name: &str, value: impl Into<Value>, role: Role) -> Self {
+        self.details.push(Quantity::with_role(name, value, role));
+        self
     }
 
     /// Add a detail.

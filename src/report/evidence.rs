@@ -3,7 +3,8 @@
 //! table (everything else), instead of rows repeating the model's name. Numbers a Monte Carlo
 //! study estimated carry the digits its trial count supports ([`super::values::shown_text`]).
 
-use super::values::{sampled_text, shown_text, value_text};
+use super::values::{sampled_text, value_text};
+use crate::check::Role;
 use crate::check::{ClaimResult, Quantity, Value};
 
 /// A table of formatted cells.
@@ -48,15 +49,14 @@ pub fn layout(c: &ClaimResult) -> Layout<'_> {
     let trials = super::values::trials_of(c);
     let details = &c.evidence.details;
     let split = |q: &Quantity| -> Option<(String, String)> {
-        q.name
-            .split_once(": ")
-            .map(|(m, s)| (m.to_string(), s.to_string()))
+        match &q.role {
+            Role::Cell { model, statistic } => Some((model.clone(), statistic.clone())),
+            _ => None,
+        }
     };
     // a model joins a table when it shares a statistic with another model
     let named: Vec<(String, String)> = details.iter().filter_map(split).collect();
-    let shared = |model: &str, stat: &str| {
-        named.iter().any(|(m, s)| m != model && s == stat) && !model.starts_with("printed run")
-    };
+    let shared = |model: &str, stat: &str| named.iter().any(|(m, s)| m != model && s == stat);
     let mut models: Vec<String> = Vec::new();
     for (m, s) in &named {
         if shared(m, s) && !models.contains(m) {
@@ -161,7 +161,7 @@ fn statistic_table(
                     grouped
                         .iter()
                         .find(|(gm, gs, _)| gm == m && gs == stat)
-                        .map(|(gm, gs, v)| shown_text(&format!("{gm}: {gs}"), v, trials))
+                        .map(|(_, _, v)| cell(v, trials))
                         .unwrap_or_default()
                 })
                 .collect();
@@ -204,15 +204,17 @@ mod tests {
     #[test]
     fn shared_statistics_become_tables_with_sampled_digits() {
         let c = claim(vec![
-            Quantity::new("trials per model", Value::count(10_000)),
-            Quantity::new(
-                "A: 5/50/95 % quantiles",
+            Quantity::with_role("trials per model", Value::count(10_000), Role::Trials),
+            Quantity::cell(
+                "A",
+                "5/50/95 % quantiles",
                 Value::reals(&[0.0123456, 0.5, 1.23456]),
             ),
-            Quantity::new("A: mean over the trials", 0.2345678),
-            Quantity::new("B: 5/50/95 % quantiles", Value::reals(&[0.01, 0.6, 2.0])),
-            Quantity::new("B: mean over the trials", 0.3),
-            Quantity::new("mutant: lonely", 0.123456),
+            Quantity::cell("A", "mean over the trials", 0.2345678),
+            Quantity::cell("B", "5/50/95 % quantiles", Value::reals(&[0.01, 0.6, 2.0])),
+            Quantity::cell("B", "mean over the trials", 0.3),
+            Quantity::cell("mutant", "lonely", 0.123456),
+            // a printed run's error is a row of its own, whatever its name says
             Quantity::new("printed run: error", 0.0642088),
         ]);
         let l = layout(&c);

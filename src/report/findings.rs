@@ -8,6 +8,7 @@ use super::html::{anchor, escape, Page};
 use super::layout::GROUPS;
 use super::math::{math_text, prose_text_in, Macros};
 use super::values::value_text;
+use crate::check::Role;
 use crate::check::{ClaimResult, Verdict};
 
 /// One paragraph of the summary: a sentence and the claims it names, each with a phrase.
@@ -49,7 +50,7 @@ pub(crate) fn defect_sentence(c: &ClaimResult) -> Why {
         .evidence
         .details
         .iter()
-        .find(|d| d.name == "defect")
+        .find(|d| d.role == Role::Defect)
         .map(|d| Why::Text(value_text(&d.value)));
     named.unwrap_or_else(|| Why::ShouldRead(c.correction.clone().unwrap_or_default()))
 }
@@ -272,10 +273,17 @@ mod tests {
         let mut e = claim_with("a-1", Verdict::Erratum);
         e.correction = Some("x = 2".into());
         assert_eq!(defect_sentence(&e), Why::ShouldRead("x = 2".into()));
-        e.evidence.details.push(crate::check::Quantity {
-            name: "defect".into(),
-            value: Value::label("a sign is wrong"),
-        });
+        // a detail is the defect by its role, whatever its name says
+        e.evidence.details.push(crate::check::Quantity::new(
+            "defect",
+            Value::label("not the defect"),
+        ));
+        assert_eq!(defect_sentence(&e), Why::ShouldRead("x = 2".into()));
+        e.evidence.details.push(crate::check::Quantity::with_role(
+            "what is wrong",
+            Value::label("a sign is wrong"),
+            Role::Defect,
+        ));
         assert_eq!(defect_sentence(&e), Why::Text("a sign is wrong".into()));
     }
 }

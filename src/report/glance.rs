@@ -7,6 +7,7 @@ use std::fmt::Write as _;
 use super::html::{anchor, badge, escape, Page};
 use super::math::{math_html, prose_html};
 use super::values::power_phrase;
+use crate::check::Role;
 use crate::check::{ClaimResult, ToleranceSource, Value, Verdict};
 
 /// Whether a claim rests on a noise study (its verdict is statistical, or its tolerance is a
@@ -27,7 +28,7 @@ pub fn printed_side(c: &ClaimResult) -> Vec<&crate::check::Quantity> {
     let latex: Vec<_> = c
         .printed
         .iter()
-        .filter(|q| q.name.contains("LaTeX"))
+        .filter(|q| q.role == Role::AsPrinted)
         .collect();
     if latex.is_empty() {
         c.printed.iter().collect()

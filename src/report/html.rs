@@ -11,7 +11,7 @@ use super::math::{math_html, quote_html, Macros};
 use super::values::{power_phrase, quantities_shown, tolerance_text, trials_of};
 use super::Report;
 use crate::check::figure::Figure;
-use crate::check::{ClaimResult, Quantity, Value, Verdict};
+use crate::check::{ClaimResult, Quantity, Role, Value, Verdict};
 
 pub use super::layout::anchor;
 
@@ -86,7 +86,7 @@ impl<'a> Page<'a> {
     }
 
     /// A value as HTML: formulas as mathematics, labels with their ids linked.
-    pub(crate) fn value(&self, name: &str, v: &Value, trials: Option<u64>) -> String {
+    pub(crate) fn value(&self, role: &Role, v: &Value, trials: Option<u64>) -> String {
         match v {
             Value::Formula { text } => format!(
                 "<span class=\"math\">{}</span>",
@@ -94,7 +94,7 @@ impl<'a> Page<'a> {
             ),
             Value::Label { text } => self.linked(text),
             Value::Quote { text } => self.quote(text),
-            v => escape(&super::values::shown_text(name, v, trials)),
+            v => escape(&super::values::shown_text(role, v, trials)),
         }
     }
 
@@ -108,7 +108,7 @@ impl<'a> Page<'a> {
         }) {
             return escape(&quantities_shown(qs, trials));
         }
-        super::values::quantities_line(qs, escape, |q| self.value(&q.name, &q.value, trials))
+        super::values::quantities_line(qs, escape, |q| self.value(&q.role, &q.value, trials))
     }
 }
 
@@ -425,7 +425,7 @@ fn evidence_html(page: &Page, c: &ClaimResult, trials: Option<u64>) -> String {
                 s,
                 "<tr><th scope=\"row\">{}</th><td>{}</td></tr>",
                 page.linked(&d.name),
-                page.value(&d.name, &d.value, trials)
+                page.value(&d.role, &d.value, trials)
             );
         }
         s.push_str("</table></div>");

@@ -20,13 +20,19 @@ pub struct Section<'a> {
     pub claims: Vec<&'a ClaimResult>,
 }
 
+/// The paper numbers its appendices by letters, its sections by digits.
+fn is_appendix(number: &str) -> bool {
+    number.chars().all(|c| c.is_ascii_alphabetic())
+}
+
 impl Section<'_> {
     /// "§2.2 Structure and motion …" (the appendix by its title alone).
     pub fn heading(&self) -> String {
         match &self.title {
-            Some(t) if t.starts_with("Appendix") => t.clone(),
+            // an appendix is named by its title alone ("Appendix A")
+            Some(t) if is_appendix(&self.number) => t.clone(),
             Some(t) => format!("§{} {t}", self.number),
-            None if self.number.chars().all(|c| c.is_ascii_alphabetic()) => {
+            None if is_appendix(&self.number) => {
                 format!("Appendix {}", self.number)
             }
             None => format!("§{}", self.number),

@@ -12,7 +12,7 @@ use super::layout::{self, anchor, section_anchor, verdict_anchor, GROUPS};
 use super::math::{math_text, prose_text_in, quote_text, Macros};
 use super::values::{power_phrase, shown_text, tolerance_text, trials_of};
 use super::Report;
-use crate::check::{ClaimResult, Quantity, Value, Verdict};
+use crate::check::{ClaimResult, Quantity, Role, Value, Verdict};
 
 /// What the Markdown renderer needs beside a claim: the ids to link, the claims in order, the
 /// paper's macros.
@@ -58,17 +58,17 @@ impl Ctx<'_> {
         ))
     }
 
-    fn value(&self, name: &str, v: &Value, trials: Option<u64>) -> String {
+    fn value(&self, role: &Role, v: &Value, trials: Option<u64>) -> String {
         match v {
             Value::Formula { text } => md_escape(&math_text(text, &self.macros, true)),
             Value::Label { text } => self.linked(text),
             Value::Quote { text } => self.quote(text),
-            v => md_escape(&shown_text(name, v, trials)),
+            v => md_escape(&shown_text(role, v, trials)),
         }
     }
 
     fn quantities(&self, qs: &[Quantity], trials: Option<u64>) -> String {
-        super::values::quantities_line(qs, md_escape, |q| self.value(&q.name, &q.value, trials))
+        super::values::quantities_line(qs, md_escape, |q| self.value(&q.role, &q.value, trials))
     }
 }
 
@@ -173,7 +173,7 @@ fn claim_in(
             s,
             "  - {}: {}",
             ctx.linked(&d.name),
-            ctx.value(&d.name, &d.value, trials)
+            ctx.value(&d.role, &d.value, trials)
         );
     }
     for t in &ev.tables {

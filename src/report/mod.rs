@@ -22,6 +22,7 @@ use std::path::Path;
 
 use serde::Serialize;
 
+use crate::check::Role;
 use crate::check::{ClaimResult, Verdict};
 use crate::error::Result;
 
@@ -336,7 +337,7 @@ pub fn errata_markdown(claims: &[ClaimResult]) -> String {
             .evidence
             .details
             .iter()
-            .filter(|d| d.name == "defect" || d.name == "should be")
+            .filter(|d| matches!(d.role, Role::Defect | Role::ShouldBe))
         {
             let _ = writeln!(s, "- {}: {}", d.name, values::value_text(&d.value));
         }

@@ -1,6 +1,8 @@
 //! The one place where typed claim values become text.
 
-use crate::check::{ClaimResult, Power, PowerKind, Quantity, Tolerance, ToleranceSource, Value};
+use crate::check::{
+    ClaimResult, Power, PowerKind, Quantity, Role, Tolerance, ToleranceSource, Value,
+};
 use crate::numfmt::{sampled_digits, sig, sig_digits};
 
 /// A value as text.
@@ -36,7 +38,7 @@ pub fn value_text(v: &Value) -> String {
 /// entry prints its value only).
 pub fn quantities_text(qs: &[Quantity]) -> String {
     match qs {
-        [q] if q.name == "paper" || q.name == "computed" => value_text(&q.value),
+        [q] if q.role == Role::ValueOnly => value_text(&q.value),
         _ => qs
             .iter()
             .map(|q| format!("{}: {}", q.name, value_text(&q.value)))
@@ -146,17 +148,17 @@ pub fn trials_of(c: &ClaimResult) -> Option<u64> {
         return Some(*trials);
     }
     c.evidence.details.iter().find_map(|d| match d.value {
-        Value::Count { count, of: None } if d.name.starts_with("trials") => Some(count),
+        Value::Count { count, of: None } if d.role == Role::Trials => Some(count),
         _ => None,
     })
 }
 
-/// A named value as shown: a model's Monte Carlo statistic (a name `model: statistic` in a
-/// claim resting on `trials` trials) with [`sampled_digits`], anything else in full. The
-/// printed run's own errors are computed from printed digits, not sampled: shown in full.
-pub fn shown_text(name: &str, v: &Value, trials: Option<u64>) -> String {
-    match trials {
-        Some(n) if name.contains(": ") && !name.starts_with("printed run") => sampled_text(v, n),
+/// A value as shown: a model's statistic (a [`Role::Cell`]) in a claim resting on `trials`
+/// trials with [`sampled_digits`], anything else in full (a printed run's own errors, say,
+/// are computed from printed digits, not sampled).
+pub fn shown_text(role: &Role, v: &Value, trials: Option<u64>) -> String {
+    match (trials, role) {
+        (Some(n), Role::Cell { .. }) => sampled_text(v, n),
         _ => value_text(v),
     }
 }
@@ -166,19 +168,19 @@ pub fn quantities_shown(qs: &[Quantity], trials: Option<u64>) -> String {
     quantities_line(
         qs,
         |n| n.to_string(),
-        |q| shown_text(&q.name, &q.value, trials),
+        |q| shown_text(&q.role, &q.value, trials),
     )
 }
 
-/// Named values as one line, `name: value; …`, the name dropped when the only value is the
-/// paper's or the computed one; each renderer passes its own escape and value rendering.
+/// Named values as one line, `name: value; …`, the name dropped when the only value's name
+/// adds nothing ([`Role::ValueOnly`]); each renderer passes its own escape and value rendering.
 pub fn quantities_line(
     qs: &[Quantity],
     name: impl Fn(&str) -> String,
     value: impl Fn(&Quantity) -> String,
 ) -> String {
     match qs {
-        [q] if q.name == "paper" || q.name == "computed" => value(q),
+        [q] if q.role == Role::ValueOnly => value(q),
         _ => qs
             .iter()
             .map(|q| format!("{}: {}", name(&q.name), value(q)))

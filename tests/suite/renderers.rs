@@ -4,7 +4,7 @@
 
 use orthocheck::check::figure::{Figure, Layer, Plot, Shape, Style};
 use orthocheck::check::{
-    ClaimResult, Evidence, Power, Quantity, Tolerance, ToleranceSource, Value, Verdict,
+    ClaimResult, Evidence, Power, Quantity, Role, Tolerance, ToleranceSource, Value, Verdict,
 };
 use orthocheck::report::{claim_markdown, html, Provenance, Report};
 
@@ -24,7 +24,7 @@ fn claims() -> Vec<ClaimResult> {
         quote: "a quote with <markup> & \"quotes\"".into(),
         verdict,
         printed: vec![Quantity::new("squares", Value::reals(&[4.0, 9.0, 16.0]))],
-        computed: vec![Quantity::new("computed", computed)],
+        computed: vec![Quantity::with_role("computed", computed, Role::ValueOnly)],
         tolerance: Some(Tolerance::bound(
             0.005,
             ToleranceSource::PrintedPrecision,
@@ -59,22 +59,24 @@ fn claims() -> Vec<ClaimResult> {
     .map(|mut c| {
         if c.id == "p3f3-differences/equation-1" {
             c.lines = "208-214".into();
-            c.printed = vec![Quantity::new(
+            c.printed = vec![Quantity::with_role(
                 "as printed (LaTeX)",
                 Value::formula("\\diffCst{1} = (\\facCst{1},$$ $$-\\facCst{3})"),
+                Role::AsPrinted,
             )];
             c.correction = Some("d_Cst1 = facCst1 - facCst3".into());
         }
         if c.id == "ex2-body" {
             c.evidence = Evidence::new("contradicted by p4f3-unique/planar-body")
-                .with("trials per model", Value::count(10_000))
-                .with(
-                    "A: 5/50/95 % quantiles",
+                .with_role("trials per model", Value::count(10_000), Role::Trials)
+                .with_cell(
+                    "A",
+                    "5/50/95 % quantiles",
                     Value::reals(&[0.0123456, 0.5, 1.23456]),
                 )
-                .with("A: mean over the trials", 0.2345678)
-                .with("B: 5/50/95 % quantiles", Value::reals(&[0.01, 0.6, 2.0]))
-                .with("B: mean over the trials", 0.3);
+                .with_cell("A", "mean over the trials", 0.2345678)
+                .with_cell("B", "5/50/95 % quantiles", Value::reals(&[0.01, 0.6, 2.0]))
+                .with_cell("B", "mean over the trials", 0.3);
         }
         c
     })
@@ -414,4 +416,83 @@ fn the_paper_report_has_no_raw_tex_and_no_non_finite_number() {
     // the guard catches numbers already turned into text: a non-finite Real is a number
     let nan = orthocheck::check::Value::real(f64::NAN);
     assert!(orthocheck::report::finite::first_non_finite(&nan).is_some());
+}
+
+/// The page's shape: every block tag (tables, rows, cells, lists, sections) with its class;
+/// no text and no inline markup (a name may carry a link or mathematics of its own).
+fn skeleton(html: &str) -> Vec<String> {
+    const BLOCKS: [&str; 22] = [
+        "table",
+        "tr",
+        "th",
+        "td",
+        "caption",
+        "dl",
+        "dt",
+        "dd",
+        "ul",
+        "li",
+        "details",
+        "summary",
+        "div",
+        "section",
+        "article",
+        "figure",
+        "h2",
+        "h3",
+        "h4",
+        "p",
+        "blockquote",
+        "svg",
+    ];
+    html.split('<')
+        .skip(1)
+        .filter_map(|t| {
+            let tag = t.split('>').next().unwrap_or("");
+            let name = tag.split_whitespace().next().unwrap_or("");
+            let bare = name.trim_start_matches('/');
+            BLOCKS.contains(&bare).then(|| {
+                let class = tag
+                    .split("class=\"")
+                    .nth(1)
+                    .and_then(|c| c.split('"').next())
+                    .unwrap_or("");
+                format!("{name}.{class}")
+            })
+        })
+        .collect()
+}
+
+/// Renaming every printed, computed and evidence quantity of the paper's report changes
+/// words only: the renderers read roles, never names, so the page keeps its shape (tables,
+/// rows, the printed side of each erratum, the digits each value is shown with).
+#[test]
+fn relabelling_the_evidence_changes_words_not_layout() {
+    let report = crate::common::report().expect("the paper runs");
+    let mut renamed = report.clone();
+    let mut n = 0;
+    for c in &mut renamed.claims {
+        for q in c
+            .printed
+            .iter_mut()
+            .chain(c.computed.iter_mut())
+            .chain(c.evidence.details.iter_mut())
+        {
+            n += 1;
+            q.name = format!("quantity {n}");
+        }
+    }
+    assert!(n > 1000, "the report has its quantities ({n})");
+    let (before, after) = (html::render(report), html::render(&renamed));
+    assert_ne!(before, after, "the names are on the page");
+    assert_eq!(skeleton(&before), skeleton(&after));
+    // Markdown: the same lines, each of the same kind (heading, list item, table row, text)
+    let kind = |l: &str| -> String {
+        l.chars()
+            .take_while(|c| matches!(c, ' ' | '-' | '|' | '#' | '>'))
+            .collect()
+    };
+    let (mb, ma) = (report.to_markdown(), renamed.to_markdown());
+    let kinds = |md: &str| md.lines().map(kind).collect::<Vec<_>>();
+    assert_eq!(kinds(&mb), kinds(&ma));
 }

@@ -33,9 +33,9 @@ fn cells<'b>(b: ClaimBuilder<'b>, name: &str, list: &[&Identifiability]) -> Clai
 }
 
 fn grid_details<'b>(b: ClaimBuilder<'b>, case: &DofIdentifiabilityCase) -> ClaimBuilder<'b> {
-    b.detail("grid: largest p", case.max_points)
-        .detail("grid: largest k", case.max_frames)
-        .detail("grid: scene seed", case.seed)
+    b.cell("grid", "largest p", case.max_points)
+        .cell("grid", "largest k", case.max_frames)
+        .cell("grid", "scene seed", case.seed)
 }
 
 fn figure(b: &ResultBuilder, case: &DofIdentifiabilityCase, grid: &[Identifiability]) {

@@ -1,11 +1,12 @@
 //! The formula audit, judged: every displayed formula, printed arithmetic, dedicated
 //! computation and textual erratum of `formula_audit.yaml` becomes a claim result. The
-//! computations are `studies::audit`'s; here they are only compared and judged.
+//! computations are the study's; here they are only compared and judged.
 
 use num_rational::BigRational;
 use num_traits::One;
 
 use crate::algebra::{Poly, RatFn};
+use crate::check::Role;
 use crate::check::{
     points_details, points_tolerance, ClaimBuilder, ClaimResult, Power, ResultBuilder, Tolerance,
     Value, Verdict,
@@ -74,7 +75,11 @@ fn formula_result(b: &ResultBuilder, f: &FormulaItem, x: &FormulaFinding) -> (Cl
         r = r.printed("formula", Value::formula(p.clone()));
     }
     if let Some(t) = &f.printed_text {
-        r = r.printed("as printed (LaTeX)", Value::formula(t.clone()));
+        r = r.printed_as(
+            "as printed (LaTeX)",
+            Value::formula(t.clone()),
+            Role::AsPrinted,
+        );
     }
     if let Some(m) = x.printed_matches {
         r = r.computed("printed = derivation", m);
@@ -87,7 +92,7 @@ fn formula_result(b: &ResultBuilder, f: &FormulaItem, x: &FormulaFinding) -> (Cl
         .detail("where", f.place.to_string())
         .power(formula_power(x));
     if let Some(d) = &f.defect {
-        r = r.detail("defect", d);
+        r = r.detail_as("defect", d, Role::Defect);
     }
     let should_be = match (&verdict, &f.corrected) {
         (Verdict::Erratum, Some(c)) => format!("{c}   (= {what})"),
@@ -110,9 +115,10 @@ fn formula_result(b: &ResultBuilder, f: &FormulaItem, x: &FormulaFinding) -> (Cl
         r = points_details(r.tolerance(points_tolerance(&a.points)), &a.points);
         if let Some(m) = &a.mutant {
             r = r
-                .detail("mutant: exact comparison rejects", m.exact_rejected)
-                .detail(
-                    "mutant: random points agreeing",
+                .cell("mutant", "exact comparison rejects", m.exact_rejected)
+                .cell(
+                    "mutant",
+                    "random points agreeing",
                     Value::count_of(m.points.agreeing, m.points.points),
                 );
         }
@@ -133,7 +139,11 @@ fn finish_formula(
     let r = if verdict == Verdict::Erratum {
         r.correction(should_be.clone())
     } else {
-        r.detail("should be", Value::formula(should_be.clone()))
+        r.detail_as(
+            "should be",
+            Value::formula(should_be.clone()),
+            Role::ShouldBe,
+        )
     };
     let shown = Shown {
         place: f.place.clone(),

@@ -1,7 +1,7 @@
 //! The formula audit as a study: every transcribed formula of the paper against this crate's
 //! own derivation (exactly over ℚ, then at seeded random points), with a mutant of the accepted
 //! formula run through the same two checks; printed arithmetic evaluated exactly; the dedicated
-//! computations. Returns exact values and flags; the judgement is `check::audit`'s.
+//! computations. Returns exact values and flags; the judgement is the judge's.
 
 use std::collections::BTreeMap;
 

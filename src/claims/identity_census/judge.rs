@@ -1,6 +1,6 @@
 //! Claims of §5.2 and §5.3 over seeded random scenes: the paper's four-point test, its
 //! independence of the arbitrary c, the assignment ranking, five points. The census is
-//! `studies::identity_census`; here it is judged, with its controls (wrong assignments and a
+//! `study`; here it is judged, with its controls (wrong assignments and a
 //! point moved off the rigid body) as the power.
 
 use crate::check::{ClaimResult, Power, ResultBuilder, Tolerance, ToleranceSource, Value, Verdict};

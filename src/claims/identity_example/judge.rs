@@ -1,7 +1,7 @@
 //! Claims of §5.2's example: the point order behind the printed frames, the hidden table,
 //! the two "correct" attempts, every number of the debug printouts, the error lines and the
-//! figure panels. The computation lives in `studies::author_program`, `studies::panels` and
-//! `studies::identity_census`; here each result is judged.
+//! figure panels. The computation lives in `author_program`, `panels` and
+//! `study`; here each result is judged.
 
 use nalgebra::Vector2;
 use num_rational::BigRational;

@@ -5,6 +5,7 @@
 //! is in `docs/verdicts.md` ("The price of linearity").
 
 use crate::cases::Printed;
+use crate::check::Role;
 use crate::check::{ClaimResult, Power, ResultBuilder, Tolerance, ToleranceSource, Value, Verdict};
 use crate::claims::linearity_price::study::{
     self, length_error, BodySpec, Bound, Cell, Design, Method, MethodErrors, RatioBounds, Results,
@@ -47,7 +48,7 @@ pub(super) fn check(b: &ResultBuilder, case: &LinearityCase) -> Result<Vec<Claim
     let null_decision = decide(&null);
     let mut r = b
         .claim(&case.claim)
-        .printed("paper", Value::label(case.claim.quote.clone()))
+        .printed_as("paper", Value::label(case.claim.quote.clone()), Role::ValueOnly)
         .tolerance(Tolerance::bound(
             1.0,
             ToleranceSource::MonteCarlo {
@@ -57,7 +58,7 @@ pub(super) fn check(b: &ResultBuilder, case: &LinearityCase) -> Result<Vec<Claim
             "the ratio of median errors against 1, with order-statistic bounds of one-sided confidence 1 − α each (Bonferroni over the two samples)",
         ))
         .method("seeded scenes of the §4 body under random rotations, the paper's coordinate noise, every method on the same noisy tracks; error = largest relative edge-length error")
-        .detail("trials per body and level", Value::count(res.trials))
+        .detail_as("trials per body and level", Value::count(res.trials), Role::Trials)
         .detail("seed", Value::count(case.seed as usize))
         .detail("α (each one-sided bound)", Value::real(alpha));
     for (lv, p) in case.deciding_levels.iter().zip(&price) {
@@ -149,18 +150,15 @@ fn ratio_quantities<'a>(
     match p {
         Ok(b) => {
             r = r
-                .computed(&format!("{at}: ratio of medians"), bound_value(b.point))
-                .computed(&format!("{at}: lower bound"), bound_value(b.lower))
-                .computed(&format!("{at}: upper bound"), bound_value(b.upper));
+                .computed_cell(at, "ratio of medians", bound_value(b.point))
+                .computed_cell(at, "lower bound", bound_value(b.lower))
+                .computed_cell(at, "upper bound", bound_value(b.upper));
             if let Some(d) = b.detectable {
-                r = r.detail(
-                    &format!("{at}: smallest ratio the trials resolve"),
-                    Value::real(d),
-                );
+                r = r.cell(at, "smallest ratio the trials resolve", Value::real(d));
             }
             r
         }
-        Err(u) => r.computed(&format!("{at}: ratio of medians"), unavailable_value(*u)),
+        Err(u) => r.computed_cell(at, "ratio of medians", unavailable_value(*u)),
     }
 }
 
@@ -215,17 +213,19 @@ fn tables<'a>(
             for (m, e) in &c.methods {
                 r = method_cells(r, m.name(), &row, e);
             }
-            for (label, (n, d)) in [
-                ("price: §4 linear ÷ TK+BA (frames 1–3)", PRICE),
-                ("price: least squares ÷ TK+BA (4 frames)", PRICE_LSQ),
-                ("null: §4 fresh noise ÷ §4", NULL),
+            // a ratio is a cell of its kind ("price", "null"), the ratio and the row its column
+            for (kind, ratio, (n, d)) in [
+                ("price", "§4 linear ÷ TK+BA (frames 1–3)", PRICE),
+                ("price", "least squares ÷ TK+BA (4 frames)", PRICE_LSQ),
+                ("null", "§4 fresh noise ÷ §4", NULL),
             ] {
+                let at = |what: &str| format!("{ratio}: {row} {what}");
                 r = match c.ratio(n, d, alpha) {
                     Ok(b) => r
-                        .detail(&format!("{label}: {row} median"), bound_value(b.point))
-                        .detail(&format!("{label}: {row} lower bound"), bound_value(b.lower))
-                        .detail(&format!("{label}: {row} upper bound"), bound_value(b.upper)),
-                    Err(u) => r.detail(&format!("{label}: {row} median"), unavailable_value(u)),
+                        .cell(kind, &at("median"), bound_value(b.point))
+                        .cell(kind, &at("lower bound"), bound_value(b.lower))
+                        .cell(kind, &at("upper bound"), bound_value(b.upper)),
+                    Err(u) => r.cell(kind, &at("median"), unavailable_value(u)),
                 };
             }
         }
@@ -241,17 +241,20 @@ fn method_cells<'a>(
 ) -> crate::check::ClaimBuilder<'a> {
     match e.summary() {
         Some(s) => r
-            .detail(&format!("{method}: {row} median"), bound_value(s.median))
-            .detail(
-                &format!("{method}: {row} 90th percentile"),
+            .cell(method, &format!("{row} median"), bound_value(s.median))
+            .cell(
+                method,
+                &format!("{row} 90th percentile"),
                 bound_value(s.p90),
             )
-            .detail(
-                &format!("{method}: {row} failures"),
+            .cell(
+                method,
+                &format!("{row} failures"),
                 Value::count_of(s.failures, s.trials),
             ),
-        None => r.detail(
-            &format!("{method}: {row} median"),
+        None => r.cell(
+            method,
+            &format!("{row} median"),
             unavailable_value(match e {
                 MethodErrors::Unavailable(u) => *u,
                 MethodErrors::Ran(_) => Unavailable::NotInThisBuild,

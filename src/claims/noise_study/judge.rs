@@ -5,6 +5,7 @@ use super::run_study;
 use crate::check::noise::{
     decide, judge_bound, margin, metric_phrase, power, Claim, Decision, Facts, Judged, TYPICAL_BAND,
 };
+use crate::check::Role;
 use crate::check::{
     ClaimResult, Evidence, Power, ResultBuilder, Tolerance, ToleranceSource, Value, Verdict,
 };
@@ -274,8 +275,9 @@ impl Context<'_> {
         if let Some(run) = f.run {
             r = r.computed("printed run: error", run.metrics[m]);
             for d in f.dists {
-                r = r.computed(
-                    &format!("{}: percentile of the printed run", d.model),
+                r = r.computed_cell(
+                    &d.model,
+                    "percentile of the printed run",
                     100.0 * d.rank_of(m, run.metrics[m]),
                 );
             }
@@ -283,10 +285,11 @@ impl Context<'_> {
         if let Claim::Median(bound, _) = claim {
             for d in f.dists {
                 if let Some(q) = d.quantile(m, 0.5) {
-                    r = r.computed(&format!("{}: median trial's error", d.model), q);
+                    r = r.computed_cell(&d.model, "median trial's error", q);
                 }
-                r = r.computed(
-                    &format!("{}: percentile rank of the bound", d.model),
+                r = r.computed_cell(
+                    &d.model,
+                    "percentile rank of the bound",
                     100.0 * d.rank_of(m, bound),
                 );
             }
@@ -361,7 +364,7 @@ impl Context<'_> {
     ) -> Evidence {
         let m = f.metric;
         let mut ev = Evidence::new(METHOD)
-            .with("trials per model", self.trials)
+            .with_role("trials per model", self.trials, Role::Trials)
             .with("seed", self.seed)
             .with("decision", decision.name());
         if let Some(run) = f.run {
@@ -408,11 +411,12 @@ impl Context<'_> {
         }
         if let (Claim::Typical, Some(run), Some(ns)) = (claim, f.run, neighbour) {
             if let Some(d) = ns.first() {
-                ev = ev.with("mutant: the neighbouring level's ε", d.level);
+                ev = ev.with_cell("mutant", "the neighbouring level's ε", d.level);
             }
             for d in ns {
-                ev = ev.with(
-                    &format!("mutant: percentile of the printed run there, {}", d.model),
+                ev = ev.with_cell(
+                    "mutant",
+                    &format!("percentile of the printed run there, {}", d.model),
                     100.0 * d.rank_of(m, run.metrics[m]),
                 );
             }
@@ -430,17 +434,15 @@ impl Context<'_> {
     /// the share of trials the bound holds for, the medians under every reading.
     fn dist_evidence(&self, mut ev: Evidence, claim: Claim, m: usize, d: &LevelResult) -> Evidence {
         let model = &d.model;
-        ev = ev.with(
-            &format!("{model}: trials without a real solution"),
+        ev = ev.with_cell(
+            model,
+            "trials without a real solution",
             Value::count_of(d.failures, d.trials),
         );
         let qs: Vec<f64> = QUANTILES.iter().filter_map(|&q| d.quantile(m, q)).collect();
-        ev = ev.with(
-            &format!("{model}: 5/25/50/75/95/99 % quantiles"),
-            Value::reals(&qs),
-        );
+        ev = ev.with_cell(model, "5/25/50/75/95/99 % quantiles", Value::reals(&qs));
         if !d.sorted[m].is_empty() {
-            ev = ev.with(&format!("{model}: mean over the trials"), d.mean(m));
+            ev = ev.with_cell(model, "mean over the trials", d.mean(m));
         }
         if let Some(bound) = claim.bound() {
             let below = d.rank_of(m, bound);
@@ -450,31 +452,23 @@ impl Context<'_> {
                 }
                 _ => below,
             };
-            ev = ev.with(
-                &format!("{model}: share of trials for which the bound holds"),
-                share,
-            );
+            ev = ev.with_cell(model, "share of trials for which the bound holds", share);
         }
         if matches!(claim, Claim::Median(..)) {
             let med: Vec<f64> = (0..METRICS.len())
                 .filter_map(|k| d.quantile(k, 0.5))
                 .collect();
-            ev = ev.with(
-                &format!("{model}: median trial under every reading (max/mean in squares, max/mean in lengths)"),
+            ev = ev.with_cell(
+                model,
+                "median trial under every reading (max/mean in squares, max/mean in lengths)",
                 Value::reals(&med),
             );
         }
         if self.truth.len() > 3 {
             let [sq, ln] = edge_medians(d);
             ev = ev
-                .with(
-                    &format!("{model}: median error per edge, squares"),
-                    Value::reals(&sq),
-                )
-                .with(
-                    &format!("{model}: median error per edge, lengths"),
-                    Value::reals(&ln),
-                );
+                .with_cell(model, "median error per edge, squares", Value::reals(&sq))
+                .with_cell(model, "median error per edge, lengths", Value::reals(&ln));
         }
         ev
     }

@@ -1,5 +1,5 @@
 //! Claims of §2's example (the body, the figure, the two printed solutions, feasibility) and
-//! the censuses of §2.2 and §3. Computation lives in `studies::ex2` and `studies::census`;
+//! the censuses of §2.2 and §3. Computation lives in `study` and `studies::census`;
 //! here the printed numbers are loaded, the studies called, and the verdicts judged.
 
 use crate::algebra::Interval;
@@ -165,27 +165,31 @@ fn solutions_result(
         ))
         .power(power)
         .method("p3f3 at the printed figure coordinates; a witness search (minimum-norm Gauss–Newton over the box of half a unit of each coordinate, P exact) for coordinates whose roots match every printed component within its half unit, checked by exact elimination over ℚ; the same search for targets moved by 1 … 10⁵ half units; seeded Monte Carlo over the box")
-        .detail("figure coordinates: half a unit", bx_half(case))
+        .cell("figure coordinates", "half a unit", bx_half(case))
         .detail("printed significant digits", case.solutions.significant_digits);
     if let Some(w) = &s.witness {
         r = r
-            .detail(
-                "witness: largest shift (units of half a unit)",
+            .cell(
+                "witness",
+                "largest shift (units of half a unit)",
                 w.shift_ratio,
             )
-            .detail(
-                "witness: largest residual (units of half a unit)",
+            .cell(
+                "witness",
+                "largest residual (units of half a unit)",
                 w.residual,
             );
     }
     if let Some(v) = &s.witness_routes {
         r = r
-            .detail(
-                "witness: exact c² roots (Sturm)",
+            .cell(
+                "witness",
+                "exact c² roots (Sturm)",
                 Value::reals(v.exact.as_deref().unwrap_or(&[])),
             )
-            .detail(
-                "witness: largest relative disagreement of routes",
+            .cell(
+                "witness",
+                "largest relative disagreement of routes",
                 Value::below(v.max_relative_disagreement),
             );
     }
@@ -204,8 +208,9 @@ fn spread_details<'b>(
     for (k, acc) in s.acceptance.iter().enumerate() {
         for (e, a) in acc.iter().enumerate() {
             let (lo, hi) = a.interval(targets[k][e], half[k][e]);
-            r = r.detail(
-                &format!("solution {} component {}: accepted region", k + 1, e + 1),
+            r = r.cell(
+                &format!("solution {} component {}", k + 1, e + 1),
+                "accepted region",
                 Value::interval(lo, hi),
             );
         }
@@ -216,12 +221,9 @@ fn spread_details<'b>(
         .detail("samples with two real roots", s.cloud.len());
     for (k, sp) in s.spread.iter().enumerate() {
         for (e, q) in sp.iter().enumerate() {
-            r = r.detail(
-                &format!(
-                    "root {} component {}: 5 / 50 / 95 % over the box",
-                    k + 1,
-                    e + 1
-                ),
+            r = r.cell(
+                &format!("root {} component {}", k + 1, e + 1),
+                "5 / 50 / 95 % over the box",
                 Value::reals(q),
             );
         }
@@ -269,11 +271,12 @@ fn figure_result(
         ))
         .power(power)
         .method("eq. p3f3sqr of each frame at the body's squares; witness search over the box of half a unit of each coordinate; the same search for the body with one square moved by 1 … 10⁵ of its half units")
-        .detail("figure coordinates: half a unit", bx_half(case));
+        .cell("figure coordinates", "half a unit", bx_half(case));
     for (k, a) in s.body_acceptance.iter().enumerate() {
         let (lo, hi) = a.interval(sq[k].to_f64(), body_half[k]);
-        r = r.detail(
-            &format!("body square {}: accepted region", k + 1),
+        r = r.cell(
+            &format!("body square {}", k + 1),
+            "accepted region",
             Value::interval(lo, hi),
         );
     }

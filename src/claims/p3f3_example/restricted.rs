@@ -89,15 +89,17 @@ fn restricted_result(
         .detail("samples of three exact views", r.samples)
         .detail("samples with two real roots", Value::count_of(r.two_real, r.samples));
     for (f, (a, n)) in r.accepted.iter().enumerate() {
-        out = out.detail(
-            &format!("frame {}: draws giving an exact view in the box", f + 1),
+        out = out.cell(
+            &format!("frame {}", f + 1),
+            "draws giving an exact view in the box",
             Value::count_of(*a, *n),
         );
     }
     for k in 0..targets.len() {
         for (e, v) in range_values(&r.range, k).into_iter().enumerate() {
-            out = out.computed(
-                &format!("solution {}, component {}: restricted range", k + 1, e + 1),
+            out = out.computed_cell(
+                &format!("solution {}, component {}", k + 1, e + 1),
+                "restricted range",
                 v,
             );
         }
@@ -105,29 +107,29 @@ fn restricted_result(
             .into_iter()
             .enumerate()
         {
-            out = out.detail(
-                &format!(
-                    "solution {}, component {}: unrestricted range",
-                    k + 1,
-                    e + 1
-                ),
+            out = out.cell(
+                &format!("solution {}, component {}", k + 1, e + 1),
+                "unrestricted range",
                 v,
             );
         }
     }
     let (n, of) = r.unrestricted_no_real;
-    out = out.detail(
-        "unrestricted box: samples with no real root",
+    out = out.cell(
+        "unrestricted box",
+        "samples with no real root",
         Value::count_of(n, of),
     );
     if let Some(w) = &r.witness {
         out = out
-            .detail(
-                "nearest views: largest shift of the coordinates (half units)",
+            .cell(
+                "nearest views",
+                "largest shift of the coordinates (half units)",
                 w.shift_ratio,
             )
-            .detail(
-                "nearest views: largest component deviation (half units)",
+            .cell(
+                "nearest views",
+                "largest component deviation (half units)",
                 w.residual,
             );
     }
@@ -163,12 +165,14 @@ fn discriminant_result(
                 d.worst_change,
             )
             .detail("quadratic [γ, β, α]", Value::reals(&d.quadratic))
-            .detail(
-                "root 1: linear worst-case change over the box",
+            .cell(
+                "root 1",
+                "linear worst-case change over the box",
                 Value::reals(&d.root_change[0]),
             )
-            .detail(
-                "root 2: linear worst-case change over the box",
+            .cell(
+                "root 2",
+                "linear worst-case change over the box",
                 Value::reals(&d.root_change[1]),
             );
     }

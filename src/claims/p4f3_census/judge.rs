@@ -92,7 +92,11 @@ fn planar_result(
         .power(Power::mutant(c.unique > 0, "the same rank test gives rank 6 for the generic (non-planar) bodies of the census"))
         .method("the claim holds for every generic scene and fails exactly on planar bodies, whatever the motion: a degenerate set the paper never names");
     if let Some(d) = &c.planar_outcome {
-        r = r.detail("planar body: the solver says", Value::label(d.to_string()));
+        r = r.cell(
+            "planar body",
+            "the solver says",
+            Value::label(d.to_string()),
+        );
     }
     r.verdict(if holds {
         Verdict::HoldsGenerically

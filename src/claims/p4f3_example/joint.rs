@@ -87,8 +87,9 @@ pub(super) fn figure_system_result(
         .power(Power::interval(centre - bound, centre + bound, x[k], xs[k].half_unit_significant(sdig), &format!("printed x{} the figure's digits would accept: the propagated rounding of the figure around the figure's solution", k + 1)))
         .method("the paper's six equations (F₂ − F₁, F₃ − F₁ of triangles PQT, QRT, RPT) built from the figure's printed coordinates and solved; their rows against the printed rows, entry by entry in half units of the last printed digit; first-order propagation of the figure's rounding through the solve");
     for (i, row) in fs.coefficient_half_units.iter().enumerate() {
-        r = r.detail(
-            &format!("row {}: figure's coefficient − printed (half units)", i + 1),
+        r = r.cell(
+            &format!("row {}", i + 1),
+            "figure's coefficient − printed (half units)",
             Value::reals(row),
         );
     }
@@ -189,20 +190,23 @@ fn joint_details<'b>(
             Value::reals(&f.edge_half_units),
         );
     for (i, row) in f.coefficient_half_units.iter().enumerate() {
-        r = r.detail(
-            &format!("row {}: coefficient deviation (half units)", i + 1),
+        r = r.cell(
+            &format!("row {}", i + 1),
+            "coefficient deviation (half units)",
             Value::reals(row),
         );
     }
     for (i, fr) in f.figure_half_units.chunks(8).enumerate() {
-        r = r.detail(
-            &format!("frame {}: figure deviation P, Q, R, T (half units)", i + 1),
+        r = r.cell(
+            &format!("frame {}", i + 1),
+            "figure deviation P, Q, R, T (half units)",
             Value::reals(fr),
         );
     }
     for (i, v) in f.views.iter().enumerate() {
-        r = r.detail(
-            &format!("camera {}: viewing direction", i + 1),
+        r = r.cell(
+            &format!("camera {}", i + 1),
+            "viewing direction",
             Value::reals(v),
         );
     }

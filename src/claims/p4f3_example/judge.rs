@@ -1,9 +1,10 @@
 //! Claims of §4: the edge table, the figure, the printed coefficient matrix and solution,
 //! the conditioning, and the uniqueness of the linear system. Computation lives in
-//! `studies::ex4`, `studies::printed_matrix` and `studies::census`; here the verdicts.
+//! `study`, `printed_matrix` and `studies::census`; here the verdicts.
 
 use crate::cases::Printed;
 use crate::check::figure::{Figure, Layer, Plot, Shape, Style};
+use crate::check::Role;
 use crate::check::{ClaimResult, Power, ResultBuilder, Tolerance, ToleranceSource, Value, Verdict};
 use crate::claims::p4f3_example::joint as p4f3_joint;
 use crate::claims::p4f3_example::printed_matrix::{self, Audit};
@@ -164,8 +165,9 @@ fn figure_result(
     }
     for (e, a) in fit.acceptance.iter().enumerate() {
         let (lo, hi) = a.interval(squares[e], sq_half[e]);
-        r = r.detail(
-            &format!("square {}: accepted region", e + 1),
+        r = r.cell(
+            &format!("square {}", e + 1),
+            "accepted region",
             Value::interval(lo, hi),
         );
     }
@@ -245,26 +247,29 @@ fn matrix_result(b: &ResultBuilder, case: &P4f3ExampleCase, a: &Audit) -> ClaimR
         .tolerance(Tolerance::bound(1.0, ToleranceSource::PrintedPrecision, "half a unit in the last significant digit of every nonzero entry, at one point of the figure's rounding box"))
         .power(Power::mutant(all_rejected, &format!("every nonzero entry moved alone by ± {largest} of its half units: the same search finds no point of the box ({rejected} of {} mutants rejected; those accepted at smaller shifts are listed)", at_largest.len())))
         .method("each printed row matched against every triangle, ordered frame pair and factor ±1, ±½, ±2 at the printed coordinates; then a witness search (minimum-norm Gauss–Newton over the box of half a unit of each coordinate) for coordinates whose rows reproduce all 24 nonzero entries within half a unit of their sixth significant digit; the same search for single-entry mutants")
-        .detail("old check: widest interval enclosure over the box, in half units of its entry", widest);
+        .cell("old check", "widest interval enclosure over the box, in half units of its entry", widest);
     for (i, m) in a.matches.iter().enumerate() {
         r = r
-            .detail(
-                &format!("row {}: triangle edges", i + 1),
+            .cell(
+                &format!("row {}", i + 1),
+                "triangle edges",
                 Value::label(format!("{:?}", m.triangle)),
             )
-            .detail(
-                &format!("row {}: frames (first − second)", i + 1),
+            .cell(
+                &format!("row {}", i + 1),
+                "frames (first − second)",
                 Value::label(format!("F{} − F{}", m.first, m.second)),
             )
-            .detail(&format!("row {}: factor", i + 1), m.factor);
+            .cell(&format!("row {}", i + 1), "factor", m.factor);
     }
     if let Some(w) = &a.witness {
         r = r
-            .detail(
-                "witness: largest shift (units of half a unit)",
+            .cell(
+                "witness",
+                "largest shift (units of half a unit)",
                 w.shift_ratio,
             )
-            .detail("witness: largest entry residual (half units)", w.residual);
+            .cell("witness", "largest entry residual (half units)", w.residual);
     }
     for shift in &case.matrix_mutant_half_units {
         let of: Vec<_> = a
@@ -353,8 +358,8 @@ fn conditioning_result(
         .tolerance(Tolerance::bound(SENSITIVE_AMPLIFICATION, ToleranceSource::MonteCarlo { percentile: crate::check::Real(50.0), trials: case.trials as u64 }, "median relative error of the worst squared edge, in units of ε, at the smallest printed level"))
         .power(Power::mutant(!sensitive(c.direct_amplification, 1.0), "the same rule applied to the projected squares read directly off the image (first-order amplification of ε) says: not sensitive"))
         .method("the paper's scene: the body of the edge table and each frame's camera fitted to the exact views inside the figure's rounding box, P at the origin; first-order propagation of relative coordinate noise through the 6×6 solve, against seeded Monte Carlo of the same noise at the same scene")
-        .detail("control: amplification of the directly measured squares", c.direct_amplification)
-        .detail("trials per level", case.trials)
+        .cell("control", "amplification of the directly measured squares", c.direct_amplification)
+        .detail_as("trials per level", case.trials, Role::Trials)
         .detail("seed", case.seed);
     for (eps, pred, res) in &c.levels {
         r = r

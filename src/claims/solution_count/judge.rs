@@ -1,7 +1,7 @@
 //! How many solutions, exactly: the paper's "at most two" (§2.2) and "at most a single
 //! solution" (§4) against exact elimination over ℚ at seeded rational instances, and the
 //! literature's 64:1 and 2:1 (Knill & Ramirez-Herran) against the same counts. Computation in
-//! `studies::solution_count`; here the verdicts (rules in docs/verdicts.md).
+//! `study`; here the verdicts (rules in docs/verdicts.md).
 
 use crate::cases::Printed;
 use crate::check::{ClaimResult, Power, ResultBuilder, Tolerance, Value, Verdict};
@@ -77,7 +77,7 @@ fn three_points(b: &ResultBuilder, case: &SolutionCountCase, c: &P3f3Count) -> C
         .computed("largest number of real feasible ones", feasible.iter().copied().max().unwrap_or(0))
         .computed("instances with that many", Value::count_of(two, n))
         .computed("true squared edges a root", Value::count_of(truth, n))
-        .computed("two frames identical up to rotation: zero-dimensional", Value::flag(c.identical_frames_edge_degree.is_some()))
+        .computed_cell("two frames identical up to rotation", "zero-dimensional", Value::flag(c.identical_frames_edge_degree.is_some()))
         .tolerance(Tolerance::exact("exact elimination over ℚ, square-free degrees and Sturm counts"))
         .power(Power::mutant(mutant_rejected, "the same count rejects the narrower claim \"at most one\": it finds instances with two real feasible edge solutions"))
         .method("seeded rational scenes (rational body, Cayley rotations): F₁−F₃, F₂−F₃ solved for a², b² over ℚ, the quadratic in c²; then the polynomial in t = Σkᵢsᵢ over every depth-sign pattern (resultants with sᵢ² − wᵢ, then the norm over the quadratic's roots)")
@@ -128,8 +128,8 @@ fn four_points(b: &ResultBuilder, case: &SolutionCountCase, c: &P4f3Count) -> Cl
         .method("seeded rational scenes: the paper's system (frames 2, 3 × PQT, QRT, RPT) over ℚ; the depth-sign patterns of the three frames that a proper rotation realises (det Xᵢ = det X₁)")
         .detail("seed", case.seed)
         .detail("depth-sign patterns realised, of 2³", distinct(&c.instances.iter().map(|i| i.sm_patterns).collect::<Vec<_>>()))
-        .detail("planar bodies: ranks", distinct(&c.planar.iter().map(|i| i.edge_rank).collect::<Vec<_>>()))
-        .detail("planar bodies: depth-sign patterns realised", distinct(&c.planar.iter().map(|i| i.sm_patterns).collect::<Vec<_>>()))
+        .cell("planar bodies", "ranks", distinct(&c.planar.iter().map(|i| i.edge_rank).collect::<Vec<_>>()))
+        .cell("planar bodies", "depth-sign patterns realised", distinct(&c.planar.iter().map(|i| i.sm_patterns).collect::<Vec<_>>()))
         .detail("every frame's depths realise all six edges", Value::flag(c.instances.iter().all(|i| i.depths_consistent)))
         .verdict(verdict)
 }
@@ -168,7 +168,7 @@ fn literature(
         .computed("edge-length solutions", 1usize)
         .power(Power::mutant(planar4.is_some_and(|p| p != printed4), "the same count on planar bodies gives another number (every depth-sign pattern is realised)"))
         .method("the four-point count of solution-count/p4f3: one edge solution × the depth-sign patterns realised by proper rotations")
-        .detail("planar bodies: depth-sign patterns realised", planar4.unwrap_or(0))
+        .cell("planar bodies", "depth-sign patterns realised", planar4.unwrap_or(0))
         .verdict(ratio_verdict(printed4, fibre4));
     let three_r = base("three-points")
         .printed("ratio for 3 cameras, 3 points", Value::printed(&lit.three_points))
@@ -176,8 +176,8 @@ fn literature(
         .computed("= edge-length solutions", edges3.unwrap_or(0))
         .computed("× depth-sign patterns per edge solution (one per frame)", per_edge3.unwrap_or(0))
         .computed("up to the global reflection", common(three.instances.iter().map(|i| i.sm_up_to_reflection)).unwrap_or(0))
-        .computed("hypothesis: preimages, the reflection counted (the four-point ratio's convention)", fibre3.unwrap_or(0))
-        .computed("hypothesis: preimages up to the global reflection", common(three.instances.iter().map(|i| i.sm_up_to_reflection)).unwrap_or(0))
+        .computed_cell("hypothesis", "preimages, the reflection counted (the four-point ratio's convention)", fibre3.unwrap_or(0))
+        .computed_cell("hypothesis", "preimages up to the global reflection", common(three.instances.iter().map(|i| i.sm_up_to_reflection)).unwrap_or(0))
         .power(Power::exact_value("exact integer comparison; the four-point ratio, counted the same way, reproduces; missing: the publication's definition of what 64 counts (only its abstract was read); a reading not computed here: the lines-first construction's branches, two intersection lines per camera pair with two directions each, over three pairs"))
         .method("the three-point count of solution-count/p3f3, in the convention that reproduces the four-point ratio: points and proper camera frames modulo proper rigid motions, the reflection counted")
         .detail("printed ÷ computed", Value::exact(num_rational::Ratio::new(printed3, fibre3.unwrap_or(1).max(1))))

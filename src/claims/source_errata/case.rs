@@ -112,7 +112,7 @@ pub enum Decision {
         strings: Vec<String>,
     },
     /// The labels of drawings of a cube [−s, s]³ around `origin` and the points of a body:
-    /// which naming of the labels the drawings fit (`studies::figure_labels`).
+    /// which naming of the labels the drawings fit (`figure_labels`).
     FigureLabels {
         /// s, half the side of the drawn cube.
         half_side: Printed,

@@ -4,6 +4,7 @@
 //! `note` does not (the rule is in `docs/verdicts.md`).
 
 use crate::cases::{parse_lines, quote_at, quote_within, SourceText};
+use crate::check::Role;
 use crate::check::{ClaimBuilder, ClaimResult, Power, ResultBuilder, Value, Verdict};
 use crate::claims::source_errata::{
     Balance, Configuration, Decision, Finding, FindingKind, SourceErrataCase,
@@ -32,7 +33,7 @@ fn unverified(b: &ResultBuilder, f: &Finding) -> ClaimResult {
             Value::label("not checked: the paper's source was not given (--paper FILE)"),
         )
         .correction(f.corrected.clone())
-        .detail("defect", Value::label(f.defect.clone()))
+        .detail_as("defect", Value::label(f.defect.clone()), Role::Defect)
         .method("the quote as transcribed; its place in the source not checked")
         .power(Power::mutant(
             false,
@@ -208,7 +209,7 @@ fn finding(b: &ResultBuilder, text: &SourceText, f: &Finding) -> Result<ClaimRes
         .printed("source text", Value::quote(f.claim.quote.clone()))
         .computed("quote at the stated lines", Value::flag(own.at_lines))
         .correction(f.corrected.clone())
-        .detail("defect", Value::label(f.defect.clone()));
+        .detail_as("defect", Value::label(f.defect.clone()), Role::Defect);
     if !f.also.is_empty() {
         r = r.computed(
             "other places quoted at their lines",

@@ -1,6 +1,6 @@
 //! Claims of §5.1 and §5.4: the counterexample, the one-parameter family of two-view
 //! solutions, the fourth point's single piece of information, and curves. The computation
-//! is `derivations::two_frames` and `studies::two_frames`; here it is judged, with the
+//! is `derivations::two_frames` and `study`; here it is judged, with the
 //! controls (a mutated counterexample, a body moved off rigidity) as the power.
 
 use nalgebra::Vector3;

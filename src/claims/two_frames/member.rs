@@ -1,5 +1,5 @@
 //! §5.1: the member of the two-frame family the figures draw, against the member the printed
-//! points are (`two-frames-drawn-member`). Computation lives in `studies::drawn_member`.
+//! points are (`two-frames-drawn-member`). Computation lives in `drawn_member`.
 
 use nalgebra::Vector3;
 
@@ -57,30 +57,29 @@ fn picture_details<'b>(
     let deg = f64::to_degrees;
     for (d, rd) in dm.drawings.iter().zip(readings) {
         r = r
-            .detail(
-                &format!("picture {}: labels", d.lines),
+            .cell(
+                &format!("picture {}", d.lines),
+                "labels",
                 Value::label(d.label_names.join(", ")),
             )
-            .detail(
-                &format!("picture {}: shows the rotated body", d.lines),
+            .cell(
+                &format!("picture {}", d.lines),
+                "shows the rotated body",
                 Value::flag(rd.body == 1),
             )
-            .detail(
-                &format!(
-                    "picture {}: label misfit against the original, the rotated body",
-                    d.lines
-                ),
+            .cell(
+                &format!("picture {}", d.lines),
+                "label misfit against the original, the rotated body",
                 Value::reals(&rd.misfit),
             )
-            .detail(
-                &format!(
-                    "picture {}: φ of the frame-2 rays and its bound (degrees)",
-                    d.lines
-                ),
+            .cell(
+                &format!("picture {}", d.lines),
+                "φ of the frame-2 rays and its bound (degrees)",
                 Value::reals(&[deg(rd.phi), deg(rd.phi_bound)]),
             )
-            .detail(
-                &format!("picture {}: angle of n from the z edge (degrees)", d.lines),
+            .cell(
+                &format!("picture {}", d.lines),
+                "angle of n from the z edge (degrees)",
                 deg(rd.n_tilt),
             );
     }

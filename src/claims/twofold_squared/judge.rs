@@ -1,5 +1,6 @@
 //! Claims of eq. p3f3sqr: the signed relations and their twofold squaring.
 
+use crate::check::Role;
 use crate::check::{points_details, points_tolerance};
 use crate::check::{ClaimResult, Power, ResultBuilder, Tolerance, Value, Verdict};
 use crate::claims::twofold_squared::study::{census, twofold, TwofoldStudy};
@@ -103,10 +104,10 @@ fn relations(b: &ResultBuilder, case: &TwofoldCase) -> ClaimResult {
             ),
         ))
         .method("seeded random triangles under random rotations; signs of z_Q−z_P, z_R−z_Q, z_P−z_R compared with each pattern up to a global sign")
-        .detail("trials", c.census.trials)
+        .detail_as("trials", c.census.trials, Role::Trials)
         .detail("seed", c.census.seed)
         .detail("largest relative residual of the matching relation", Value::below(c.census.max_residual))
-        .detail("mutant: frames where none held", c.mutant.none_held);
+        .cell("mutant", "frames where none held", c.mutant.none_held);
     for (p, n) in pats.iter().zip(&c.census.held) {
         r = r.detail(&format!("frames where {} held", signs_text(p)), *n);
     }
@@ -157,8 +158,9 @@ pub(super) fn polynomial(b: &ResultBuilder, case: &TwofoldCase) -> Result<ClaimR
         ),
         &s.points,
     )
-    .detail(
-        "mutant: random points agreeing",
+    .cell(
+        "mutant",
+        "random points agreeing",
         Value::count_of(mutant_agree, s.points.points),
     );
     Ok(r.verdict(identity_verdict(&s)))

@@ -81,8 +81,8 @@ fn fourth<'b>(r: ClaimBuilder<'b>, x: &FourthRelation, seed: u64) -> ClaimBuilde
         .method("(0) each triangle's loop Σ ±(z_i − z_j) = 0 as a row over the six signed depth differences, exact ranks of the three loops and of all four; then the twofold-squared forms: (1) F_PQR = λ₁F_PQT + λ₂F_QRT + λ₃F_RPT solved for λ over the rational functions of the projections, monomial by monomial, exactly; (2) an exact point where the three relations hold and the fourth does not; (3) exact ranks of the frame-differenced equations of two frames at a rational scene")
         .computed("rank of the signed loops, three triangles", s.rank_three)
         .computed("rank of the signed loops, with PQR", s.rank_four)
-        .computed("after squaring: a linear combination exists", x.linear)
-        .computed("after squaring: implied by the other three", !independent_after_squaring(x))
+        .computed_cell("after squaring", "a linear combination exists", x.linear)
+        .computed_cell("after squaring", "implied by the other three", !independent_after_squaring(x))
         .tolerance(Tolerance::exact("exact arithmetic over ℚ"))
         .power(Power::mutant(
             s.mutant_rank > s.rank_four,
@@ -101,8 +101,8 @@ fn fourth<'b>(r: ClaimBuilder<'b>, x: &FourthRelation, seed: u64) -> ClaimBuilde
     {
         r = r.computed(&format!("{name} at the counterexample"), Value::exact(v));
     }
-    r.computed("after squaring: rank, three triangles", x.rank_three)
-        .computed("after squaring: rank, with PQR", x.rank_four)
+    r.computed_cell("after squaring", "rank, three triangles", x.rank_three)
+        .computed_cell("after squaring", "rank, with PQR", x.rank_four)
 }
 
 fn describe<'b>(r: ClaimBuilder<'b>, test: &ComputedTest, x: &ComputedFinding) -> ClaimBuilder<'b> {

@@ -3,6 +3,7 @@
 
 use super::{ClaimBuilder, ClaimResult, Power, ResultBuilder, Tolerance, Value, Verdict};
 use crate::algebra::Poly;
+use crate::check::Role;
 use crate::claims::audit::Shown;
 use crate::claims::formula_audit::study::{ExpandedFinding, Form, Screened};
 use crate::claims::formula_audit::FormulaItem;
@@ -40,12 +41,13 @@ fn expanded_power(x: &ExpandedFinding) -> Power {
 }
 
 fn screen_details<'b>(r: ClaimBuilder<'b>, who: &str, s: &Screened) -> ClaimBuilder<'b> {
-    r.computed(
-        &format!("{who}: points agreeing modulo p"),
+    r.computed_cell(
+        who,
+        "points agreeing modulo p",
         Value::count_of(s.screen.agreeing, s.screen.points),
     )
-    .computed(&format!("{who}: exact comparison run"), s.exact_run)
-    .computed(&format!("{who}: exactly equal"), s.ratio.is_some())
+    .computed_cell(who, "exact comparison run", s.exact_run)
+    .computed_cell(who, "exactly equal", s.ratio.is_some())
 }
 
 /// The `/expanded` item of formula `f`.
@@ -61,7 +63,11 @@ pub(super) fn expanded_result(
         r = r.printed("formula", Value::formula(p.clone()));
     }
     if let Some(t) = &f.printed_text {
-        r = r.printed("as printed (LaTeX)", Value::formula(t.clone()));
+        r = r.printed_as(
+            "as printed (LaTeX)",
+            Value::formula(t.clone()),
+            Role::AsPrinted,
+        );
     }
     if let Some(s) = &x.printed {
         r = screen_details(r, "printed, expanded", s);
@@ -89,8 +95,9 @@ pub(super) fn expanded_result(
             );
     }
     if let Some((_, m)) = &x.mutant {
-        r = r.detail(
-            "mutant: points agreeing modulo p",
+        r = r.cell(
+            "mutant",
+            "points agreeing modulo p",
             Value::count_of(m.screen.agreeing, m.screen.points),
         );
     }
@@ -105,7 +112,7 @@ pub(super) fn expanded_result(
         .detail("terms of the accepted expanded form (denominator)", x.accepted_terms.1)
         .power(expanded_power(x));
     if let Some(d) = &f.defect {
-        r = r.detail("defect", d);
+        r = r.detail_as("defect", d, Role::Defect);
     }
     let should_be = match (&verdict, &f.corrected) {
         (Verdict::Erratum, Some(c)) => format!("{c}   (= {what}, every macro expanded)"),

@@ -122,7 +122,7 @@ pub(super) fn result(
         .printed("assignments with a block (both versions share d)", Value::count(printed.len()))
         .computed("rules tried", Value::count(fits.len()))
         .computed("rules that give every printed d", Value::count(full))
-        .computed("d0 / longest projection of RT: no constant factor", Value::interval(lo, hi))
+        .computed_cell("d0 / longest projection of RT", "no constant factor", Value::interval(lo, hi))
         .computed("largest relative change of a block's distance over d0 × the d factors", Value::real(spread(case, ex, frame1, blocks)))
         .power(Power::none("not reproducible: the paper gives no rule for \"the a priori selected value for c\", and none of the rules tried gives every printed d; the distance of P₂ from its line does not depend on d (the line is the affine epipolar line), so no verdict depends on the rule"))
         .method("each rule's d² against the printed d0² of every assignment with a block; a hit is within d0's rounding plus the rule's propagated bound over the frames' rounding; misses relative to the printed d²")
@@ -130,9 +130,10 @@ pub(super) fn result(
     for f in &fits {
         let name = rule_name(f.rule);
         c = c
-            .detail(&format!("{name}: hits"), Value::count_of(f.hits, f.defined))
-            .detail(
-                &format!("{name}: worst and median relative miss"),
+            .cell(name, "hits", Value::count_of(f.hits, f.defined))
+            .cell(
+                name,
+                "worst and median relative miss",
                 Value::reals(&[f.worst, f.median]),
             );
     }

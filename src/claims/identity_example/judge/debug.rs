@@ -202,12 +202,14 @@ fn debug_result(b: &ResultBuilder, case: &IdentityExampleCase, blocks: &[Block])
         .detail("mutants rejected", Value::count_of(rejected, checked));
     for (q, name) in case.debug.quantities.iter().enumerate() {
         c = c
-            .detail(
-                &format!("{name}: reproduced"),
+            .cell(
+                name,
+                "reproduced",
                 Value::count_of(counts[q][0], total / 12),
             )
-            .detail(
-                &format!("{name}: widest acceptance (half units)"),
+            .cell(
+                name,
+                "widest acceptance (half units)",
                 Value::real(widest[q]),
             );
     }
@@ -325,9 +327,9 @@ fn errors_result(
         .computed("all of them without a block", Value::flag(never_skipped))
         .computed("printed ratios equal to f_cb / f_b² of exactly one of them", Value::count_of(r.per.iter().filter(|x| x.1.is_some()).count(), r.per.len()))
         .computed("those assignments matched", Value::count_of(hit.len(), r.cand.len()))
-        .computed("the ratio printed: f_cb / f_b² (Appendix A: coefficient of c²b² over that of b⁴)", Value::flag(ok))
-        .computed("Δ_b = κ (c² − c₁²)(c² − c₂²), κ = f_cb² − 4 f_b² f_c²: zero at both frames' squared projections of RP (exact)", Value::count_of(r.all.iter().filter(|x| x.zero_at_both).count(), r.all.len()))
-        .computed("assignments with κ < 0: exactly the never-real ones (so Δ_b < 0 for every c above the bound)", Value::flag(kappa_negative == never))
+        .computed_cell("the ratio printed", "f_cb / f_b² (Appendix A: coefficient of c²b² over that of b⁴)", Value::flag(ok))
+        .computed_cell("Δ_b = κ (c² − c₁²)(c² − c₂²), κ = f_cb² − 4 f_b² f_c²", "zero at both frames' squared projections of RP (exact)", Value::count_of(r.all.iter().filter(|x| x.zero_at_both).count(), r.all.len()))
+        .computed_cell("assignments with κ < 0", "exactly the never-real ones (so Δ_b < 0 for every c above the bound)", Value::flag(kappa_negative == never))
         .computed("κ of the never-real assignments", Value::reals(&r.all.iter().filter(|x| x.never_real).map(|x| x.kappa).collect::<Vec<_>>()))
         .tolerance(Tolerance::bound(0.0, ToleranceSource::Propagated, "half a unit in the sixth significant digit + the first-order effect of the frames' rounding on f_cb / f_b² + 64ε of it"))
         .power(Power::mutant(!determined.is_empty(), "every printed ratio whose digits the frames determine, moved by the mutant's half units either way, matches no assignment (the rest: ex5-debug/undetermined)"))
@@ -369,7 +371,7 @@ fn undetermined_result(
     b.claim(&case.debug.claim)
         .suffix("undetermined")
         .printed("numbers whose digits the rounded frames do not determine", Value::count(level.len() + wide.len()))
-        .computed("at rounding level (|printed| within the propagated bound: zero to rounding, sign undetermined)", Value::label(level.join("; ")))
+        .computed_cell("at rounding level (|printed| within the propagated bound", "zero to rounding, sign undetermined)", Value::label(level.join("; ")))
         .computed("agreeing only within a bound wider than the mutant", Value::label(wide.iter().map(|w| w.0.clone()).collect::<Vec<_>>().join("; ")))
         .computed("their acceptance half-widths (half units)", Value::reals(&wide.iter().map(|w| w.1).collect::<Vec<_>>()))
         .power(Power::none("the same test accepts these numbers moved by the mutant's half units: agreement says nothing about their digits"))
@@ -418,7 +420,7 @@ fn deltab_results(
         .printed("\"ERROR: Root of deltab negative\" lines", Value::count(negative))
         .computed("assignments without a block and with κ > 0 (not Fdg ones)", Value::count(rest.len()))
         .computed("… each once per version", Value::count(2 * rest.len()))
-        .computed("of them: Δ_b > 0 for every c above the bound (exact: κ > 0, positive just above)", Value::count_of(above, rest.len()))
+        .computed_cell("of them", "Δ_b > 0 for every c above the bound (exact: κ > 0, positive just above)", Value::count_of(above, rest.len()))
         .tolerance(Tolerance::exact("counts and signs over ℚ"))
         .power(Power::exact_value("any other number of lines, or a skipped assignment with Δ_b < 0 above the bound, is rejected"))
         .method("by elimination: 24 assignments − those with a block − those with an Fdg line (κ < 0) leave these; Δ_b = κ (c² − c₁²)(c² − c₂²) exactly (ex5-debug/errors), so with κ > 0 it is negative only for c² strictly between the two frames' squared projections of RP, and zero at both")
@@ -436,9 +438,9 @@ fn deltab_results(
         .claim(&case.debug.claim)
         .suffix("errors-deltab/cause")
         .printed("\"ERROR: Root of deltab negative\" lines", Value::count(negative))
-        .computed("hypothesis c² above the longest projection: Δ_b < 0 there (exact)", Value::count_of(rest.len() - above, rest.len()))
-        .computed("hypothesis c² strictly between the two projections (below the text's minimum): Δ_b < 0 (exact)", Value::count_of(between, rest.len()))
-        .computed("hypothesis c² = the longest projection: Δ_b = 0 exactly (a double root)", Value::count_of(at_bound, rest.len()))
+        .computed_cell("hypothesis c² above the longest projection", "Δ_b < 0 there (exact)", Value::count_of(rest.len() - above, rest.len()))
+        .computed_cell("hypothesis c² strictly between the two projections (below the text's minimum)", "Δ_b < 0 (exact)", Value::count_of(between, rest.len()))
+        .computed_cell("hypothesis c² = the longest projection", "Δ_b = 0 exactly (a double root)", Value::count_of(at_bound, rest.len()))
         .computed("… its floating-point value at the printed frames", Value::reals(&rest.iter().map(|x| x.float_at_bound).collect::<Vec<_>>()))
         .computed("… fraction negative over draws inside the frames' rounding box", Value::reals(&negs))
         .computed("… fraction exactly zero", Value::reals(&zeros))

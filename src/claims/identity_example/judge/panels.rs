@@ -163,8 +163,8 @@ fn distance_result(
         .claim(&case.panels.claim)
         .suffix("distance")
         .printed("the tested point is distant from the line for the wrong assignments", Value::count(bad.len()))
-        .computed("correct panels: tested point's distance from its line", Value::reals(&good.iter().map(|x| x.0).collect::<Vec<_>>()))
-        .computed("wrong panels: tested point's distance from its line", Value::reals(&bad.iter().map(|x| x.0).collect::<Vec<_>>()))
+        .computed_cell("correct panels", "tested point's distance from its line", Value::reals(&good.iter().map(|x| x.0).collect::<Vec<_>>()))
+        .computed_cell("wrong panels", "tested point's distance from its line", Value::reals(&bad.iter().map(|x| x.0).collect::<Vec<_>>()))
         .tolerance(Tolerance::bound(good.iter().map(|x| x.1).fold(0.0, f64::max), ToleranceSource::Propagated, "the line's rounding at the tested point (as for the endpoints)"))
         .power(Power::mutant(moved_rejected, "a correct panel's tested point moved by the mutant's half units is called distant by the same test"))
         .method("distance of each panel's tested point (#1) from the line of its printed block")
@@ -183,12 +183,9 @@ fn off_endpoints<'b>(
         for e in 0..2 {
             if p.endpoint_distance[e] > p.endpoint_bound[e] {
                 worst = worst.max(p.endpoint_distance[e]);
-                r = r.computed(
-                    &format!(
-                        "panel at line {}, endpoint {}: distance off the line",
-                        item.line,
-                        e + 1
-                    ),
+                r = r.computed_cell(
+                    &format!("panel at line {}, endpoint {}", item.line, e + 1),
+                    "distance off the line",
                     Value::real(p.endpoint_distance[e]),
                 );
             }

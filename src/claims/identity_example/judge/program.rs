@@ -128,10 +128,7 @@ fn program_result(b: &ResultBuilder, case: &IdentityExampleCase, blocks: &[Block
         .detail("mutants rejected (numbers above rounding level)", Value::count_of(rejected, determined))
         .detail("numbers whose bound is wider than the mutant", Value::label(wide.join("; ")));
     for (q, name) in case.debug.printed_labels.iter().enumerate() {
-        c = c.detail(
-            &format!("{name}: reproduced"),
-            Value::count_of(per[q][0], run),
-        );
+        c = c.cell(name, "reproduced", Value::count_of(per[q][0], run));
     }
     c.verdict(judge_program(agree, total, flags, flag_total))
 }
@@ -193,11 +190,11 @@ fn depths_result(b: &ResultBuilder, case: &IdentityExampleCase, blocks: &[Block]
         .suffix("depths-and-line-split")
         .printed("third coordinates of Pa and Pb", Value::count(n))
         .printed("(Linie) lines, each with two sides", Value::count(m))
-        .computed("rule: z = α|z_T₂| + β|z_Q₂| + γ (T₂ × Q₂), the unsigned depths: reproduced", Value::count_of(unsigned, n))
-        .computed("alternative: the signed depths (the frame-2 point's true depth): reproduced", Value::count_of(signed, n))
-        .computed("alternative: largest miss (tolerances)", Value::real(miss))
-        .computed("(Linie) left side L = (P2.y − Pa.y)(P2.x − Pb.x): reproduced", Value::count_of(sides[0], m))
-        .computed("(Linie) right side R = (P2.x − Pa.x)(P2.y − Pb.y): reproduced", Value::count_of(sides[1], m))
+        .computed_cell("rule", "z = α|z_T₂| + β|z_Q₂| + γ (T₂ × Q₂), the unsigned depths: reproduced", Value::count_of(unsigned, n))
+        .computed_cell("alternative", "the signed depths (the frame-2 point's true depth): reproduced", Value::count_of(signed, n))
+        .computed_cell("alternative", "largest miss (tolerances)", Value::real(miss))
+        .computed_cell("(Linie) left side L = (P2.y − Pa.y)(P2.x − Pb.x)", "reproduced", Value::count_of(sides[0], m))
+        .computed_cell("(Linie) right side R = (P2.x − Pa.x)(P2.y − Pb.y)", "reproduced", Value::count_of(sides[1], m))
         .tolerance(Tolerance::bound(0.0, ToleranceSource::Propagated, "half a unit in the sixth significant digit + the first-order effect of the frames' and d0's rounding + 64ε × the block's largest number"))
         .power(Power::mutant(signed < n, "the signed-depth convention, through the same test, is rejected (it differs only where Q₂'s flag is −1)"))
         .method("the program run at each block's printed d0 and version; its xy map uses the signed depths, its printed z the magnitudes (the flag is applied in the cross product only)")
@@ -299,7 +296,7 @@ fn linie_result(b: &ResultBuilder, case: &IdentityExampleCase, blocks: &[Block])
         .printed("left sides printed as a signed zero", Value::count(lv.zeros.1))
         .printed("right sides at rounding level", Value::count(lv.ulps.len()))
         .computed("printed zeros whose sign is that of P2.x − Pb.x, with P2.y − Pa.y zero within its bound", Value::count_of(lv.zeros.0, lv.zeros.1))
-        .computed("rounding-level R: P2.x − Pa.x = −R / (P2.y − Pb.y) in units of the last place of P2.x", Value::reals(&lv.ulps))
+        .computed_cell("rounding-level R", "P2.x − Pa.x = −R / (P2.y − Pb.y) in units of the last place of P2.x", Value::reals(&lv.ulps))
         .computed("… a nonzero whole number of units", Value::count_of(lv.whole, lv.ulps.len()))
         .computed("|diff| = (distance of P2 from the line Pa Pb) × |Pb − Pa| (twice the signed area of P2, Pa, Pb)", Value::count_of(identity, n))
         .computed("|Pb − Pa| over the blocks", Value::interval(lo, hi))

@@ -1,5 +1,5 @@
 //! The labels of a drawing judged: the printed naming against the corrected one, each fitted
-//! to the drawn cube by `studies::figure_labels`.
+//! to the drawn cube by `figure_labels`.
 
 use super::{ClaimBuilder, Decided};
 use crate::cases::Printed;
@@ -104,15 +104,17 @@ pub(super) fn labels_decision<'b>(
         ];
         for (name, f) in ["as printed", "as corrected"].iter().zip(&fits) {
             if let Some(f) = f {
-                r = r.computed(
-                    &format!("lines {}: label misfit {name}", p.lines),
+                r = r.computed_cell(
+                    &format!("lines {}", p.lines),
+                    &format!("label misfit {name}"),
                     Value::real(f.misfit),
                 );
             }
         }
         if let Some(f) = &fits[1] {
-            r = r.detail(
-                &format!("lines {}: misfit the rounding allows", p.lines),
+            r = r.cell(
+                &format!("lines {}", p.lines),
+                "misfit the rounding allows",
                 Value::real(f.bound),
             );
         }
