@@ -23,7 +23,7 @@ mod program;
 /// A printed number for the studies. `%g` prints an exact zero as "0" (anything else shows
 /// its digits), so a printed zero has no rounding; other numbers carry half a unit in the
 /// `digits`-th significant digit.
-fn num_g(p: &Printed, digits: u32) -> Num {
+fn printed_num(p: &Printed, digits: u32) -> Num {
     let half = if num_traits::Zero::is_zero(&p.value) {
         0.0
     } else {
@@ -73,7 +73,7 @@ fn example(case: &IdentityExampleCase) -> Result<Example> {
 
 /// The assignment of a printed block: its T₂, Q₂, P₂ matched against frame 2 re-centred.
 fn block_assignments(ex: &Example, a: &DebugAttempt, digits: u32) -> Vec<[usize; 4]> {
-    let g = |p: &[Printed; 2]| [num_g(&p[0], digits), num_g(&p[1], digits)];
+    let g = |p: &[Printed; 2]| [printed_num(&p[0], digits), printed_num(&p[1], digits)];
     matching_assignments(ex, &[g(&a.t2), g(&a.q2), g(&a.p2)])
 }
 
@@ -328,8 +328,8 @@ mod tests {
     #[test]
     fn printed_zero_has_no_rounding_in_g_format() {
         let z = Printed::parse("-0").unwrap();
-        assert_eq!(num_g(&z, 6).half, 0.0);
+        assert_eq!(printed_num(&z, 6).half, 0.0);
         let x = Printed::parse("12.3456").unwrap();
-        assert!((num_g(&x, 6).half - 5e-5).abs() < 1e-18);
+        assert!((printed_num(&x, 6).half - 5e-5).abs() < 1e-18);
     }
 }

@@ -25,7 +25,7 @@ const NULL: (Method, Method) = (Method::P4f3FreshNoise, Method::P4f3);
 
 pub(super) fn check(b: &ResultBuilder, case: &LinearityCase) -> Result<Vec<ClaimResult>> {
     let design = design_of(case)?;
-    let res = study::run(&design);
+    let res = study::compare(&design);
     let alpha = case.alpha.to_f64();
     let Some((_, _, cells)) = res.bodies.iter().find(|(n, _, _)| *n == case.deciding_body) else {
         // the loader checks that the deciding body is one of the bodies

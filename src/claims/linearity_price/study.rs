@@ -245,7 +245,7 @@ pub struct Results {
 /// Run the study: every body at every level, the trials in parallel, each with its own
 /// random stream (`(body · levels + level) << 32 | trial`), so that the result does not
 /// depend on the thread count.
-pub fn run(design: &Design) -> Results {
+pub fn compare(design: &Design) -> Results {
     let nl = design.levels.len();
     let bodies = design
         .bodies
@@ -475,12 +475,12 @@ mod tests {
             trials: 40,
             seed: 5,
         };
-        let a = run(&d);
+        let a = compare(&d);
         let one = rayon::ThreadPoolBuilder::new()
             .num_threads(1)
             .build()
             .unwrap();
-        assert_eq!(a, one.install(|| run(&d)));
+        assert_eq!(a, one.install(|| compare(&d)));
         // the null control sees the same scenes under other noise: not the same errors
         let c = &a.bodies[0].2[0];
         assert_ne!(c.of(Method::P4f3), c.of(Method::P4f3FreshNoise));

@@ -7,7 +7,7 @@ use crate::cases::Printed;
 use crate::check::figure::{central_window, thin, Figure, Layer, Plot, Shape, Style};
 use crate::check::{ClaimResult, Power, ResultBuilder, Tolerance, ToleranceSource, Value, Verdict};
 use crate::claims::p3f3_example::restricted as p3f3_restricted;
-use crate::claims::p3f3_example::study::{self as ex2, Study};
+use crate::claims::p3f3_example::study::{self as ex2, ExampleStudy};
 use crate::claims::p3f3_example::P3f3ExampleCase;
 use crate::derivations::solver::first_violation;
 use crate::error::{Error, Result};
@@ -64,7 +64,7 @@ fn triples(v: &[Vec<Printed>]) -> Result<Vec<[f64; 3]>> {
 
 pub(super) fn check(b: &ResultBuilder, case: &P3f3ExampleCase) -> Result<Vec<ClaimResult>> {
     let (center, half) = case.figure.rounding_box();
-    let bx = RoundingBox { center, half };
+    let figure_box = RoundingBox { center, half };
     let digits = case.solutions.significant_digits;
     let targets = triples(&case.solutions.values)?;
     let target_half: Vec<[f64; 3]> = case
@@ -75,8 +75,8 @@ pub(super) fn check(b: &ResultBuilder, case: &P3f3ExampleCase) -> Result<Vec<Cla
         .collect();
     let body = triples(std::slice::from_ref(&case.body.squares))?[0];
     let body_half: [f64; 3] = std::array::from_fn(|e| case.body.squares[e].half_unit());
-    let study = ex2::run(&ex2::Input {
-        bx: &bx,
+    let study = ex2::study(&ex2::ExampleData {
+        figure_box: &figure_box,
         targets: &targets,
         target_half: &target_half,
         body,
@@ -93,12 +93,12 @@ pub(super) fn check(b: &ResultBuilder, case: &P3f3ExampleCase) -> Result<Vec<Cla
     out.extend(p3f3_restricted::results(
         b,
         case,
-        &bx,
+        &figure_box,
         body,
         &targets,
         &target_half,
     ));
-    figures(b, case, &bx, &study, &targets);
+    figures(b, case, &figure_box, &study, &targets);
     Ok(out)
 }
 
@@ -126,7 +126,7 @@ fn body_result(b: &ResultBuilder, case: &P3f3ExampleCase) -> ClaimResult {
 fn solutions_result(
     b: &ResultBuilder,
     case: &P3f3ExampleCase,
-    s: &Study,
+    s: &ExampleStudy,
     targets: &[[f64; 3]],
     half: &[[f64; 3]],
 ) -> ClaimResult {
@@ -165,7 +165,7 @@ fn solutions_result(
         ))
         .power(power)
         .method("p3f3 at the printed figure coordinates; a witness search (minimum-norm Gauss–Newton over the box of half a unit of each coordinate, P exact) for coordinates whose roots match every printed component within its half unit, checked by exact elimination over ℚ; the same search for targets moved by 1 … 10⁵ half units; seeded Monte Carlo over the box")
-        .cell("figure coordinates", "half a unit", bx_half(case))
+        .cell("figure coordinates", "half a unit", figure_box_half(case))
         .detail("printed significant digits", case.solutions.significant_digits);
     if let Some(w) = &s.witness {
         r = r
@@ -201,7 +201,7 @@ fn solutions_result(
 fn spread_details<'b>(
     mut r: crate::check::ClaimBuilder<'b>,
     case: &P3f3ExampleCase,
-    s: &Study,
+    s: &ExampleStudy,
     targets: &[[f64; 3]],
     half: &[[f64; 3]],
 ) -> crate::check::ClaimBuilder<'b> {
@@ -231,7 +231,7 @@ fn spread_details<'b>(
     r
 }
 
-fn bx_half(case: &P3f3ExampleCase) -> Value {
+fn figure_box_half(case: &P3f3ExampleCase) -> Value {
     let h = case.figure.rounding_box().1;
     Value::real(h.iter().fold(0.0, |a: f64, b| a.max(*b)))
 }
@@ -239,7 +239,7 @@ fn bx_half(case: &P3f3ExampleCase) -> Value {
 fn figure_result(
     b: &ResultBuilder,
     case: &P3f3ExampleCase,
-    s: &Study,
+    s: &ExampleStudy,
     body_half: &[f64; 3],
 ) -> ClaimResult {
     let sq = &case.body.squares;
@@ -271,7 +271,7 @@ fn figure_result(
         ))
         .power(power)
         .method("eq. p3f3sqr of each frame at the body's squares; witness search over the box of half a unit of each coordinate; the same search for the body with one square moved by 1 … 10⁵ of its half units")
-        .cell("figure coordinates", "half a unit", bx_half(case));
+        .cell("figure coordinates", "half a unit", figure_box_half(case));
     for (k, a) in s.body_acceptance.iter().enumerate() {
         let (lo, hi) = a.interval(sq[k].to_f64(), body_half[k]);
         r = r.cell(
@@ -304,7 +304,7 @@ fn feasibility_verdict(over_box: &[Option<bool>], at_witness: Option<bool>) -> V
 fn feasibility_result(
     b: &ResultBuilder,
     case: &P3f3ExampleCase,
-    s: &Study,
+    s: &ExampleStudy,
     targets: &[[f64; 3]],
 ) -> ClaimResult {
     let judged: Vec<Option<bool>> = targets
@@ -375,8 +375,8 @@ fn feasibility_result(
 fn figures(
     b: &ResultBuilder,
     case: &P3f3ExampleCase,
-    bx: &RoundingBox,
-    s: &Study,
+    figure_box: &RoundingBox,
+    s: &ExampleStudy,
     targets: &[[f64; 3]],
 ) {
     let frame_points = |x: &[f64], i: usize| -> Vec<[f64; 2]> {
@@ -390,7 +390,7 @@ fn figures(
                 "printed",
                 Shape::Polygon,
                 Style::Printed,
-                frame_points(&bx.center, i),
+                frame_points(&figure_box.center, i),
             )
             .labelled(&["P", "Q", "R"])
             .beneath()];
@@ -421,7 +421,12 @@ fn figures(
 /// Points of the cloud drawn per root: enough to show its shape, few enough for a page.
 const DRAWN_PER_ROOT: usize = 1500;
 
-fn rounding_figure(b: &ResultBuilder, case: &P3f3ExampleCase, s: &Study, targets: &[[f64; 3]]) {
+fn rounding_figure(
+    b: &ResultBuilder,
+    case: &P3f3ExampleCase,
+    s: &ExampleStudy,
+    targets: &[[f64; 3]],
+) {
     let root = |k: usize| {
         thin(
             &s.cloud

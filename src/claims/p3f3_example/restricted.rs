@@ -3,7 +3,7 @@
 //! data (`ex2-discriminant`). Computation lives in `studies::ex2_restricted`.
 
 use crate::check::{ClaimResult, Power, ResultBuilder, Tolerance, ToleranceSource, Value, Verdict};
-use crate::claims::p3f3_example::restricted_study::{run, Input, Restricted};
+use crate::claims::p3f3_example::restricted_study::{restricted, Restricted, RestrictedDesign};
 use crate::claims::p3f3_example::P3f3ExampleCase;
 use crate::studies::rounding::{inside, RoundingBox};
 
@@ -25,7 +25,7 @@ fn always_two_real(r: &Restricted) -> bool {
 pub(super) fn results(
     b: &ResultBuilder,
     case: &P3f3ExampleCase,
-    bx: &RoundingBox,
+    figure_box: &RoundingBox,
     body: [f64; 3],
     targets: &[[f64; 3]],
     target_half: &[[f64; 3]],
@@ -33,8 +33,8 @@ pub(super) fn results(
     if case.restricted.is_none() && case.discriminant.is_none() {
         return Vec::new();
     }
-    let r = run(&Input {
-        bx,
+    let r = restricted(&RestrictedDesign {
+        figure_box,
         body,
         targets,
         target_half,

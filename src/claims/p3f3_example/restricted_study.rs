@@ -93,9 +93,9 @@ fn solve_ry(body: [f64; 3], q: [f64; 2], rx: f64, lo: f64, hi: f64) -> Vec<f64> 
 
 /// What the restricted analysis needs.
 #[derive(Clone, Debug)]
-pub struct Input<'a> {
+pub struct RestrictedDesign<'a> {
     /// The figure's coordinates (P, Q, R per frame; P exact) and their half-widths.
-    pub bx: &'a RoundingBox,
+    pub figure_box: &'a RoundingBox,
     /// The printed body's squares (a², b², c²).
     pub body: [f64; 3],
     /// The printed solutions.
@@ -152,28 +152,28 @@ pub struct Restricted {
     pub witness: Option<Witness>,
 }
 
-fn discriminant_at(bx: &RoundingBox) -> Option<Discriminant> {
-    let q = quadratic(&bx.center)?;
+fn discriminant_at(figure_box: &RoundingBox) -> Option<Discriminant> {
+    let q = quadratic(&figure_box.center)?;
     let [g, b, a] = q;
     let value = b * b - 4.0 * a * g;
     // Δ is a polynomial of the coordinates: a step of 10⁻⁶ of the box keeps the truncation
     // error far below the box's own effect
-    let step = |k: usize, _| 1e-6 * bx.half[k].max(1e-3);
+    let step = |k: usize, _| 1e-6 * figure_box.half[k].max(1e-3);
     let worst = |j: nalgebra::DMatrix<f64>, i: usize| {
         (0..j.ncols())
-            .map(|k| j[(i, k)].abs() * bx.half[k])
+            .map(|k| j[(i, k)].abs() * figure_box.half[k])
             .sum::<f64>()
     };
     let dj = central_jacobian(
         &|x: &[f64]| discriminant(x).map(|d| vec![d]),
-        &bx.center,
+        &figure_box.center,
         step,
     )?;
     let roots = |x: &[f64]| {
         let r = real_solutions_from_coordinates(x);
         (r.len() == 2).then(|| r.iter().flatten().copied().collect::<Vec<f64>>())
     };
-    let rj = central_jacobian(&roots, &bx.center, step)?;
+    let rj = central_jacobian(&roots, &figure_box.center, step)?;
     Some(Discriminant {
         quadratic: q,
         value,
@@ -185,10 +185,10 @@ fn discriminant_at(bx: &RoundingBox) -> Option<Discriminant> {
 }
 
 /// One exact view of frame `f` drawn in the box: (q, rx) uniform, ry solved.
-fn draw_frame<R: Rng>(inp: &Input, f: usize, g: &mut R) -> Option<[f64; 4]> {
+fn draw_frame<R: Rng>(inp: &RestrictedDesign, f: usize, g: &mut R) -> Option<[f64; 4]> {
     let (c, h) = (
-        &inp.bx.center[6 * f..6 * f + 6],
-        &inp.bx.half[6 * f..6 * f + 6],
+        &inp.figure_box.center[6 * f..6 * f + 6],
+        &inp.figure_box.half[6 * f..6 * f + 6],
     );
     let u = |g: &mut R, k: usize| c[k] + g.random_range(-h[k]..=h[k]);
     let (qx, qy, rx) = (u(g, 2), u(g, 3), u(g, 4));
@@ -241,7 +241,7 @@ fn views(tri: &[Vector3<f64>; 3], p: &[f64]) -> Vec<f64> {
 
 /// Per frame, the rotation taking the body's triangle onto the exact view at flat
 /// coordinates `x` (P at the origin), depths lifted from rigidity.
-fn rotations_of(inp: &Input, tri: &[Vector3<f64>; 3], x: &[f64]) -> Option<Vec<f64>> {
+fn rotations_of(inp: &RestrictedDesign, tri: &[Vector3<f64>; 3], x: &[f64]) -> Option<Vec<f64>> {
     let mut p = Vec::new();
     for f in 0..x.len() / 6 {
         let (q, r) = ([x[6 * f + 2], x[6 * f + 3]], [x[6 * f + 4], x[6 * f + 5]]);
@@ -266,12 +266,12 @@ fn rotations_of(inp: &Input, tri: &[Vector3<f64>; 3], x: &[f64]) -> Option<Vec<f
 /// Exact views of the body (one rotation per frame) fitted so that their coordinates round
 /// to the figure and their roots to every printed digit: the largest of the coordinates'
 /// shifts (in half-widths) and the components' deviations (in half units) minimised.
-fn restricted_witness(inp: &Input, seed_views: &[f64]) -> Option<Witness> {
+fn restricted_witness(inp: &RestrictedDesign, seed_views: &[f64]) -> Option<Witness> {
     let tri = triangle(inp.body)?;
     let shifts = |x: &[f64]| -> Vec<f64> {
         x.iter()
-            .zip(&inp.bx.center)
-            .zip(&inp.bx.half)
+            .zip(&inp.figure_box.center)
+            .zip(&inp.figure_box.half)
             .filter(|(_, h)| **h > 0.0)
             .map(|((v, c), h)| (v - c) / h)
             .collect()
@@ -302,7 +302,7 @@ fn restricted_witness(inp: &Input, seed_views: &[f64]) -> Option<Witness> {
 }
 
 /// The largest deviation of paired roots from the printed solutions, in half units.
-fn scaled_miss(m: &[[f64; 3]], inp: &Input) -> f64 {
+fn scaled_miss(m: &[[f64; 3]], inp: &RestrictedDesign) -> f64 {
     m.iter()
         .zip(inp.targets.iter().zip(inp.target_half))
         .flat_map(|(s, (t, h))| (0..3).map(move |e| ((s[e] - t[e]) / h[e]).abs()))
@@ -310,16 +310,16 @@ fn scaled_miss(m: &[[f64; 3]], inp: &Input) -> f64 {
 }
 
 /// Run the analysis.
-pub fn run(inp: &Input) -> Restricted {
+pub fn restricted(inp: &RestrictedDesign) -> Restricted {
     let mut g = rng(inp.seed);
-    let frames = inp.bx.center.len() / 6;
+    let frames = inp.figure_box.center.len() / 6;
     let mut accepted = [(0, 0); 3];
     let mut cloud = Vec::new();
     let (mut samples, mut dmin, mut dmax) = (0, f64::INFINITY, f64::NEG_INFINITY);
     // the seeded start of the witness: the sample whose roots come nearest the printed ones
     let mut nearest: Option<(f64, Vec<f64>)> = None;
     'trial: for _ in 0..inp.trials {
-        let mut x = inp.bx.center.clone();
+        let mut x = inp.figure_box.center.clone();
         for (f, acc) in accepted.iter_mut().enumerate().take(frames) {
             let mut view = None;
             for _ in 0..ATTEMPTS {
@@ -346,13 +346,13 @@ pub fn run(inp: &Input) -> Restricted {
         }
     }
     let plain: Vec<Option<Vec<[f64; 3]>>> =
-        crate::studies::rounding::monte_carlo(inp.bx, inp.trials, inp.seed, |x| {
+        crate::studies::rounding::monte_carlo(inp.figure_box, inp.trials, inp.seed, |x| {
             match_solutions(&real_solutions_from_coordinates(x), inp.targets)
         });
     let no_real = plain.iter().filter(|m| m.is_none()).count();
     let plain: Vec<Vec<[f64; 3]>> = plain.into_iter().flatten().collect();
     Restricted {
-        discriminant: discriminant_at(inp.bx),
+        discriminant: discriminant_at(inp.figure_box),
         accepted,
         samples,
         two_real: cloud.len(),

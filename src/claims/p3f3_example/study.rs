@@ -16,9 +16,9 @@ use crate::studies::rounding::{
 
 /// What the study needs: the figure's box and what the paper printed, as numbers.
 #[derive(Clone, Debug)]
-pub struct Input<'a> {
+pub struct ExampleData<'a> {
     /// Flat coordinates (frame, point, x/y) and their half-widths.
-    pub bx: &'a RoundingBox,
+    pub figure_box: &'a RoundingBox,
     /// The printed solutions (a², b², c²).
     pub targets: &'a [[f64; 3]],
     /// Half a unit of each printed component.
@@ -35,7 +35,7 @@ pub struct Input<'a> {
 
 /// The numbers of the study.
 #[derive(Clone, Debug)]
-pub struct Study {
+pub struct ExampleStudy {
     /// Real roots at the printed coordinates, ordered by c².
     pub at_printed: Vec<[f64; 3]>,
     /// Those roots paired with the printed solutions (`None`: fewer real roots).
@@ -102,7 +102,7 @@ fn scaled_body(x: &[f64], body: [f64; 3]) -> Vec<f64> {
 }
 
 fn mutant_acceptance(
-    bx: &RoundingBox,
+    figure_box: &RoundingBox,
     targets: &[[f64; 3]],
     half: &[[f64; 3]],
 ) -> Vec<[Acceptance; 3]> {
@@ -112,7 +112,7 @@ fn mutant_acceptance(
                 acceptance(&|shift| {
                     let mut moved = targets.to_vec();
                     moved[k][e] += shift * half[k][e];
-                    reproduce(bx, &|x| scaled_roots(x, &moved, half)).is_some()
+                    reproduce(figure_box, &|x| scaled_roots(x, &moved, half)).is_some()
                 })
             })
         })
@@ -127,15 +127,15 @@ fn spread(cloud: &[Vec<[f64; 3]>], k: usize) -> [[f64; 3]; 3] {
     })
 }
 
-fn longest_projection(bx: &RoundingBox) -> [Interval; 3] {
-    let frames = bx.center.len() / 6;
+fn longest_projection(figure_box: &RoundingBox) -> [Interval; 3] {
+    let frames = figure_box.center.len() / 6;
     std::array::from_fn(|e| {
         let (a, b) = [(0, 1), (1, 2), (2, 0)][e];
         (0..frames)
             .map(|i| {
                 let c = |j: usize, d: usize| {
                     let k = 6 * i + 2 * j + d;
-                    Interval::around(bx.center[k], bx.half[k])
+                    Interval::around(figure_box.center[k], figure_box.half[k])
                 };
                 (c(a, 0) - c(b, 0)).square() + (c(a, 1) - c(b, 1)).square()
             })
@@ -148,10 +148,12 @@ fn longest_projection(bx: &RoundingBox) -> [Interval; 3] {
 }
 
 /// Run the study.
-pub fn run(inp: &Input) -> Study {
-    let bx = inp.bx;
-    let at_printed = real_solutions_from_coordinates(&bx.center);
-    let witness = reproduce(bx, &|x| scaled_roots(x, inp.targets, inp.target_half));
+pub fn study(inp: &ExampleData) -> ExampleStudy {
+    let figure_box = inp.figure_box;
+    let at_printed = real_solutions_from_coordinates(&figure_box.center);
+    let witness = reproduce(figure_box, &|x| {
+        scaled_roots(x, inp.targets, inp.target_half)
+    });
     let witness_routes = witness.as_ref().map(|w| {
         let exact: [[BigRational; 3]; 3] = std::array::from_fn(|i| {
             std::array::from_fn(|e| {
@@ -160,33 +162,33 @@ pub fn run(inp: &Input) -> Study {
         });
         validate(&exact)
     });
-    let cloud: Vec<Vec<[f64; 3]>> = monte_carlo(bx, inp.trials, inp.seed, |x| {
+    let cloud: Vec<Vec<[f64; 3]>> = monte_carlo(figure_box, inp.trials, inp.seed, |x| {
         match_solutions(&real_solutions_from_coordinates(x), inp.targets)
     })
     .into_iter()
     .flatten()
     .collect();
     let body = inp.body;
-    let body_fit = reproduce(bx, &|x| Some(scaled_body(x, body)));
+    let body_fit = reproduce(figure_box, &|x| Some(scaled_body(x, body)));
     let body_acceptance = std::array::from_fn(|e| {
         acceptance(&|shift| {
             let mut moved = body;
             moved[e] += shift * inp.body_half[e];
-            reproduce(bx, &|x| Some(scaled_body(x, moved))).is_some()
+            reproduce(figure_box, &|x| Some(scaled_body(x, moved))).is_some()
         })
     });
-    Study {
+    ExampleStudy {
         matched: match_solutions(&at_printed, inp.targets),
         at_printed,
         witness_projections: witness.as_ref().map(|w| frame_lengths(&w.point)),
         witness,
         witness_routes,
-        acceptance: mutant_acceptance(bx, inp.targets, inp.target_half),
+        acceptance: mutant_acceptance(figure_box, inp.targets, inp.target_half),
         spread: (0..inp.targets.len()).map(|k| spread(&cloud, k)).collect(),
         cloud,
-        projections: frame_lengths(&bx.center),
-        longest_projection: longest_projection(bx),
-        body_residual: frame_lengths(&bx.center)
+        projections: frame_lengths(&figure_box.center),
+        longest_projection: longest_projection(figure_box),
+        body_residual: frame_lengths(&figure_box.center)
             .iter()
             .map(|l| {
                 let f = FrameCoefficients::new(*l);

@@ -47,7 +47,7 @@ fn within_bounds(relative: &[f64], bounds: &[f64]) -> bool {
 
 /// The inputs both results share.
 pub(super) struct Shared<'a> {
-    pub bx: &'a RoundingBox,
+    pub figure_box: &'a RoundingBox,
     pub rows: &'a [[f64; 7]],
     pub half: &'a [[f64; 7]],
 }
@@ -61,7 +61,7 @@ pub(super) fn figure_system_result(
     let xs = &case.solution.values[0];
     let x: Vec<f64> = xs.iter().map(Printed::to_f64).collect();
     let sdig = case.solution.significant_digits;
-    let fs: FigureSystem = figure_system(s.bx, &x, s.rows, s.half);
+    let fs: FigureSystem = figure_system(s.figure_box, &x, s.rows, s.half);
     let holds = within_bounds(&fs.relative, &fs.relative_bound);
     // the widest unknown: its acceptance interval against the printed x's half unit
     let k = (0..fs.relative_bound.len())
@@ -124,7 +124,7 @@ pub(super) fn body_result(b: &ResultBuilder, case: &P4f3ExampleCase, s: &Shared)
     let edges = edge_intervals(case);
     let consistent = edges.iter().all(|(lo, hi)| lo <= hi);
     let inp = JointInput {
-        figure: s.bx,
+        figure: s.figure_box,
         rows: s.rows,
         half: s.half,
         edges: &edges,

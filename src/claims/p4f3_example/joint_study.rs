@@ -51,31 +51,33 @@ pub struct FigureSystem {
 /// Solve the paper's system at the figure's printed coordinates and compare it with the
 /// printed x and the printed rows (half units `half`, 0 on structural zeros).
 pub fn figure_system(
-    bx: &RoundingBox,
+    figure_box: &RoundingBox,
     printed_x: &[f64],
     rows: &[[f64; 7]],
     half: &[[f64; 7]],
 ) -> FigureSystem {
-    let x = solve_points(&frames_of(&bx.center));
+    let x = solve_points(&frames_of(&figure_box.center));
     let relative = x.map_or_else(Vec::new, |x| {
         x.iter().zip(printed_x).map(|(a, p)| (a - p) / p).collect()
     });
     let f = |c: &[f64]| solve_points(&frames_of(c)).map(|v| v.to_vec());
     // the solution is a rational function of the coordinates: a step of 10⁻⁶ of the box
     // width leaves a truncation error far below the box's own effect
-    let relative_bound = central_jacobian(&f, &bx.center, |k, _| 1e-6 * bx.half[k].max(1e-3))
-        .map_or_else(Vec::new, |j| {
-            (0..j.nrows())
-                .map(|i| {
-                    (0..j.ncols())
-                        .map(|k| j[(i, k)].abs() * bx.half[k])
-                        .sum::<f64>()
-                        / printed_x[i].abs()
-                })
-                .collect()
-        });
-    let matches = identify_rows(rows, &frames_of(&bx.center));
-    let coefficient_half_units = coefficient_deviation(&bx.center, rows, half, &matches);
+    let relative_bound = central_jacobian(&f, &figure_box.center, |k, _| {
+        1e-6 * figure_box.half[k].max(1e-3)
+    })
+    .map_or_else(Vec::new, |j| {
+        (0..j.nrows())
+            .map(|i| {
+                (0..j.ncols())
+                    .map(|k| j[(i, k)].abs() * figure_box.half[k])
+                    .sum::<f64>()
+                    / printed_x[i].abs()
+            })
+            .collect()
+    });
+    let matches = identify_rows(rows, &frames_of(&figure_box.center));
+    let coefficient_half_units = coefficient_deviation(&figure_box.center, rows, half, &matches);
     FigureSystem {
         x,
         relative,

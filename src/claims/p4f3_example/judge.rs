@@ -60,11 +60,11 @@ pub(super) fn check(b: &ResultBuilder, case: &P4f3ExampleCase) -> Result<Vec<Cla
         .map(|s| s.half_unit_significant(digits))
         .collect();
     let (center, halves) = case.figure.rounding_box();
-    let bx = RoundingBox {
+    let figure_box = RoundingBox {
         center,
         half: halves,
     };
-    let fit = ex4::figure_fit(&bx, &squares, &sq_half);
+    let fit = ex4::figure_fit(&figure_box, &squares, &sq_half);
     let mdig = case.matrix.significant_digits;
     let rows: Vec<[f64; 7]> = case
         .matrix
@@ -79,7 +79,7 @@ pub(super) fn check(b: &ResultBuilder, case: &P4f3ExampleCase) -> Result<Vec<Cla
         .map(|r| std::array::from_fn(|j| half(&r[j], mdig)))
         .collect();
     let shared = p4f3_joint::Shared {
-        bx: &bx,
+        figure_box: &figure_box,
         rows: &rows,
         half: &rh,
     };
@@ -88,9 +88,9 @@ pub(super) fn check(b: &ResultBuilder, case: &P4f3ExampleCase) -> Result<Vec<Cla
         figure_result(b, case, &fit, &sq_half),
     ];
     out.extend(p4f3_joint::figure_system_result(b, case, &shared));
-    figure(b, case, &bx, &fit);
-    let audit = printed_matrix::run(&printed_matrix::Input {
-        bx: &bx,
+    figure(b, case, &figure_box, &fit);
+    let audit = printed_matrix::audit(&printed_matrix::PrintedSystem {
+        figure_box: &figure_box,
         points: 4,
         rows: &rows,
         half: &rh,
@@ -178,7 +178,7 @@ fn figure_result(
     })
 }
 
-fn figure(b: &ResultBuilder, case: &P4f3ExampleCase, bx: &RoundingBox, fit: &FigureFit) {
+fn figure(b: &ResultBuilder, case: &P4f3ExampleCase, figure_box: &RoundingBox, fit: &FigureFit) {
     let unflat = |x: &[f64], f: usize| -> Vec<[f64; 2]> {
         (0..4)
             .map(|j| [x[8 * f + 2 * j], x[8 * f + 2 * j + 1]])
@@ -199,10 +199,11 @@ fn figure(b: &ResultBuilder, case: &P4f3ExampleCase, bx: &RoundingBox, fit: &Fig
     let panels = (0..case.figure.frames.len())
         .map(|i| {
             // the printed views beneath, wide: the exact views drawn on them leave both visible
-            let mut layers: Vec<Layer> = tetra(&unflat(&bx.center, i), "printed", Style::Printed)
-                .into_iter()
-                .map(Layer::beneath)
-                .collect();
+            let mut layers: Vec<Layer> =
+                tetra(&unflat(&figure_box.center, i), "printed", Style::Printed)
+                    .into_iter()
+                    .map(Layer::beneath)
+                    .collect();
             if let Some(w) = &fit.witness {
                 layers.extend(tetra(
                     &unflat(&w.point, i),

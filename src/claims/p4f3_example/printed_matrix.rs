@@ -126,9 +126,9 @@ pub fn identify_rows(printed: &[[f64; 7]], frames: &[Vec<[f64; 2]>]) -> Vec<RowM
 
 /// What the audit needs.
 #[derive(Clone, Debug)]
-pub struct Input<'a> {
+pub struct PrintedSystem<'a> {
     /// The figure's coordinates (frame, point, x/y flattened) and their half-widths.
-    pub bx: &'a RoundingBox,
+    pub figure_box: &'a RoundingBox,
     /// Points per frame.
     pub points: usize,
     /// The printed rows (x1 … x6, constant).
@@ -196,7 +196,7 @@ pub fn row_at(x: &[f64], points: usize, m: &RowMatch) -> [f64; 7] {
 }
 
 /// Residuals of every nonzero printed entry, in units of its half unit.
-fn scaled(x: &[f64], inp: &Input, rows: &[[f64; 7]], matches: &[RowMatch]) -> Vec<f64> {
+fn scaled(x: &[f64], inp: &PrintedSystem, rows: &[[f64; 7]], matches: &[RowMatch]) -> Vec<f64> {
     matches
         .iter()
         .zip(rows.iter().zip(inp.half))
@@ -211,12 +211,12 @@ fn scaled(x: &[f64], inp: &Input, rows: &[[f64; 7]], matches: &[RowMatch]) -> Ve
 }
 
 /// Run the audit.
-pub fn run(inp: &Input) -> Audit {
-    let frames: Vec<Vec<[f64; 2]>> = (0..inp.bx.center.len() / (2 * inp.points))
-        .map(|f| frame(&inp.bx.center, inp.points, f))
+pub fn audit(inp: &PrintedSystem) -> Audit {
+    let frames: Vec<Vec<[f64; 2]>> = (0..inp.figure_box.center.len() / (2 * inp.points))
+        .map(|f| frame(&inp.figure_box.center, inp.points, f))
         .collect();
     let matches = identify_rows(inp.rows, &frames);
-    let coord_half = inp.bx.half.iter().fold(0.0, |a: f64, b| a.max(*b));
+    let coord_half = inp.figure_box.half.iter().fold(0.0, |a: f64, b| a.max(*b));
     let enclosure_half_units = matches
         .iter()
         .zip(inp.half)
@@ -231,11 +231,12 @@ pub fn run(inp: &Input) -> Audit {
             })
         })
         .collect();
-    let at_printed = scaled(&inp.bx.center, inp, inp.rows, &matches)
+    let at_printed = scaled(&inp.figure_box.center, inp, inp.rows, &matches)
         .iter()
         .fold(0.0, |a: f64, v| a.max(v.abs()));
-    let search =
-        |rows: &[[f64; 7]]| reproduce_gauged(inp.bx, &|x| Some(scaled(x, inp, rows, &matches)));
+    let search = |rows: &[[f64; 7]]| {
+        reproduce_gauged(inp.figure_box, &|x| Some(scaled(x, inp, rows, &matches)))
+    };
     let witness = search(inp.rows);
     let mut mutants = Vec::new();
     for (i, h) in inp.half.iter().enumerate() {

@@ -68,21 +68,21 @@ pub struct FigureFit {
 }
 
 /// Fit the body of `squares` into the box; `half` is each square's half unit.
-pub fn figure_fit(bx: &RoundingBox, squares: &[f64], half: &[f64]) -> FigureFit {
+pub fn figure_fit(figure_box: &RoundingBox, squares: &[f64], half: &[f64]) -> FigureFit {
     let realization = realize(squares, 4);
     let body = realization.points.clone();
-    let misfit_at_printed = frames_of(&bx.center, 4)
+    let misfit_at_printed = frames_of(&figure_box.center, 4)
         .iter()
         .flat_map(|f| view_residual(&body, f))
         .fold(0.0, |a: f64, v| a.max(v.abs()));
-    let witness = reproduce(bx, &|x| scaled_views(x, &body));
+    let witness = reproduce(figure_box, &|x| scaled_views(x, &body));
     let acceptance = (0..squares.len())
         .map(|e| {
             acceptance(&|shift| {
                 let mut moved = squares.to_vec();
                 moved[e] += shift * half[e];
                 let r = realize(&moved, 4);
-                r.realizable && reproduce(bx, &|x| scaled_views(x, &r.points)).is_some()
+                r.realizable && reproduce(figure_box, &|x| scaled_views(x, &r.points)).is_some()
             })
         })
         .collect();

@@ -4,7 +4,7 @@
 
 use nalgebra::Vector2;
 
-use super::program::run;
+use super::program::replay;
 use crate::derivations::identity::smallest_c;
 use crate::derivations::rounding::first_order_bound;
 
@@ -252,9 +252,9 @@ pub fn distance_spread(
     version: f64,
     factors: &[f64],
 ) -> Option<f64> {
-    let base = run(f1, f2, d0, version)?.distance;
+    let base = replay(f1, f2, d0, version)?.distance;
     factors.iter().try_fold(0.0_f64, |m, k| {
-        let d = run(f1, f2, d0 * k, version)?.distance;
+        let d = replay(f1, f2, d0 * k, version)?.distance;
         Some(m.max((d - base).abs() / base.max(f64::MIN_POSITIVE)))
     })
 }

@@ -5,7 +5,7 @@
 
 use nalgebra::Vector2;
 
-use super::program::run;
+use super::program::replay;
 use crate::claims::identity_census::study::{distance_level, image_size};
 use crate::derivations::identity::{b_squared, paper_tests, smallest_c};
 use crate::model::Scene;
@@ -47,7 +47,8 @@ fn frames(s: &Scene) -> ([Vector2<f64>; 4], [Vector2<f64>; 4]) {
 
 /// The versions (−1, +1) whose P₂ lies on its line within the rounding level, at d0.
 fn passing(f1: &[Vector2<f64>; 4], f2: &[Vector2<f64>; 4], d0: f64, size: f64) -> [bool; 2] {
-    [-1.0, 1.0].map(|v| run(f1, f2, d0, v).is_some_and(|b| b.distance / size <= distance_level()))
+    [-1.0, 1.0]
+        .map(|v| replay(f1, f2, d0, v).is_some_and(|b| b.distance / size <= distance_level()))
 }
 
 /// The scene with P moved orthogonally into the plane R, T, Q.
@@ -122,7 +123,7 @@ pub fn census(trials: usize, seed: u64, factors: &[f64], make_planar: bool) -> C
             .collect();
         out.mirrors_both += usize::from(signs.len() == 2);
         for v in [-1.0, 1.0] {
-            if let Some(b) = run(&f1, &f2, d_true, v) {
+            if let Some(b) = replay(&f1, &f2, d_true, v) {
                 out.pa_off_min = out.pa_off_min.min(b.pa_off / size);
                 out.pa_off_max = out.pa_off_max.max(b.pa_off / size);
             }

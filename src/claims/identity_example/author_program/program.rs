@@ -80,7 +80,7 @@ fn relative(f: &[Vector2<f64>; 4]) -> [Vector2<f64>; 3] {
 
 /// The program on frames `f1`, `f2` (program order P, Q, R, T), at d = `d0` and the sign
 /// `version` of √Δ_b. `None` when Δ_b < 0 at d0 or T₁, Q₁ are parallel.
-pub fn run(
+pub fn replay(
     f1: &[Vector2<f64>; 4],
     f2: &[Vector2<f64>; 4],
     d0: f64,
@@ -211,14 +211,14 @@ pub fn run_bounded(
     version: f64,
     coord_half: f64,
 ) -> Option<Bounded> {
-    let block = run(f1, f2, d0, version)?;
+    let block = replay(f1, f2, d0, version)?;
     let mut x: Vec<f64> = f1.iter().chain(f2).flat_map(|p| [p.x, p.y]).collect();
     x.push(d0);
     let mut half = vec![coord_half; 16];
     half.push(d0_half);
     let f = |y: &[f64]| {
         let (g1, g2) = unflat(y);
-        run(&g1, &g2, y[16], version).map(|b| extras(&b))
+        replay(&g1, &g2, y[16], version).map(|b| extras(&b))
     };
     let bound = first_order_bound(&f, &x, &half)?;
     let n = PRINTED;
@@ -253,7 +253,7 @@ mod tests {
         let size = 4.0;
         let on: Vec<bool> = [-1.0, 1.0]
             .iter()
-            .filter_map(|v| run(&f1, &f2, d0, *v))
+            .filter_map(|v| replay(&f1, &f2, d0, *v))
             .map(|b| {
                 let v = &b.values;
                 assert!((v[LINE_DIFF] - (v[LINE_L] - v[LINE_R])).abs() <= 1e-12 * size);

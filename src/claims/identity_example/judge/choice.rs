@@ -4,7 +4,7 @@
 use nalgebra::Vector2;
 
 use super::debug::Block;
-use super::{num_g, ClaimResult, Power, ResultBuilder, Value, Verdict};
+use super::{printed_num, ClaimResult, Power, ResultBuilder, Value, Verdict};
 use crate::claims::identity_example::author_program::choice_d::{
     distance_spread, fit_rules, PrintedD, Rule,
 };
@@ -57,7 +57,7 @@ fn printed_d(
             continue;
         }
         seen.push(asg);
-        let d0 = num_g(&bl.attempt.d, digits);
+        let d0 = printed_num(&bl.attempt.d, digits);
         out.push((
             frame(&ex.frame1, frame1),
             frame(&ex.frame2, &asg),
@@ -80,7 +80,7 @@ fn spread(case: &IdentityExampleCase, ex: &Example, frame1: &[usize; 4], blocks:
             if diff <= r.bounds[LINE_DIFF] + r.float_bound {
                 return None;
             }
-            let d0 = num_g(&bl.attempt.d, digits).value;
+            let d0 = printed_num(&bl.attempt.d, digits).value;
             let (f1, f2) = (frame(&ex.frame1, frame1), frame(&ex.frame2, &asg));
             distance_spread(
                 &f1,

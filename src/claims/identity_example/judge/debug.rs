@@ -2,8 +2,8 @@
 //! two "correct" attempts.
 
 use super::{
-    block_assignments, num_g, ClaimResult, Power, ResultBuilder, Tolerance, ToleranceSource, Value,
-    Verdict,
+    block_assignments, printed_num, ClaimResult, Power, ResultBuilder, Tolerance, ToleranceSource,
+    Value, Verdict,
 };
 use crate::cases::Printed;
 use crate::claims::identity_example::author_program::program::Bounded;
@@ -46,7 +46,7 @@ pub(super) fn blocks<'a>(
                     ex,
                     frame1,
                     &matches[0],
-                    num_g(&a.d, d),
+                    printed_num(&a.d, d),
                     f64::from(a.version),
                     pb,
                 )
@@ -117,7 +117,7 @@ fn block_checks(case: &IdentityExampleCase, blocks: &[Block]) -> Vec<(usize, usi
     for (i, bl) in blocks.iter().enumerate() {
         let Some(r) = &bl.recomputed else { continue };
         for (q, p) in printed_twelve(bl.attempt).iter().enumerate() {
-            let n = num_g(p, d);
+            let n = printed_num(p, d);
             let c = judge_number(
                 n.value,
                 n.half,
@@ -275,7 +275,7 @@ fn ratio_checks(
         .iter()
         .flat_map(|e| e.ratios.iter())
         .map(|r| {
-            let (v, h) = (r.to_f64(), num_g(r, d).half);
+            let (v, h) = (r.to_f64(), printed_num(r, d).half);
             let m = match_ratio(v, h, &pairs);
             let rejected = match_ratio(v + k * h, h, &pairs).is_none()
                 && match_ratio(v - k * h, h, &pairs).is_none();

@@ -2,7 +2,8 @@
 
 use super::debug::Block;
 use super::{
-    num_f, num_g, ClaimResult, Power, ResultBuilder, Tolerance, ToleranceSource, Value, Verdict,
+    num_f, printed_num, ClaimResult, Power, ResultBuilder, Tolerance, ToleranceSource, Value,
+    Verdict,
 };
 use crate::cases::Printed;
 use crate::check::figure::{clip_line, Figure, Layer, Plot, Shape, Style};
@@ -23,8 +24,14 @@ fn fits(case: &IdentityExampleCase, ex: &Example, blocks: &[Block]) -> Vec<Optio
             Some(BlockLine {
                 assignment: b.assignment()?,
                 version: b.attempt.version,
-                pa: [num_g(&b.attempt.pa[0], d), num_g(&b.attempt.pa[1], d)],
-                pb: [num_g(&b.attempt.pb[0], d), num_g(&b.attempt.pb[1], d)],
+                pa: [
+                    printed_num(&b.attempt.pa[0], d),
+                    printed_num(&b.attempt.pa[1], d),
+                ],
+                pb: [
+                    printed_num(&b.attempt.pb[0], d),
+                    printed_num(&b.attempt.pb[1], d),
+                ],
             })
         })
         .collect();

@@ -6,7 +6,9 @@
 use nalgebra::Vector2;
 
 use super::debug::{judge_number, Block, NumberCheck};
-use super::{num_g, ClaimResult, Power, ResultBuilder, Tolerance, ToleranceSource, Value, Verdict};
+use super::{
+    printed_num, ClaimResult, Power, ResultBuilder, Tolerance, ToleranceSource, Value, Verdict,
+};
 use crate::cases::Printed;
 use crate::claims::identity_example::author_program::program::{
     run_bounded, Bounded, LINE_DIFF, LINE_L, LINE_R, P2_X, PA_Z, PB_Z, PRINTED,
@@ -27,7 +29,7 @@ pub(super) fn run_block(
     a: &DebugAttempt,
     digits: u32,
 ) -> Option<Bounded> {
-    let d0 = num_g(&a.d, digits);
+    let d0 = printed_num(&a.d, digits);
     run_bounded(
         &program_frame(&ex.frame1, frame1),
         &program_frame(&ex.frame2, asg),
@@ -57,7 +59,7 @@ fn checks(case: &IdentityExampleCase, a: &DebugAttempt, r: &Bounded) -> Vec<Numb
         .iter()
         .enumerate()
         .map(|(q, p)| {
-            let n = num_g(p, d);
+            let n = printed_num(p, d);
             let (v, b) = (r.block.values[q], r.bounds[q]);
             judge_number(n.value, n.half, v, b, r.float_bound, k, zero_half)
         })
@@ -143,7 +145,7 @@ fn depth_counts(case: &IdentityExampleCase, blocks: &[Block]) -> (usize, usize, 
             .into_iter()
             .enumerate()
         {
-            let x = num_g(p, d);
+            let x = printed_num(p, d);
             n += 1;
             let tol_u = r.bounds[q] + x.half + r.float_bound;
             unsigned += usize::from((x.value - r.block.values[q]).abs() <= tol_u);
@@ -246,7 +248,7 @@ fn rounding_level(case: &IdentityExampleCase, blocks: &[Block]) -> Level {
             out.zeros.1 += 1;
             out.zeros.0 += usize::from(zero_sign_ok(l, r));
         }
-        let rr = num_g(&bl.attempt.line[1], d);
+        let rr = printed_num(&bl.attempt.line[1], d);
         let c = checks(case, bl.attempt, r);
         if !c[LINE_R].rounding_level {
             continue;
@@ -276,7 +278,7 @@ fn measures(case: &IdentityExampleCase, blocks: &[Block]) -> (usize, usize, Vec<
         let product = v.distance * v.segment;
         identity += usize::from((v.values[LINE_DIFF].abs() - product).abs() <= r.float_bound);
         segments.push(v.segment);
-        let p = num_g(&bl.attempt.line[2], d);
+        let p = printed_num(&bl.attempt.line[2], d);
         let tol = r.bounds[LINE_DIFF] / v.segment.max(f64::MIN_POSITIVE) + p.half + r.float_bound;
         as_distance += usize::from((p.value.abs() - v.distance).abs() <= tol);
     }
