@@ -180,7 +180,7 @@ impl Poly {
     }
 
     /// Terms, in canonical order (by monomial: variable names, then exponents).
-    pub fn terms(&self) -> impl Iterator<Item = (Monomial, BigRational)> {
+    pub fn terms(&self) -> impl Iterator<Item = (Monomial, BigRational)> + use<> {
         let mut t: Vec<(Monomial, BigRational)> = (0..self.len())
             .map(|i| (self.monomial(i), self.coefficient(i)))
             .collect();

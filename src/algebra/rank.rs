@@ -45,10 +45,10 @@ impl ExactRankMethod {
 pub fn exact_rank(rows: &[Vec<BigRational>]) -> (usize, ExactRankMethod) {
     let m = rows.len();
     let n = rows.first().map_or(0, Vec::len);
-    if let Some(r) = modular_rank(rows) {
-        if r == m.min(n) {
-            return (r, ExactRankMethod::ModularFull);
-        }
+    if let Some(r) = modular_rank(rows)
+        && r == m.min(n)
+    {
+        return (r, ExactRankMethod::ModularFull);
     }
     (bareiss_rank(rows), ExactRankMethod::FractionFree)
 }

@@ -41,12 +41,12 @@ pub struct Args {
 
 /// Load the tracks, reconstruct, print.
 pub fn run(a: Args) -> Result<(), Error> {
-    if let Some(t) = a.threshold {
-        if !(t.is_finite() && t > 0.0) {
-            return Err(Error::InvalidInput(format!(
-                "--threshold {t}: the inlier threshold must be a positive number of image units"
-            )));
-        }
+    if let Some(t) = a.threshold
+        && !(t.is_finite() && t > 0.0)
+    {
+        return Err(Error::InvalidInput(format!(
+            "--threshold {t}: the inlier threshold must be a positive number of image units"
+        )));
     }
     let obs = load_observations(&a.input)?;
     if a.robust {

@@ -56,13 +56,13 @@ pub fn run(a: Args) -> Result<(), Error> {
     let tracks =
         load_tracks(&a.input, PointOrder::ByName).map_err(|e| with_gaps_pointer(&a.input, e))?;
     let solved = solve_tracks(&tracks, a.method.into()).map_err(|e| in_file(&a.input, e))?;
-    if solved.output.solutions.is_empty() {
-        if let Some(d) = solved.output.degenerate {
-            return Err(in_file(
-                &a.input,
-                Error::InvalidInput(format!("degenerate input, not solved: {d}")),
-            ));
-        }
+    if solved.output.solutions.is_empty()
+        && let Some(d) = solved.output.degenerate
+    {
+        return Err(in_file(
+            &a.input,
+            Error::InvalidInput(format!("degenerate input, not solved: {d}")),
+        ));
     }
     if a.json {
         // the guard walks what was solved: the JSON built from it would hold `null`s

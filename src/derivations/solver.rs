@@ -606,10 +606,9 @@ fn finite(s: &Solved) -> Result<()> {
         }
         if let Feasibility::NotRealizable { eigenvalue: v }
         | Feasibility::NoMotionReprojects { error: v } = sol.feasibility
+            && !v.is_finite()
         {
-            if !v.is_finite() {
-                return bad("feasibility measure");
-            }
+            return bad("feasibility measure");
         }
     }
     for st in s.structures.iter().flatten() {
@@ -621,10 +620,10 @@ fn finite(s: &Solved) -> Result<()> {
     if s.output.condition.is_some_and(|c| !c.is_finite()) {
         return bad("condition number");
     }
-    if let Some(v) = &s.validation {
-        if !v.max_relative_disagreement.is_finite() {
-            return bad("route disagreement");
-        }
+    if let Some(v) = &s.validation
+        && !v.max_relative_disagreement.is_finite()
+    {
+        return bad("route disagreement");
     }
     Ok(())
 }

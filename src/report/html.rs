@@ -366,14 +366,14 @@ fn claim_html(page: &Page, c: &ClaimResult, figures: &[&Figure], h: usize) -> St
         section_anchor(&c.section),
         escape(&c.section)
     );
-    if matches!(c.verdict, Verdict::Erratum | Verdict::Note) {
-        if let super::findings::Why::Text(d) = super::findings::defect_sentence(c) {
-            let _ = write!(
-                s,
-                "<p class=\"defect\"><strong>defect:</strong> {}</p>",
-                page.linked(&d)
-            );
-        }
+    if matches!(c.verdict, Verdict::Erratum | Verdict::Note)
+        && let super::findings::Why::Text(d) = super::findings::defect_sentence(c)
+    {
+        let _ = write!(
+            s,
+            "<p class=\"defect\"><strong>defect:</strong> {}</p>",
+            page.linked(&d)
+        );
     }
     s.push_str("<dl>");
     let _ = write!(

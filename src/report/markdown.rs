@@ -147,10 +147,10 @@ fn claim_in(
         c.lines,
         c.section
     );
-    if matches!(c.verdict, Verdict::Erratum | Verdict::Note) {
-        if let super::findings::Why::Text(d) = super::findings::defect_sentence(c) {
-            let _ = writeln!(s, "- **defect:** {}", ctx.linked(&d));
-        }
+    if matches!(c.verdict, Verdict::Erratum | Verdict::Note)
+        && let super::findings::Why::Text(d) = super::findings::defect_sentence(c)
+    {
+        let _ = writeln!(s, "- **defect:** {}", ctx.linked(&d));
     }
     let _ = writeln!(s, "- paper: {}", ctx.quantities(&c.printed, trials));
     let _ = writeln!(s, "- computed: {}", ctx.quantities(&c.computed, trials));

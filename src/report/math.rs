@@ -38,11 +38,11 @@ impl Macros {
             let name = rest[..end].to_string();
             rest = &rest[end + 1..];
             let mut args = 0;
-            if let Some(r) = rest.strip_prefix('[') {
-                if let Some(close) = r.find(']') {
-                    args = r[..close].trim().parse().unwrap_or(0);
-                    rest = &r[close + 1..];
-                }
+            if let Some(r) = rest.strip_prefix('[')
+                && let Some(close) = r.find(']')
+            {
+                args = r[..close].trim().parse().unwrap_or(0);
+                rest = &r[close + 1..];
             }
             let trimmed = rest.trim_start();
             if let Some((body, after)) = group(trimmed) {
@@ -107,13 +107,14 @@ impl Macros {
                     &r[..r.find(|d: char| !d.is_ascii_digit()).unwrap_or(r.len())]
                 };
                 let next = rest[word.len() + digits.len()..].chars().next();
-                if let Some((1, body)) = self.defs.get(word) {
-                    if !digits.is_empty() && !next.is_some_and(|n| n.is_ascii_alphanumeric()) {
-                        let call = body.replace("#1", digits);
-                        out.push_str(self.expand_at(&call, names, depth + 1).trim());
-                        rest = &rest[word.len() + digits.len()..];
-                        continue;
-                    }
+                if let Some((1, body)) = self.defs.get(word)
+                    && !digits.is_empty()
+                    && !next.is_some_and(|n| n.is_ascii_alphanumeric())
+                {
+                    let call = body.replace("#1", digits);
+                    out.push_str(self.expand_at(&call, names, depth + 1).trim());
+                    rest = &rest[word.len() + digits.len()..];
+                    continue;
                 }
                 out.push_str(word);
                 rest = &rest[word.len()..];

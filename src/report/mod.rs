@@ -140,10 +140,10 @@ pub fn write_all_atomic(dir: &Path, files: &[(&str, String)]) -> Result<()> {
     };
     for (name, _) in files {
         let target = dir.join(name);
-        if let Ok(m) = std::fs::symlink_metadata(&target) {
-            if m.file_type().is_symlink() {
-                return Err(fail(&target, "is a symbolic link; not followed".into()));
-            }
+        if let Ok(m) = std::fs::symlink_metadata(&target)
+            && m.file_type().is_symlink()
+        {
+            return Err(fail(&target, "is a symbolic link; not followed".into()));
         }
     }
     let temp = |name: &str| dir.join(format!(".{name}.{}.tmp", std::process::id()));

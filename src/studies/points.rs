@@ -97,10 +97,10 @@ pub fn agree_at_points(
                 (v.clone(), BigRational::new(n.into(), d.into()))
             })
             .collect();
-        if let (Some(l), Some(r)) = (left.eval(&values), right.eval(&values)) {
-            if l == r * ratio {
-                agreeing += 1;
-            }
+        if let (Some(l), Some(r)) = (left.eval(&values), right.eval(&values))
+            && l == r * ratio
+        {
+            agreeing += 1;
         }
     }
     let degree =

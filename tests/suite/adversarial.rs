@@ -63,13 +63,13 @@ fn run_one(path: &Path) -> Result<bool, String> {
             }
             // a solver's answer is judged by the output guard: a non-finite number may never
             // be printed, so it must be caught before it reaches a user
-            if let Ok(s) = solve_tracks(&t, Method::Auto) {
-                if let Some(n) = orthocheck::report::finite::first_non_finite(&s) {
-                    eprintln!(
-                        "{}: the solver's answer holds {n} (the output guard refuses it: exit 1)",
-                        path.display()
-                    );
-                }
+            if let Ok(s) = solve_tracks(&t, Method::Auto)
+                && let Some(n) = orthocheck::report::finite::first_non_finite(&s)
+            {
+                eprintln!(
+                    "{}: the solver's answer holds {n} (the output guard refuses it: exit 1)",
+                    path.display()
+                );
             }
             Ok(true)
         }

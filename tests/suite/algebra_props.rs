@@ -315,10 +315,11 @@ mod oracles {
             prop_assert!(g.div_exact(c).is_some(), "{} ∤ {}", c, g);
         }
         let (hx, hy) = (x.primitive().1, y.primitive().1);
-        if x.ring() == y.ring() && x.len() + y.len() <= 40 {
-            if let Some(h) = hx.gcd_heuristic(hy) {
-                prop_assert_eq!(h.primitive().1, hx.gcd_prs(hy).primitive().1);
-            }
+        if x.ring() == y.ring()
+            && x.len() + y.len() <= 40
+            && let Some(h) = hx.gcd_heuristic(hy)
+        {
+            prop_assert_eq!(h.primitive().1, hx.gcd_prs(hy).primitive().1);
         }
         if y.is_zero() {
             return Ok(());

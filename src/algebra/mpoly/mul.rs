@@ -30,10 +30,10 @@ pub fn mul_with(a: &MPoly, b: &MPoly, method: MulMethod) -> MPoly {
     if a.is_zero() || b.is_zero() {
         return MPoly::zero(a.nvars());
     }
-    if method == MulMethod::Auto {
-        if let Some(p) = mul_array(a, b) {
-            return p;
-        }
+    if method == MulMethod::Auto
+        && let Some(p) = mul_array(a, b)
+    {
+        return p;
     }
     mul_heap(a, b)
 }
