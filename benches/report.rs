@@ -7,7 +7,7 @@ use std::path::Path;
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use orthocheck::cases;
-use orthocheck::report::html;
+use orthocheck::report::{html, Report};
 
 fn report(c: &mut Criterion) {
     let all = cases::load_all::<orthocheck::claims::Check>(Path::new(concat!(
@@ -19,7 +19,10 @@ fn report(c: &mut Criterion) {
     g.sample_size(10);
     g.bench_function("full_report_with_html", |b| {
         b.iter(|| {
-            let r = orthocheck::claims::report_of(&all).expect("the report runs");
+            let r = Report::from_run(
+                orthocheck::claims::run_paper(&all, &|_, _| {}).expect("the report runs"),
+                Default::default(),
+            );
             html::render(&r).len()
         })
     });
@@ -31,9 +34,9 @@ fn report(c: &mut Criterion) {
     assert_eq!(ex4.len(), 1, "the §4 case is among the paper cases");
     g.bench_function("ex4_four_points", |b| {
         b.iter(|| {
-            orthocheck::claims::report_of(&ex4)
+            orthocheck::claims::run_paper(&ex4, &|_, _| {})
                 .expect("the §4 case runs")
-                .claims
+                .results
                 .len()
         })
     });

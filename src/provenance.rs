@@ -7,7 +7,7 @@ use serde::Serialize;
 pub const REPORT_COMMAND: &str = "cargo run --release -- report";
 
 /// The provenance of a report made now from this source tree (the seeds are filled in by
-/// [`crate::claims::run_paper`]).
+/// [`crate::report::Report::from_run`]).
 pub fn report_provenance() -> Provenance {
     Provenance {
         revision: revision(),

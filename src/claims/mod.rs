@@ -13,8 +13,7 @@ use serde::Deserialize;
 use crate::cases::{LatexSource, Schema, Validator};
 use crate::check::{figure::Figure, ClaimResult, ResultBuilder};
 use crate::error::Result;
-use crate::provenance::{CaseSeeds, Provenance};
-use crate::report::Report;
+use crate::provenance::CaseSeeds;
 
 pub mod audit;
 pub mod dof_count;
@@ -234,25 +233,26 @@ pub fn run_all_full(
     Ok((out, figures))
 }
 
-/// Run the whole paper into a report: every case's results and figures, with `provenance`
-/// completed by each case's seeds (and the report command, when it names none); `progress`
-/// hears of each finished case.
-pub fn run_paper(
-    cases: &[Case],
-    mut provenance: Provenance,
-    progress: &dyn Fn(usize, &str),
-) -> Result<Report> {
-    let (claims, figures) = run_all_full(cases, progress)?;
-    if provenance.command.is_empty() {
-        provenance.command = crate::provenance::REPORT_COMMAND.into();
-    }
-    provenance.seeds = cases.iter().map(case_seeds).collect();
-    Ok(Report::with(claims, figures, provenance))
+/// The whole paper, run: every result, the figures, and the seeds each case set.
+#[derive(Clone, Debug)]
+pub struct PaperRun {
+    /// Every claim result, restatements last.
+    pub results: Vec<ClaimResult>,
+    /// The figures the judges drew.
+    pub figures: Vec<Figure>,
+    /// Each case's seeds, with its file.
+    pub seeds: Vec<CaseSeeds>,
 }
 
-/// The paper's report with no provenance beyond the seeds.
-pub fn report_of(cases: &[Case]) -> Result<Report> {
-    run_paper(cases, Provenance::default(), &|_, _| {})
+/// Run every case of the paper; `progress` hears of each finished case (index, id). The
+/// report renders the run ([`crate::report::Report::from_run`]).
+pub fn run_paper(cases: &[Case], progress: &dyn Fn(usize, &str)) -> Result<PaperRun> {
+    let (results, figures) = run_all_full(cases, progress)?;
+    Ok(PaperRun {
+        results,
+        figures,
+        seeds: cases.iter().map(case_seeds).collect(),
+    })
 }
 
 /// A case's seeds, with the case file they are set in.

@@ -132,7 +132,8 @@ pub fn run(a: Args) -> Result<(), Error> {
         return export(&loaded, &a, dir);
     }
     if a.markdown {
-        let r = orthocheck::claims::report_of(&loaded)?;
+        let run = orthocheck::claims::run_paper(&loaded, &|_, _| {})?;
+        let r = orthocheck::report::Report::from_run(run, Default::default());
         out(&report::errata_markdown(&r.claims))?;
         return Ok(());
     }

@@ -43,7 +43,8 @@ pub fn run(args: Args) -> Result<(), Error> {
     };
     let mut prov = provenance::report_provenance();
     prov.transcription = inputs.transcription_sentence();
-    let r = orthocheck::claims::run_paper(all, prov, &progress)?.with_paper(inputs.paper.clone());
+    let run = orthocheck::claims::run_paper(all, &progress)?;
+    let r = orthocheck::report::Report::from_run(run, prov).with_paper(inputs.paper.clone());
     if show() {
         eprintln!();
     }

@@ -77,6 +77,16 @@ impl Report {
         }
     }
 
+    /// The report of the paper's run, with `provenance` completed by the run's seeds (and
+    /// the report command, when it names none).
+    pub fn from_run(run: crate::claims::PaperRun, mut provenance: Provenance) -> Report {
+        if provenance.command.is_empty() {
+            provenance.command = crate::provenance::REPORT_COMMAND.into();
+        }
+        provenance.seeds = run.seeds;
+        Report::with(run.results, run.figures, provenance)
+    }
+
     /// The same report, naming its paper.
     pub fn with_paper(self, paper: Paper) -> Report {
         Report {

@@ -76,8 +76,8 @@ pub fn report() -> Result<&'static Report, String> {
                 transcription: inputs.transcription_sentence(),
                 ..Provenance::default()
             };
-            orthocheck::claims::run_paper(all, provenance, &progress)
-                .map(|r| r.with_paper(inputs.paper.clone()))
+            orthocheck::claims::run_paper(all, &progress)
+                .map(|run| Report::from_run(run, provenance).with_paper(inputs.paper.clone()))
                 .map_err(|e| {
                     let at = done.lock().map(|d| *d).unwrap_or(0);
                     let case = all.get(at).map_or("?", |c| c.id.as_str());

@@ -14,6 +14,7 @@ use crate::claims::identity_example::{DebugAttempt, IdentityExampleCase};
 use crate::derivations::p4f3::{edge_index, realize};
 use crate::error::{Error, Result};
 
+mod blocks;
 mod choice;
 mod correct;
 mod debug;
@@ -82,8 +83,12 @@ pub(super) fn check(b: &ResultBuilder, case: &IdentityExampleCase) -> Result<Vec
     let fit = names_fit(case, &ex);
     let mut out = vec![frames_result(b, case, &fit), labels_result(b, case, &fit)];
     out.push(table_result(b, case, &fit));
-    let blocks = debug::blocks(case, &ex, &fit.perm);
-    out.extend(debug::results(b, case, &ex, &fit.perm, &blocks));
+    let blocks = blocks::blocks(case, &ex, &fit.perm);
+    // in the report's order: the numbers, the program, the rule for d, the error lines
+    out.extend(debug::number_results(b, case, &ex, &fit.perm, &blocks));
+    out.extend(program::results(b, case, &blocks));
+    out.push(choice::result(b, case, &ex, &fit.perm, &blocks));
+    out.extend(debug::error_results(b, case, &ex, &fit.perm, &blocks));
     out.extend(correct::results(b, case, &ex, &fit.perm, &blocks));
     out.extend(panels::results(b, case, &ex, &fit.perm, &blocks));
     Ok(out)

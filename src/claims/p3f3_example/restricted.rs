@@ -57,6 +57,21 @@ fn range_values(r: &[[(f64, f64); 3]], k: usize) -> Vec<Value> {
         .unwrap_or_default()
 }
 
+/// The weakest component: the widest restricted range against its half unit (solution,
+/// component).
+fn widest_component(range: &[[(f64, f64); 3]], half: &[[f64; 3]]) -> (usize, usize) {
+    let mut widest = (0, 0, 0.0);
+    for (k, c) in range.iter().enumerate() {
+        for (e, (lo, hi)) in c.iter().enumerate() {
+            let w = (hi - lo) / half[k][e];
+            if w > widest.2 {
+                widest = (k, e, w);
+            }
+        }
+    }
+    (widest.0, widest.1)
+}
+
 fn restricted_result(
     b: &ResultBuilder,
     claim: &crate::cases::ClaimRef,
@@ -66,17 +81,7 @@ fn restricted_result(
 ) -> ClaimResult {
     let within = inside_ranges(targets, &r.range);
     let witness = r.witness.as_ref().is_some_and(inside);
-    // the weakest component: the widest restricted range against its half unit
-    let mut widest = (0, 0, 0.0);
-    for (k, c) in r.range.iter().enumerate() {
-        for (e, (lo, hi)) in c.iter().enumerate() {
-            let w = (hi - lo) / half[k][e];
-            if w > widest.2 {
-                widest = (k, e, w);
-            }
-        }
-    }
-    let (k, e, _) = widest;
+    let (k, e) = widest_component(&r.range, half);
     let (lo, hi) = r.range.get(k).map_or((0.0, 0.0), |c| c[e]);
     let mut out = b
         .claim(claim)

@@ -3,7 +3,7 @@
 
 use nalgebra::Vector2;
 
-use super::debug::Block;
+use super::blocks::Block;
 use super::{printed_num, ClaimResult, Power, ResultBuilder, Value, Verdict};
 use crate::claims::identity_example::author_program::choice_d::{
     distance_spread, fit_rules, PrintedD, Rule,

@@ -2,7 +2,7 @@
 //! for calculating b" (§5.2): in the example, in seeded scenes under the program's own depth
 //! conventions, and its cause.
 
-use super::debug::Block;
+use super::blocks::Block;
 use super::{ClaimResult, Power, ResultBuilder, Tolerance, ToleranceSource, Value, Verdict};
 use crate::claims::identity_census::study::{distance_level, rank_example, ExampleRanking};
 use crate::claims::identity_example::author_program::convention::{census, ConventionCensus};

@@ -1,104 +1,15 @@
 //! The debug printouts of §5.2's example judged number by number, the error lines, and the
 //! two "correct" attempts.
 
+use super::blocks::{judge_number, Block, NumberCheck};
 use super::{
-    block_assignments, printed_num, ClaimResult, Power, ResultBuilder, Tolerance, ToleranceSource,
-    Value, Verdict,
+    printed_num, ClaimResult, Power, ResultBuilder, Tolerance, ToleranceSource, Value, Verdict,
 };
 use crate::cases::Printed;
-use crate::claims::identity_example::author_program::program::Bounded;
 use crate::claims::identity_example::author_program::{
-    delta_at_bound, float_sign_at_bound, recompute, DeltaAtBound, Example, Recomputed,
+    delta_at_bound, float_sign_at_bound, DeltaAtBound, Example,
 };
 use crate::claims::identity_example::{DebugAttempt, IdentityExampleCase};
-
-/// One printed block with what the study made of it.
-pub(super) struct Block<'a> {
-    pub attempt: &'a DebugAttempt,
-    /// The assignments whose re-centred frame 2 matches the printed T₂, Q₂, P₂.
-    pub matches: Vec<[usize; 4]>,
-    pub recomputed: Option<Recomputed>,
-    /// The block through the author's program as its printouts pin it down.
-    pub program: Option<Bounded>,
-}
-
-impl Block<'_> {
-    /// The block's assignment, when exactly one matches.
-    pub fn assignment(&self) -> Option<[usize; 4]> {
-        (self.matches.len() == 1).then(|| self.matches[0])
-    }
-}
-
-pub(super) fn blocks<'a>(
-    case: &'a IdentityExampleCase,
-    ex: &Example,
-    frame1: &[usize; 4],
-) -> Vec<Block<'a>> {
-    let d = case.debug.significant_digits;
-    case.debug
-        .attempts
-        .iter()
-        .map(|a| {
-            let matches = block_assignments(ex, a, d);
-            let recomputed = (matches.len() == 1).then(|| {
-                let pb = [a.pb[0].to_f64(), a.pb[1].to_f64()];
-                recompute(
-                    ex,
-                    frame1,
-                    &matches[0],
-                    printed_num(&a.d, d),
-                    f64::from(a.version),
-                    pb,
-                )
-            });
-            let program = (matches.len() == 1)
-                .then(|| super::program::run_block(ex, frame1, &matches[0], a, d))
-                .flatten();
-            Block {
-                attempt: a,
-                matches,
-                recomputed: recomputed.flatten(),
-                program,
-            }
-        })
-        .collect()
-}
-
-/// One printed number against its recomputation.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub(super) struct NumberCheck {
-    pub agree: bool,
-    /// The printed magnitude lies inside the propagated bound: its digits (even its sign) are
-    /// not determined by the rounded inputs, so only "zero to rounding" is checked.
-    pub rounding_level: bool,
-    /// The printed number moved by the mutant's half units either way is rejected.
-    pub mutant_rejected: bool,
-    /// The acceptance half-width in the printed number's half units.
-    pub width: f64,
-}
-
-/// Accept when |computed − printed| ≤ bound + float + half. The mutant moves the printed
-/// value by `k` half units (for a printed exact zero, the half unit a number of size one has
-/// at the printed significant digits, `zero_half`).
-pub(super) fn judge_number(
-    printed: f64,
-    half: f64,
-    computed: f64,
-    bound: f64,
-    float: f64,
-    k: f64,
-    zero_half: f64,
-) -> NumberCheck {
-    let tol = bound + float + half;
-    let h = if half > 0.0 { half } else { zero_half };
-    let accepts = |x: f64| (computed - x).abs() <= tol;
-    NumberCheck {
-        agree: accepts(printed),
-        rounding_level: printed != 0.0 && printed.abs() <= bound + float,
-        mutant_rejected: !accepts(printed + k * h) && !accepts(printed - k * h),
-        width: tol / h,
-    }
-}
 
 fn printed_twelve(a: &DebugAttempt) -> [&Printed; 12] {
     [
@@ -156,20 +67,29 @@ fn number_checks(
     (counts, widest, unmatched)
 }
 
-pub(super) fn results(
+/// The printed numbers: every block's, and the ones the rounding leaves undetermined.
+pub(super) fn number_results(
     b: &ResultBuilder,
     case: &IdentityExampleCase,
     ex: &Example,
     frame1: &[usize; 4],
     blocks: &[Block],
 ) -> Vec<ClaimResult> {
-    let mut out = vec![
+    vec![
         debug_result(b, case, blocks),
         undetermined_result(b, case, ex, frame1, blocks),
-    ];
-    out.extend(super::program::results(b, case, blocks));
-    out.push(super::choice::result(b, case, ex, frame1, blocks));
-    out.push(errors_result(b, case, ex, frame1, blocks));
+    ]
+}
+
+/// The error lines and the sign of Δ_b behind them.
+pub(super) fn error_results(
+    b: &ResultBuilder,
+    case: &IdentityExampleCase,
+    ex: &Example,
+    frame1: &[usize; 4],
+    blocks: &[Block],
+) -> Vec<ClaimResult> {
+    let mut out = vec![errors_result(b, case, ex, frame1, blocks)];
     out.extend(deltab_results(b, case, ex, frame1, blocks));
     out
 }

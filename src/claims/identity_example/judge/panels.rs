@@ -1,6 +1,6 @@
 //! §5.2's figure panels judged against the printed debug blocks, and redrawn.
 
-use super::debug::Block;
+use super::blocks::Block;
 use super::{
     num_f, printed_num, ClaimResult, Power, ResultBuilder, Tolerance, ToleranceSource, Value,
     Verdict,

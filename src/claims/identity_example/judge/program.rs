@@ -3,42 +3,15 @@
 //! and Pb (unsigned depths), both sides of every `(Linie)` line, and what their difference
 //! measures.
 
-use nalgebra::Vector2;
-
-use super::debug::{judge_number, Block, NumberCheck};
+use super::blocks::{judge_number, Block, NumberCheck};
 use super::{
     printed_num, ClaimResult, Power, ResultBuilder, Tolerance, ToleranceSource, Value, Verdict,
 };
 use crate::cases::Printed;
 use crate::claims::identity_example::author_program::program::{
-    run_bounded, Bounded, LINE_DIFF, LINE_L, LINE_R, P2_X, PA_Z, PB_Z, PRINTED,
+    Bounded, LINE_DIFF, LINE_L, LINE_R, P2_X, PA_Z, PB_Z, PRINTED,
 };
-use crate::claims::identity_example::author_program::Example;
 use crate::claims::identity_example::{DebugAttempt, IdentityExampleCase};
-
-/// Frames in program order (listed indices `order` of the program's P, Q, R, T).
-fn program_frame(f: &[Vector2<f64>; 4], order: &[usize; 4]) -> [Vector2<f64>; 4] {
-    std::array::from_fn(|j| f[order[j]])
-}
-
-/// One block through the program at its printed d0 and version.
-pub(super) fn run_block(
-    ex: &Example,
-    frame1: &[usize; 4],
-    asg: &[usize; 4],
-    a: &DebugAttempt,
-    digits: u32,
-) -> Option<Bounded> {
-    let d0 = printed_num(&a.d, digits);
-    run_bounded(
-        &program_frame(&ex.frame1, frame1),
-        &program_frame(&ex.frame2, asg),
-        d0.value,
-        d0.half,
-        f64::from(a.version),
-        ex.coord_half,
-    )
-}
 
 /// Every number a block prints besides flags and version, in the program's print order.
 fn printed_all(a: &DebugAttempt) -> [&Printed; PRINTED] {
