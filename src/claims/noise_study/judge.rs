@@ -231,7 +231,7 @@ impl Context<'_> {
             dist.to_lengths,
         )
         .computed("the values are", symbols_name(read_as))
-        .correction(format!("read the values as {}", symbols_name(read_as)))
+        .correction(symbols_name(read_as))
         .tolerance(Tolerance::exact("the nearer of the two readings"))
         .power(Power::mutant(
             control,
