@@ -34,17 +34,10 @@ pub fn value_text(v: &Value) -> String {
     }
 }
 
-/// Named values as one line: `name: value; …` (a lone unnamed-looking `paper`/`computed`
-/// entry prints its value only).
+/// Named values as one line: `name: value; …` (a lone [`Role::ValueOnly`] value prints
+/// alone).
 pub fn quantities_text(qs: &[Quantity]) -> String {
-    match qs {
-        [q] if q.role == Role::ValueOnly => value_text(&q.value),
-        _ => qs
-            .iter()
-            .map(|q| format!("{}: {}", q.name, value_text(&q.value)))
-            .collect::<Vec<_>>()
-            .join("; "),
-    }
+    quantities_line(qs, |n| n.to_string(), |q| value_text(&q.value))
 }
 
 /// A tolerance as text: the bound, then where it comes from.

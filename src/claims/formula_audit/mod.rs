@@ -37,9 +37,9 @@ impl ClaimKind for FormulaAuditCase {
     fn audit_items(
         &self,
         b: &ResultBuilder,
-        source: &crate::cases::Source,
+        // each item names its own place
+        _source: &crate::cases::Source,
     ) -> Result<Vec<(ClaimResult, crate::claims::audit::Shown)>> {
-        let _ = source;
         judge::judged(b, self)
     }
 }

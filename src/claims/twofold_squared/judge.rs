@@ -62,7 +62,7 @@ pub fn audit(case: &TwofoldCase) -> Result<TwofoldAudit> {
     Ok(TwofoldAudit {
         transcription: case.polynomial.printed.clone(),
         printed: s.printed.to_string(),
-        derived: s.derived.first().cloned().unwrap_or_default().to_string(),
+        derived: derived_text(&s),
         ratios: s
             .ratios
             .iter()
@@ -73,6 +73,11 @@ pub fn audit(case: &TwofoldCase) -> Result<TwofoldAudit> {
         evaluation: (s.points.points, s.points.seed, s.points.agreeing),
         verdict: identity_verdict(&s),
     })
+}
+
+/// The polynomial derived by squaring twice, as text.
+fn derived_text(s: &TwofoldStudy) -> String {
+    s.derived.first().cloned().unwrap_or_default().to_string()
 }
 
 fn signs_text(p: &[i64; 3]) -> String {
@@ -114,9 +119,15 @@ fn relations(b: &ResultBuilder, case: &TwofoldCase) -> ClaimResult {
     r.verdict(Verdict::holds(c.census.none_held == 0))
 }
 
-/// The claim result of eq. p3f3sqr (also the audit's item).
-pub(super) fn polynomial(b: &ResultBuilder, case: &TwofoldCase) -> Result<ClaimResult> {
+/// The audit's item: the claim result of eq. p3f3sqr and the derived polynomial, from one
+/// study.
+pub(super) fn audit_item(b: &ResultBuilder, case: &TwofoldCase) -> Result<(ClaimResult, String)> {
     let s = study(case)?;
+    Ok((polynomial(b, case, &s), derived_text(&s)))
+}
+
+/// The claim result of eq. p3f3sqr.
+fn polynomial(b: &ResultBuilder, case: &TwofoldCase, s: &TwofoldStudy) -> ClaimResult {
     let (rejected, term, mutant_agree) = match &s.mutant {
         Some(m) => (
             m.rejected(),
@@ -163,11 +174,11 @@ pub(super) fn polynomial(b: &ResultBuilder, case: &TwofoldCase) -> Result<ClaimR
         "random points agreeing",
         Value::count_of(mutant_agree, s.points.points),
     );
-    Ok(r.verdict(identity_verdict(&s)))
+    r.verdict(identity_verdict(s))
 }
 
 pub(super) fn check(b: &ResultBuilder, case: &TwofoldCase) -> Result<Vec<ClaimResult>> {
-    Ok(vec![relations(b, case), polynomial(b, case)?])
+    Ok(vec![relations(b, case), polynomial(b, case, &study(case)?)])
 }
 
 #[cfg(test)]

@@ -39,19 +39,18 @@ impl ClaimKind for TwofoldCase {
         b: &ResultBuilder,
         source: &crate::cases::Source,
     ) -> Result<Vec<(ClaimResult, crate::claims::audit::Shown)>> {
-        let r = judge::polynomial(b, self)?;
-        let a = judge::audit(self)?;
+        let (r, derived) = judge::audit_item(b, self)?;
         let shown = crate::claims::audit::Shown {
             place: crate::claims::formula_audit::Place {
                 section: source.section.clone(),
                 label: source.label.clone(),
                 macros: Vec::new(),
             },
-            printed: format!("{} = 0", a.transcription),
+            printed: format!("{} = 0", self.polynomial.printed),
             defect: None,
             should_be: format!(
                 "±√(a²−aᵢ²) ± √(b²−bᵢ²) ± √(c²−cᵢ²) = 0 squared twice: {} = 0",
-                a.derived
+                derived
             ),
         };
         Ok(vec![(r, shown)])
