@@ -1,16 +1,11 @@
 //! Speed goal of the formula audit: every item, exact and at random points, < 2 s.
 
-use std::path::Path;
-
 use criterion::{criterion_group, criterion_main, Criterion};
 use orthocheck::cases;
 
 fn audit(c: &mut Criterion) {
-    let all = cases::load_all::<orthocheck::claims::Check>(Path::new(concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/paper_cases"
-    )))
-    .expect("the paper cases load");
+    let all = cases::load_all::<orthocheck::claims::Check>(&orthocheck_benches::paper_cases())
+        .expect("the paper cases load");
     let mut g = c.benchmark_group("audit");
     g.sample_size(10);
     g.bench_function("whole_audit", |b| {

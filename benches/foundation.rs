@@ -1,8 +1,6 @@
 //! Speed goals of the foundation: the DOF grid, the exact twofold-squared identity, and exact
 //! root isolation.
 
-use std::path::Path;
-
 use criterion::{criterion_group, criterion_main, Criterion};
 use num_rational::BigRational;
 use num_traits::One;
@@ -20,11 +18,9 @@ fn dof_grid(c: &mut Criterion) {
 
 fn twofold_identity(c: &mut Criterion) {
     // goal: < 1 ms for the exact verification of eq. p3f3sqr
-    let case: orthocheck::claims::Case = load_case(Path::new(concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/paper_cases/twofold_squared.yaml"
-    )))
-    .expect("case file");
+    let case: orthocheck::claims::Case =
+        load_case(&orthocheck_benches::paper_cases().join("twofold_squared.yaml"))
+            .expect("case file");
     let Check::TwofoldSquared(t) = case.check else {
         panic!("not a twofold case")
     };

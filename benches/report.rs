@@ -3,18 +3,13 @@
 //! points (the joint fit of one configuration to figure and table, refitted for 96 mutants),
 //! so that a regression there shows by itself.
 
-use std::path::Path;
-
 use criterion::{criterion_group, criterion_main, Criterion};
 use orthocheck::cases;
 use orthocheck::report::{html, Report};
 
 fn report(c: &mut Criterion) {
-    let all = cases::load_all::<orthocheck::claims::Check>(Path::new(concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/paper_cases"
-    )))
-    .expect("the paper cases load");
+    let all = cases::load_all::<orthocheck::claims::Check>(&orthocheck_benches::paper_cases())
+        .expect("the paper cases load");
     let mut g = c.benchmark_group("report");
     g.sample_size(10);
     g.bench_function("full_report_with_html", |b| {

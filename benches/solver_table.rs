@@ -2,7 +2,7 @@
 //! of real solutions returned, the share of them that are valid (feasible, residual within the
 //! rounding bound below), the share of instances whose ground truth is among them (within the
 //! solver's own first-order error bound), and the median time per instance. Prints a Markdown
-//! table: `cargo bench --bench solver_table` (the criterion benches in `benches/solvers.rs`
+//! table: `cargo bench -p orthocheck-benches --bench solver_table` (the criterion benches in `benches/solvers.rs`
 //! time the same hot paths with confidence intervals).
 //!
 //! A new row is one line in `main`: `measure(name, n, instance, outcome, hot)`.

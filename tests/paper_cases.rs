@@ -10,9 +10,14 @@
 
 use std::path::Path;
 
+use libtest_mimic::{Arguments, Trial};
+
 use orthocheck::{cases, check, Error};
 
 mod common;
+
+/// What a case test returns: its failure, if any, as an error.
+type TestResult = Result<(), Box<dyn std::error::Error>>;
 
 fn snapshot_settings() -> insta::Settings {
     let mut s = insta::Settings::clone_current();
@@ -22,7 +27,7 @@ fn snapshot_settings() -> insta::Settings {
     s
 }
 
-fn paper_case(path: &Path) -> datatest_stable::Result<()> {
+fn paper_case(path: &Path) -> TestResult {
     let case = cases::load_case::<orthocheck::claims::Check>(path)?;
     // one run of the whole paper serves every case (the restatements need all the others)
     let results: Vec<&check::ClaimResult> = common::report()?
@@ -50,7 +55,7 @@ fn paper_case(path: &Path) -> datatest_stable::Result<()> {
     Ok(())
 }
 
-fn bad_case(path: &Path, text: String) -> datatest_stable::Result<()> {
+fn bad_case(path: &Path, text: String) -> TestResult {
     let expected = text
         .lines()
         .next()
@@ -89,7 +94,36 @@ fn bad_case(path: &Path, text: String) -> datatest_stable::Result<()> {
     }
 }
 
-datatest_stable::harness! {
-    { test = paper_case, root = "paper_cases", pattern = r"\.yaml$" },
-    { test = bad_case, root = "tests/bad_cases", pattern = r"\.yaml$" },
+/// One test per file of `dir` ending in `.yaml`, named `{prefix}::{file name}`, in name order.
+fn trials(
+    dir: &str,
+    prefix: &str,
+    test: fn(&Path, String) -> TestResult,
+) -> std::io::Result<Vec<Trial>> {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join(dir);
+    let mut paths: Vec<_> = std::fs::read_dir(&root)?
+        .map(|e| e.map(|e| e.path()))
+        .collect::<std::io::Result<_>>()?;
+    paths.retain(|p| p.extension().is_some_and(|e| e == "yaml"));
+    paths.sort();
+    let mut out = Vec::new();
+    for path in paths {
+        let name = path.file_name().map(|n| n.to_string_lossy().into_owned());
+        let name = format!("{prefix}::{}", name.unwrap_or_default());
+        // the path relative to the crate, as the errors name it
+        let shown = Path::new(dir).join(path.file_name().unwrap_or_default());
+        out.push(Trial::test(name, move || {
+            let text = std::fs::read_to_string(&path).map_err(|e| e.to_string())?;
+            test(&shown, text).map_err(|e| e.to_string().into())
+        }));
+    }
+    Ok(out)
+}
+
+fn main() -> std::io::Result<()> {
+    // cases are named relative to the crate, the folder the tests run in
+    std::env::set_current_dir(env!("CARGO_MANIFEST_DIR"))?;
+    let mut all = trials("paper_cases", "paper_case", |p, _| paper_case(p))?;
+    all.extend(trials("tests/bad_cases", "bad_case", bad_case)?);
+    libtest_mimic::run(&Arguments::from_args(), all).exit()
 }

@@ -9,9 +9,9 @@ use rand::Rng;
 use nalgebra::{Rotation3, Vector3};
 
 use crate::algebra::{central_jacobian, kabsch};
-use crate::claims::p4f3_example::joint_study::lp_minimax;
 use crate::derivations::p3f3::{match_solutions, real_solutions_from_coordinates, solve_core};
 use crate::model::rng;
+use crate::studies::joint_fit::lp_minimax;
 use crate::studies::rounding::{RoundingBox, Witness};
 
 /// Bisection steps when solving a frame's last coordinate: 60 halvings of a box of width

@@ -5,11 +5,11 @@
 
 use crate::cases::Printed;
 use crate::check::{ClaimResult, Power, ResultBuilder, Tolerance, ToleranceSource, Value, Verdict};
-use crate::claims::p4f3_example::joint_study::{
-    figure_system, joint_fit, joint_mutants, FigureSystem, JointFit, JointInput, JointMutant,
-};
 use crate::claims::p4f3_example::study as ex4;
 use crate::claims::p4f3_example::P4f3ExampleCase;
+use crate::studies::joint_fit::{
+    figure_system, joint_fit, joint_mutants, FigureSystem, JointFit, JointInput, JointMutant,
+};
 use crate::studies::rounding::RoundingBox;
 
 /// Everything printed is reproduced when no scaled deviation exceeds one half unit.

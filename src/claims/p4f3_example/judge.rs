@@ -7,12 +7,12 @@ use crate::check::figure::{Figure, Layer, Plot, Shape, Style};
 use crate::check::Role;
 use crate::check::{ClaimResult, Power, ResultBuilder, Tolerance, ToleranceSource, Value, Verdict};
 use crate::claims::p4f3_example::joint as p4f3_joint;
-use crate::claims::p4f3_example::printed_matrix::{self, Audit};
 use crate::claims::p4f3_example::study::{self as ex4, Conditioning, FigureFit, SolutionCheck};
 use crate::claims::p4f3_example::P4f3ExampleCase;
 use crate::derivations::noise::LevelResult;
 use crate::error::Result;
 use crate::model::Body;
+use crate::studies::printed_matrix::{self, Audit};
 use crate::studies::rounding::Acceptance;
 use crate::studies::rounding::RoundingBox;
 

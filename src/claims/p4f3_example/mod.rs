@@ -2,9 +2,7 @@
 
 mod case;
 pub mod joint;
-pub mod joint_study;
 mod judge;
-pub mod printed_matrix;
 pub mod study;
 
 pub use case::*;

@@ -1,0 +1,67 @@
+//! Exact and floating algebra: polynomials over ℚ, exact root isolation, float roots, rank.
+
+mod diff;
+mod float_roots;
+mod gram;
+mod interval;
+mod lanczos;
+pub mod modp;
+pub mod mpoly;
+mod newton;
+mod parse;
+mod perm;
+mod poly;
+mod procrustes;
+mod rank;
+mod ratfn;
+mod sturm;
+
+pub use diff::central_jacobian;
+pub use float_roots::{
+    closed_form_real, companion_roots, compare_methods, quadratic, quadratic_roots, EigenMethod,
+    RootAgreement,
+};
+pub use gram::gram;
+pub use interval::Interval;
+pub use lanczos::largest_eigenvalue;
+pub use newton::{min_norm_newton, min_norm_newton_step};
+pub use parse::parse_decimal;
+pub use perm::{permutations, permutations4};
+pub use poly::{Monomial, Poly};
+pub use procrustes::{complete_rotation, kabsch, orthonormal_rows};
+pub use rank::{exact_rank, exact_solve, svd_rank, svd_rank_above, ExactRankMethod, SvdRank};
+pub use ratfn::{determinant, solve_linear, solve_linear_fraction_free, RatFn};
+pub use sturm::{RealRoot, UPoly};
+
+use num_rational::BigRational;
+
+/// A rational `n / d` (panics only on `d == 0`, which callers never pass).
+pub fn rat(n: i64, d: i64) -> BigRational {
+    BigRational::new(n.into(), d.into())
+}
+
+/// Units of rounding allowed before a computed quantity counts as zero: the quantities
+/// tested this way come from a few dozen additions and products of the inputs.
+pub const NEGLIGIBLE_ULPS: f64 = 64.0;
+
+/// The relative rounding level of a square root of a difference of squares, √(e² − eᵢ²):
+/// cancellation leaves an absolute error near √(64ε)·e, far above 64ε. Quantities built from
+/// such depths (the two-frame constructions) are compared at this level.
+pub fn sqrt_rounding() -> f64 {
+    (NEGLIGIBLE_ULPS * f64::EPSILON).sqrt()
+}
+
+/// Whether `value`, computed from terms whose absolute values sum to `magnitude`, is zero
+/// up to rounding (|value| ≤ 64·ε·magnitude). Used to detect exactly degenerate input, never
+/// to accept a noisy result.
+///
+/// # Example
+/// ```
+/// use orthocheck_core::algebra::negligible;
+/// assert!(negligible(0.1 + 0.2 - 0.3, 0.6));
+/// assert!(!negligible(1e-9, 1.0));
+/// ```
+#[inline]
+pub fn negligible(value: f64, magnitude: f64) -> bool {
+    value.abs() <= NEGLIGIBLE_ULPS * f64::EPSILON * magnitude
+}

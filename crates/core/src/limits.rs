@@ -1,0 +1,173 @@
+//! Limits on work: every size a user controls, with the largest value the tool accepts.
+//!
+//! Each limit is checked where the size is read (a case file at load time, a command-line
+//! argument before any work starts), so that a request too large for this machine is refused
+//! in words (exit 2) instead of running for hours or exhausting memory. The table of limits,
+//! with where each is checked and how to override it, is `docs/limits.md`; a test keeps the
+//! two in step.
+//!
+//! The values are chosen from measured cost on a 2-core machine: each accepted request
+//! finishes within seconds to a few minutes, and the paper's own cases sit well inside.
+
+/// Points of a degree-of-freedom count or identifiability decision (Jacobian rank).
+pub const DOF_POINTS: usize = 200;
+/// Frames of a degree-of-freedom count or identifiability decision.
+pub const DOF_FRAMES: usize = 200;
+/// Points × frames of one identifiability decision: the Jacobian has 2pk rows and about
+/// 3p + 3k columns, so its rank costs about (pk)²; p·k = 1000 takes about a second.
+pub const DOF_POINTS_TIMES_FRAMES: usize = 1_000;
+/// The largest p and the largest k of an identifiability grid (`dof --table`, case grids):
+/// the grid runs every (p, k) up to them.
+pub const DOF_GRID: usize = 20;
+/// Members of the two-frame family printed by `family --samples`.
+pub const FAMILY_SAMPLES: usize = 10_000;
+/// Points of `synth`.
+pub const SYNTH_POINTS: usize = 100_000;
+/// Frames of `synth`.
+pub const SYNTH_FRAMES: usize = 100_000;
+/// Points × frames of `synth`: the file it writes must stay readable by the tracks reader
+/// ([`INPUT_BYTES`]); one image point takes about 45 bytes.
+pub const SYNTH_POINTS_TIMES_FRAMES: usize = 1_000_000;
+/// Monte Carlo trials per level and model of a noise study (case or `noise --trials`;
+/// `noise --max-trials` raises it: the statistics are streamed, so memory stays fixed).
+pub const NOISE_TRIALS: usize = 1_000_000;
+/// Noise levels of one study.
+pub const NOISE_LEVELS: usize = 100;
+/// The largest noise level ε (relative error up to ε): beyond 1 a coordinate may change
+/// sign, and ε near the largest float overflows the sampler.
+pub const NOISE_LEVEL: f64 = 1.0;
+/// Trials of a census, of a random-scene check and of an identity census (case files).
+pub const CASE_TRIALS: usize = 1_000_000;
+/// Rational instances of an exact solution count (case files): each eliminates a degree-16
+/// polynomial over ℚ, about a fifth of a second.
+pub const COUNT_INSTANCES: usize = 1_000;
+/// Monte Carlo samples of a rounding box (case files).
+pub const ROUNDING_TRIALS: usize = 1_000_000;
+/// Random evaluation points of an identity check (case files).
+pub const EVALUATION_POINTS: usize = 10_000;
+/// Points of a random-scene check (case files: the two-frame check).
+pub const CASE_POINTS: usize = 100;
+/// Samples along a curve (case files).
+pub const CURVE_SAMPLES: usize = 100_000;
+/// Entries of a list of angles, factors or shifts in a case file.
+pub const CASE_LIST: usize = 1_000;
+/// Significant digits a case may say a program printed with (an f64 holds 17).
+pub const SIGNIFICANT_DIGITS: u32 = 17;
+/// YAML values (scalars, lists, maps) of one case file; the largest paper case holds a few
+/// thousand. Small enough that an alias bomb is refused within milliseconds.
+pub const CASE_YAML_VALUES: usize = 50_000;
+/// YAML aliases (`*name`) of one case file.
+pub const CASE_YAML_ALIASES: usize = 1_000;
+/// Characters of one formula.
+pub const FORMULA_CHARS: usize = 20_000;
+/// Nesting depth of parentheses (and unary signs) in one formula: the parser is recursive.
+pub const FORMULA_DEPTH: usize = 64;
+/// The largest exponent written in a formula.
+pub const FORMULA_EXPONENT: u64 = 64;
+/// The largest total degree a formula can reach when expanded (a bound read off its text).
+pub const FORMULA_DEGREE: f64 = 256.0;
+/// The most terms a formula can expand to (an upper bound read off its text, before any
+/// cancellation: terms of a sum add, of a product multiply, of a power raise).
+pub const FORMULA_TERMS: f64 = 1e6;
+
+/// The side of the Gram matrix `reconstruct` decomposes, min(2k, p) for p points in k frames:
+/// its eigen-decomposition costs about side³ (1,000 takes about a second).
+pub const RECONSTRUCT_GRAM: usize = 1_000;
+/// The work of one bundle-adjustment iteration, Σ over points of (frames seeing it)²: the
+/// Schur complement's accumulation costs about 75 flops per unit (10⁷ ≈ 0.1 s per
+/// iteration); beyond it `reconstruct` skips the adjustment and says so in `method`.
+pub const BUNDLE_WORK: usize = 10_000_000;
+/// Frames of a bundle adjustment: the reduced camera system is dense, 5k × 5k, factorised in
+/// about (5k)³/3 flops per iteration (k = 200: about 0.1 s); beyond it `reconstruct` skips
+/// the adjustment and says so in `method`.
+pub const BUNDLE_FRAMES: usize = 200;
+/// RANSAC samples at most (each costs one point intersection per point and frame).
+pub const RANSAC_SAMPLES: usize = 10_000;
+/// Observations (points × frames) of `reconstruct --robust`: every sample intersects every
+/// point, so the worst case (no good sample) costs samples × observations.
+pub const RANSAC_OBSERVATIONS: usize = 100_000;
+/// Points per frame of `identify --method epipolar`: every ordered choice of four frame-2
+/// points is tried, n⁴ of them; n = 40 takes about 2 s on two cores (n = 60 about 10 s).
+/// `identify --max-points` raises it.
+pub const IDENTIFY_POINTS_EPIPOLAR: usize = 40;
+/// Points per frame of `identify --method four` (the paper's four-point test, n⁴ tries at
+/// about 20 times epipolar's cost each): n = 20 takes about 2 s.
+pub const IDENTIFY_POINTS_FOUR: usize = 20;
+/// Points per frame of `identify --method five` (the five-point line, n⁵ tries): n = 30
+/// takes about 1 s.
+pub const IDENTIFY_POINTS_FIVE: usize = 30;
+
+/// `Err` naming `what`, the value and the limit when `value > limit`.
+pub fn at_most(what: &str, value: usize, limit: usize) -> Result<(), String> {
+    if value > limit {
+        Err(format!(
+            "{what} is {value}, more than the limit of {limit} (see docs/limits.md)"
+        ))
+    } else {
+        Ok(())
+    }
+}
+
+/// `Err` naming `what` unless `value` lies in 1 ..= `limit`.
+pub fn count(what: &str, value: usize, limit: usize) -> Result<(), String> {
+    if value == 0 {
+        return Err(format!("{what} must be at least 1"));
+    }
+    at_most(what, value, limit)
+}
+
+/// `Err` unless ε is a number in [0, [`NOISE_LEVEL`]].
+pub fn noise_level(what: &str, eps: f64) -> Result<(), String> {
+    if (0.0..=NOISE_LEVEL).contains(&eps) {
+        Ok(())
+    } else {
+        Err(format!(
+            "{what} {}: a noise level must be a relative error ε with 0 ≤ ε ≤ {NOISE_LEVEL}",
+            short(eps)
+        ))
+    }
+}
+
+/// A number for a message: plain when ordinary, in exponent form when huge or tiny
+/// (`1e308`, not 309 digits).
+fn short(x: f64) -> String {
+    if x != 0.0 && x.is_finite() && !(1e-4..1e6).contains(&x.abs()) {
+        format!("{x:e}")
+    } else {
+        format!("{x}")
+    }
+}
+
+/// The largest tracks file read, in bytes: a file (or device) beyond it is refused before it
+/// can fill the memory.
+pub const INPUT_BYTES: u64 = 64 << 20;
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn docs_list_every_limit() {
+        let doc = include_str!("../../../docs/limits.md");
+        let me = include_str!("limits.rs");
+        for line in me.lines() {
+            if let Some(rest) = line.strip_prefix("pub const ") {
+                let name = rest.split(':').next().unwrap_or("");
+                assert!(doc.contains(name), "docs/limits.md does not list {name}");
+            }
+        }
+    }
+
+    #[test]
+    fn limits_accept_up_to_and_refuse_beyond() {
+        assert!(at_most("n", 10, 10).is_ok());
+        assert!(at_most("n", 11, 10).unwrap_err().contains("limit of 10"));
+        assert!(count("n", 0, 10).is_err());
+        assert!(count("n", 1, 10).is_ok());
+        assert!(noise_level("ε", 0.0).is_ok());
+        assert!(noise_level("ε", NOISE_LEVEL).is_ok());
+        assert!(noise_level("ε", -0.1).is_err());
+        assert!(noise_level("ε", 1e308).unwrap_err().starts_with("ε 1e308:"));
+        assert!(noise_level("ε", f64::NAN).is_err());
+    }
+}

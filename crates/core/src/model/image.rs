@@ -1,0 +1,37 @@
+//! Image-plane geometry shared by the two-frame tests.
+
+use nalgebra::Vector2;
+
+/// The distance of `x` from the line through `a` and `b`; the distance from `a` when the two
+/// coincide (a degenerate line is a point).
+///
+/// # Example
+/// ```
+/// use nalgebra::Vector2;
+/// use orthocheck_core::model::point_line_distance;
+/// let d = point_line_distance(Vector2::new(0.0, 2.0), Vector2::zeros(), Vector2::new(3.0, 0.0));
+/// assert_eq!(d, 2.0);
+/// ```
+pub fn point_line_distance(x: Vector2<f64>, a: Vector2<f64>, b: Vector2<f64>) -> f64 {
+    let dir = b - a;
+    let off = x - a;
+    let n = dir.norm();
+    if n == 0.0 {
+        off.norm()
+    } else {
+        (dir.x * off.y - dir.y * off.x).abs() / n
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn on_off_and_degenerate() {
+        let (a, b) = (Vector2::new(1.0, 1.0), Vector2::new(3.0, 3.0));
+        assert_eq!(point_line_distance(Vector2::new(5.0, 5.0), a, b), 0.0);
+        assert!((point_line_distance(Vector2::new(1.0, 3.0), a, b) - 2f64.sqrt()).abs() < 1e-15);
+        assert_eq!(point_line_distance(Vector2::new(4.0, 5.0), a, a), 5.0);
+    }
+}

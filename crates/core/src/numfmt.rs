@@ -1,0 +1,113 @@
+//! Number formatting, in one place, so reports and snapshots never drift across machines.
+
+/// Significant digits used for every floating value shown to a reader or snapshotted.
+pub const SIGNIFICANT: usize = 6;
+
+/// Format with [`SIGNIFICANT`] significant digits: plain notation for magnitudes in
+/// [1e-4, 1e6), scientific otherwise; trailing zeros trimmed; `-0` printed as `0`.
+///
+/// # Example
+/// ```
+/// use orthocheck_core::numfmt::sig;
+/// assert_eq!(sig(12.34560004), "12.3456");
+/// assert_eq!(sig(2.5e-9), "2.5e-9");
+/// assert_eq!(sig(-0.0), "0");
+/// assert_eq!(sig(f64::INFINITY), "inf");
+/// ```
+pub fn sig(x: f64) -> String {
+    if x.is_nan() {
+        return "NaN".into();
+    }
+    if x.is_infinite() {
+        return if x > 0.0 { "inf".into() } else { "-inf".into() };
+    }
+    if x == 0.0 {
+        return "0".into();
+    }
+    let s = sig_digits(x, SIGNIFICANT);
+    match s.split_once('e') {
+        Some((m, e)) => format!("{}e{}", trim_zeros(m), e),
+        None => trim_zeros(&s),
+    }
+}
+
+/// Significant digits a Monte Carlo estimate from `trials` trials carries. Its relative
+/// sampling error is about 1/√trials (a quantile's or a share's standard error scales so), so
+/// the digits kept are those up to and including the first uncertain one:
+/// ⌊log₁₀ √trials⌋ + 1 (100 trials: 2 digits; 10 000 trials: 3 digits; at least 1).
+pub fn sampled_digits(trials: u64) -> usize {
+    if trials < 1 {
+        return 1;
+    }
+    // ⌊log₁₀ √n⌋ = ⌊log₁₀ n / 2⌋, computed on integers so that 10 000 gives exactly 2
+    let mut magnitude = 0usize;
+    let mut n = trials;
+    while n >= 10 {
+        n /= 10;
+        magnitude += 1;
+    }
+    magnitude / 2 + 1
+}
+
+/// `x` with `digits` significant digits: plain notation for magnitudes in [1e-4, 1e6),
+/// scientific otherwise (the notation of [`sig`]); trailing zeros are kept,
+/// since they are digits the estimate carries.
+pub fn sig_digits(x: f64, digits: usize) -> String {
+    if !x.is_finite() || x == 0.0 {
+        return sig(x);
+    }
+    let digits = digits.max(1);
+    let a = x.abs();
+    if (1e-4..1e6).contains(&a) {
+        let magnitude = a.log10().floor() as i32;
+        let decimals = digits as i32 - 1 - magnitude;
+        if decimals >= 0 {
+            format!("{x:.0$}", decimals as usize)
+        } else {
+            // digits left of the point beyond the significant ones are zeros
+            let scale = 10f64.powi(-decimals);
+            format!("{:.0}", (x / scale).round() * scale)
+        }
+    } else {
+        format!("{:.*e}", digits - 1, x)
+    }
+}
+
+fn trim_zeros(s: &str) -> String {
+    if s.contains('.') {
+        let t = s.trim_end_matches('0').trim_end_matches('.');
+        if t == "-0" {
+            "0".into()
+        } else {
+            t.into()
+        }
+    } else {
+        s.into()
+    }
+}
+
+/// A list of floats, each with [`sig`], comma-separated in parentheses.
+pub fn sig_list(xs: &[f64]) -> String {
+    format!(
+        "({})",
+        xs.iter().map(|x| sig(*x)).collect::<Vec<_>>().join(", ")
+    )
+}
+
+/// A rounding-level quantity as the power of ten above it (`"< 1e-11"`), so that values at
+/// machine precision never make output differ between machines; exact zero prints `"0"`.
+///
+/// # Example
+/// ```
+/// assert_eq!(orthocheck_core::numfmt::below(2.06e-12), "< 1e-11");
+/// ```
+pub fn below(x: f64) -> String {
+    if x == 0.0 {
+        return "0".into();
+    }
+    if !x.is_finite() {
+        return sig(x);
+    }
+    let e = x.abs().log10().floor() as i32 + 1;
+    format!("< 1e{e}")
+}

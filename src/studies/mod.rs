@@ -1,9 +1,0 @@
-//! Experiments: everything seeded and repeated (Monte Carlo, censuses, rounding propagation,
-//! witness searches, the reconstruction of the author's program). Studies return numbers and
-//! exact values, never text.
-
-pub mod census;
-pub mod family_samples;
-pub mod noise;
-pub mod points;
-pub mod rounding;
