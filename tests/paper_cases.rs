@@ -55,7 +55,8 @@ fn paper_case(path: &Path) -> TestResult {
     Ok(())
 }
 
-fn bad_case(path: &Path, text: String) -> TestResult {
+fn bad_case(path: &Path) -> TestResult {
+    let text = std::fs::read_to_string(path)?;
     let expected = text
         .lines()
         .next()
@@ -94,36 +95,27 @@ fn bad_case(path: &Path, text: String) -> TestResult {
     }
 }
 
-/// One test per file of `dir` ending in `.yaml`, named `{prefix}::{file name}`, in name order.
-fn trials(
-    dir: &str,
-    prefix: &str,
-    test: fn(&Path, String) -> TestResult,
-) -> std::io::Result<Vec<Trial>> {
-    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join(dir);
-    let mut paths: Vec<_> = std::fs::read_dir(&root)?
-        .map(|e| e.map(|e| e.path()))
+/// One test per file of `dir` ending in `.yaml`, named `{prefix}::{file name}`, in name order;
+/// each is given the file's path relative to the crate, as the errors name it.
+fn trials(dir: &str, prefix: &str, test: fn(&Path) -> TestResult) -> std::io::Result<Vec<Trial>> {
+    let mut names: Vec<String> = std::fs::read_dir(dir)?
+        .map(|e| e.map(|e| e.file_name().to_string_lossy().into_owned()))
         .collect::<std::io::Result<_>>()?;
-    paths.retain(|p| p.extension().is_some_and(|e| e == "yaml"));
-    paths.sort();
-    let mut out = Vec::new();
-    for path in paths {
-        let name = path.file_name().map(|n| n.to_string_lossy().into_owned());
-        let name = format!("{prefix}::{}", name.unwrap_or_default());
-        // the path relative to the crate, as the errors name it
-        let shown = Path::new(dir).join(path.file_name().unwrap_or_default());
-        out.push(Trial::test(name, move || {
-            let text = std::fs::read_to_string(&path).map_err(|e| e.to_string())?;
-            test(&shown, text).map_err(|e| e.to_string().into())
-        }));
-    }
-    Ok(out)
+    names.retain(|n| n.ends_with(".yaml"));
+    names.sort();
+    let trial = |name: String| {
+        let path = Path::new(dir).join(&name);
+        Trial::test(format!("{prefix}::{name}"), move || {
+            test(&path).map_err(|e| e.to_string().into())
+        })
+    };
+    Ok(names.into_iter().map(trial).collect())
 }
 
 fn main() -> std::io::Result<()> {
     // cases are named relative to the crate, the folder the tests run in
     std::env::set_current_dir(env!("CARGO_MANIFEST_DIR"))?;
-    let mut all = trials("paper_cases", "paper_case", |p, _| paper_case(p))?;
+    let mut all = trials("paper_cases", "paper_case", paper_case)?;
     all.extend(trials("tests/bad_cases", "bad_case", bad_case)?);
     libtest_mimic::run(&Arguments::from_args(), all).exit()
 }
