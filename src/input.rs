@@ -431,9 +431,9 @@ mod tests {
 
     #[test]
     fn many_yaml_frames_are_read() {
-        let t = Scene::random(4, 30_000, 3).tracks();
+        let t = Scene::random(4, 10_000, 3).tracks();
         let y = parse_tracks(&tracks_to_yaml(&t), Path::new("t.yaml"), PointOrder::ByName);
-        assert_eq!(y.unwrap().frames.len(), 30_000);
+        assert_eq!(y.unwrap().frames.len(), 10_000);
     }
 
     #[test]

@@ -2,10 +2,10 @@
 
 /// The committed adversarial corpus: no panic, no hang, no NaN, the documented exit class.
 mod adversarial;
-/// Property tests of the exact and floating algebra.
-mod algebra_props;
 /// report.html in headless Chromium: it loads, its links resolve, it is not blank.
 mod browser;
+/// Every paper case (its snapshot) and every malformed case (its error): one test per file.
+mod cases;
 /// The command line: exit codes, JSON shapes, determinism.
 mod cli;
 /// The paper's cases and their report, computed once for the binary.
@@ -24,8 +24,6 @@ mod inventory;
 mod renderers;
 /// Orthographic structure from motion: `reconstruct` and the `sfm` library.
 mod sfm;
-/// Property tests of the solvers on seeded random scenes, generic and degenerate.
-mod solver_props;
 /// Every formula of the paper's cases, typeset: no script swallows a symbol, every symbol
 /// reaches the reader in its order; eq. p3f3sqr reads 2a²b².
 mod typesetting;

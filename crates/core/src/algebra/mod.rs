@@ -1,20 +1,20 @@
 //! Exact and floating algebra: polynomials over ℚ, exact root isolation, float roots, rank.
 
 mod diff;
-mod float_roots;
+pub mod float_roots;
 mod gram;
-mod interval;
+pub mod interval;
 mod lanczos;
 pub mod modp;
 pub mod mpoly;
 mod newton;
 mod parse;
-mod perm;
-mod poly;
+pub mod perm;
+pub mod poly;
 mod procrustes;
-mod rank;
-mod ratfn;
-mod sturm;
+pub mod rank;
+pub mod ratfn;
+pub mod sturm;
 
 pub use diff::central_jacobian;
 pub use float_roots::{

@@ -30,19 +30,3 @@ pub fn permutations4() -> Vec<[usize; 4]> {
         .map(|p| [p[0], p[1], p[2], p[3]])
         .collect()
 }
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn counts_and_order() {
-        assert_eq!(permutations(0), vec![Vec::<usize>::new()]);
-        assert_eq!(permutations(5).len(), 120);
-        let p4 = permutations4();
-        assert_eq!(p4.len(), 24);
-        assert_eq!(p4[0], [0, 1, 2, 3]);
-        assert_eq!(p4[23], [3, 2, 1, 0]);
-        assert!(p4.windows(2).all(|w| w[0] < w[1]));
-    }
-}

@@ -81,7 +81,7 @@ fn inv_mod(a: u64) -> u64 {
 }
 
 /// Rank modulo [`PRIME`]; `None` if a denominator vanishes modulo the prime.
-fn modular_rank(rows: &[Vec<BigRational>]) -> Option<usize> {
+pub fn modular_rank(rows: &[Vec<BigRational>]) -> Option<usize> {
     let mut a: Vec<Vec<u64>> = rows
         .iter()
         .map(|r| r.iter().map(to_mod).collect::<Option<Vec<u64>>>())
@@ -110,7 +110,7 @@ fn modular_rank(rows: &[Vec<BigRational>]) -> Option<usize> {
 }
 
 /// Fraction-free Gaussian elimination (Bareiss) over ℤ after clearing each row's denominators.
-fn bareiss_rank(rows: &[Vec<BigRational>]) -> usize {
+pub fn bareiss_rank(rows: &[Vec<BigRational>]) -> usize {
     let mut a: Vec<Vec<BigInt>> = rows
         .iter()
         .map(|r| {
@@ -257,39 +257,5 @@ pub fn svd_rank_above(m: &DMatrix<f64>, noise: f64) -> SvdRank {
         tolerance: tol,
         condition: (rank == rows.min(cols) && smin > 0.0).then(|| smax / smin),
         singular_values: sv,
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    fn r(n: i64, d: i64) -> BigRational {
-        BigRational::new(n.into(), d.into())
-    }
-
-    #[test]
-    fn bareiss_and_modular_agree() {
-        let m = vec![
-            vec![r(1, 2), r(1, 3), r(1, 4)],
-            vec![r(1, 3), r(1, 4), r(1, 5)],
-            vec![r(5, 6), r(7, 12), r(9, 20)],
-        ];
-        // third row = first + second
-        assert_eq!(bareiss_rank(&m), 2);
-        assert_eq!(modular_rank(&m), Some(2));
-        assert_eq!(exact_rank(&m), (2, ExactRankMethod::FractionFree));
-        let full = vec![vec![r(1, 1), r(0, 1)], vec![r(0, 1), r(3, 7)]];
-        assert_eq!(exact_rank(&full), (2, ExactRankMethod::ModularFull));
-    }
-
-    #[test]
-    fn skipped_columns_keep_divisions_exact() {
-        let m = vec![
-            vec![r(0, 1), r(2, 1), r(4, 1), r(1, 1)],
-            vec![r(0, 1), r(1, 1), r(2, 1), r(3, 1)],
-            vec![r(0, 1), r(3, 1), r(6, 1), r(4, 1)],
-        ];
-        assert_eq!(bareiss_rank(&m), 2);
     }
 }

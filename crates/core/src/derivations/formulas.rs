@@ -188,17 +188,3 @@ pub fn ordered_choices_enumerated(n: usize, r: usize) -> usize {
     }
     extend(n, r, &mut Vec::new())
 }
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn ordered_choices_agree_with_enumeration() {
-        for n in 0..7 {
-            for r in 0..4 {
-                assert_eq!(ordered_choices(n, r), ordered_choices_enumerated(n, r));
-            }
-        }
-    }
-}

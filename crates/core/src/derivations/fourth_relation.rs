@@ -275,21 +275,3 @@ fn equation_coefficients(x: &[BigRational; 3]) -> ([BigRational; 3], BigRational
             - &two * (&x[0] * &x[1] + &x[0] * &x[2] + &x[1] * &x[2]),
     )
 }
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn the_fourth_relation_is_independent() {
-        let r = fourth_relation(3);
-        assert!(!r.linear, "{:?}", r.obstruction);
-        let z = BigRational::zero();
-        assert_eq!(
-            &r.counterexample_values[..3],
-            &[z.clone(), z.clone(), z.clone()]
-        );
-        assert_ne!(r.counterexample_values[3], z);
-        assert_eq!((r.rank_three, r.rank_four), (3, 4));
-    }
-}

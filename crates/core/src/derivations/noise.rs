@@ -167,7 +167,7 @@ pub fn run_levels(
 }
 
 /// Trials per chunk (each chunk has its own random stream).
-const CHUNK: usize = 1024;
+pub const CHUNK: usize = 1024;
 
 /// What a study runs: a body under random motions, solved by one solver.
 #[derive(Clone, Debug, PartialEq)]
@@ -210,10 +210,12 @@ struct Accumulator {
     /// The reservoir's own random stream (apart from the trials').
     g: ChaCha8Rng,
     edges: usize,
+    /// Trials kept at most ([`RESERVOIR`] but in the unit test of the sampling itself).
+    capacity: usize,
 }
 
 impl Accumulator {
-    fn new(seed: u64, stream: u64, edges: usize) -> Accumulator {
+    fn new(seed: u64, stream: u64, edges: usize, capacity: usize) -> Accumulator {
         let mut g = ChaCha8Rng::seed_from_u64(seed);
         // the trials use streams (stream << 32) | chunk; this one is outside them
         g.set_stream(!stream);
@@ -223,6 +225,7 @@ impl Accumulator {
             sums: [0.0; 4],
             g,
             edges,
+            capacity,
         }
     }
 
@@ -238,11 +241,11 @@ impl Accumulator {
         }
         let n = self.seen;
         self.seen += 1;
-        if n < RESERVOIR {
+        if n < self.capacity {
             self.kept.extend_from_slice(r);
         } else {
             let j = self.g.random_range(0..=n);
-            if j < RESERVOIR {
+            if j < self.capacity {
                 self.kept[j * self.edges..(j + 1) * self.edges].copy_from_slice(r);
             }
         }
@@ -258,6 +261,17 @@ pub fn run_level(
     stream: u64,
     progress: &(dyn Fn(usize) + Sync),
 ) -> LevelResult {
+    run_level_keeping(study, model, stream, progress, RESERVOIR)
+}
+
+/// [`run_level`] with a reservoir of `capacity` trials.
+pub fn run_level_keeping(
+    study: &Study,
+    model: NoiseModel,
+    stream: u64,
+    progress: &(dyn Fn(usize) + Sync),
+    capacity: usize,
+) -> LevelResult {
     let truth: Vec<f64> = edges(study.body.points.len())
         .iter()
         .map(|&(i, j)| study.body.squared_distance(i, j))
@@ -266,7 +280,7 @@ pub fn run_level(
         NoiseModel::RelativeCoordinate { eps } | NoiseModel::RelativeLength { eps } => eps,
     };
     let e = truth.len();
-    let mut acc = Accumulator::new(study.seed, stream, e);
+    let mut acc = Accumulator::new(study.seed, stream, e, capacity);
     let chunks = study.trials.div_ceil(CHUNK);
     for first in (0..chunks).step_by(BATCH) {
         let batch: Vec<Vec<f64>> = (first..chunks.min(first + BATCH))
@@ -287,7 +301,7 @@ pub fn run_level(
     for v in &mut sorted {
         v.sort_by(f64::total_cmp);
     }
-    let sampled = acc.seen > RESERVOIR;
+    let sampled = acc.seen > capacity;
     LevelResult {
         level,
         model: model.name().to_string(),
@@ -408,68 +422,6 @@ fn trial(
         .min_by(|a, b| a.0.max_squares.total_cmp(&b.0.max_squares));
     if let Some((_, s)) = best {
         out.extend(s.iter().zip(truth).map(|(x, t)| x / t));
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn zero_noise_recovers_the_body_and_threads_do_not_matter() {
-        let body = Body::triangle(3.0, 4.0, 5.0).unwrap();
-        let s3 = Study {
-            solver: StudySolver::P3f3,
-            body: body.clone(),
-            frames: 3,
-            trials: 300,
-            seed: 1,
-            motions: None,
-        };
-        let r = run_level(&s3, NoiseModel::RelativeCoordinate { eps: 0.0 }, 0, &|_| {});
-        assert_eq!(r.failures, 0);
-        assert!(r.quantile(0, 1.0).unwrap() < 1e-9);
-        let s4 = Study {
-            solver: StudySolver::P3f4,
-            body,
-            frames: 4,
-            trials: 3000,
-            seed: 9,
-            motions: None,
-        };
-        let a = run_level(&s4, NoiseModel::RelativeLength { eps: 0.01 }, 1, &|_| {});
-        let pool = rayon::ThreadPoolBuilder::new()
-            .num_threads(1)
-            .build()
-            .unwrap();
-        let b =
-            pool.install(|| run_level(&s4, NoiseModel::RelativeLength { eps: 0.01 }, 1, &|_| {}));
-        assert_eq!(a.sorted, b.sorted);
-    }
-
-    #[test]
-    fn beyond_the_reservoir_memory_stays_fixed_and_means_stay_exact() {
-        let s = Study {
-            solver: StudySolver::P3f3,
-            body: Body::triangle(3.0, 4.0, 5.0).unwrap(),
-            frames: 3,
-            trials: 2 * RESERVOIR,
-            seed: 2,
-            motions: None,
-        };
-        let model = NoiseModel::RelativeCoordinate { eps: 0.001 };
-        let r = run_level(&s, model, 0, &|_| {});
-        let (sums, n) = r.sums.expect("more trials than the reservoir");
-        assert_eq!(n, s.trials - r.failures);
-        assert_eq!(r.ratios.len(), RESERVOIR * r.edges);
-        assert!(r.sorted.iter().all(|v| v.len() == RESERVOIR));
-        assert!((r.mean(0) - sums[0] / n as f64).abs() == 0.0 && r.mean(0).is_finite());
-        let one = rayon::ThreadPoolBuilder::new()
-            .num_threads(1)
-            .build()
-            .unwrap();
-        let b = one.install(|| run_level(&s, model, 0, &|_| {}));
-        assert_eq!(r.sorted, b.sorted);
     }
 }
 

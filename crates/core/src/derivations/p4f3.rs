@@ -14,7 +14,7 @@ use crate::algebra::{largest_eigenvalue, svd_rank_above, SvdRank, NEGLIGIBLE_ULP
 use crate::error::{Error, Result};
 use crate::model::Tracks;
 
-mod lsq;
+pub mod lsq;
 pub use lsq::{lsq_triangles, solve_least_squares, MAX_LSQ_POINTS};
 
 /// The index of the edge {i, j} in [`edges`](super::solver::edges) order.
@@ -509,87 +509,4 @@ pub fn first_order_spread(frames: &[Vec<[f64; 2]>], eps: f64) -> Option<[f64; 6]
             .sum();
         eps * (acc / 3.0).sqrt() / x0[j].abs()
     }))
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::derivations::solver::edges;
-    use crate::model::{Body, Motion, Scene};
-    use nalgebra::{Rotation3, Vector2};
-
-    fn truth(scene: &Scene) -> Vec<f64> {
-        edges(scene.body.points.len())
-            .iter()
-            .map(|&(i, j)| scene.body.squared_distance(i, j))
-            .collect()
-    }
-
-    fn max_rel(a: &[f64], b: &[f64]) -> f64 {
-        a.iter()
-            .zip(b)
-            .map(|(x, y)| (x - y).abs() / y)
-            .fold(0.0, f64::max)
-    }
-
-    #[test]
-    fn edge_index_follows_the_edge_order() {
-        for (k, &(i, j)) in edges(9).iter().enumerate() {
-            assert_eq!(edge_index(i, j), k);
-            assert_eq!(edge_index(j, i), k);
-        }
-    }
-
-    #[test]
-    fn both_forms_recover_generic_scenes_and_fit_them() {
-        let scene = Scene::random(4, 3, 31);
-        let l = SquaredLengths::from_tracks(&scene.tracks());
-        let out = solve(&l).unwrap();
-        let s = &out.solutions[0];
-        assert!(s.feasibility.is_feasible(), "{out:?}");
-        assert!(max_rel(&s.squared_edges, &truth(&scene)) < 1e-9);
-        let fit = fit(&scene.tracks(), &s.squared_edges);
-        assert!(fit.residual < 1e-9, "{}", fit.residual);
-        let scene = Scene::random(7, 5, 32);
-        let out = solve_least_squares(&SquaredLengths::from_tracks(&scene.tracks())).unwrap();
-        assert!(out.solutions[0].feasibility.is_feasible(), "{out:?}");
-        assert!(max_rel(&out.solutions[0].squared_edges, &truth(&scene)) < 1e-9);
-        assert!(out.condition.is_some());
-    }
-
-    #[test]
-    fn a_planar_body_and_special_motions_are_typed_outcomes() {
-        let mut scene = Scene::random(4, 3, 33);
-        for x in &mut scene.body.points {
-            x.z = 0.3 * x.x - 0.2 * x.y;
-        }
-        scene.body = Body::new(scene.body.points.clone());
-        let out = solve(&SquaredLengths::from_tracks(&scene.tracks())).unwrap();
-        assert_eq!(out.degenerate, Some(Degenerate::Coplanar), "{out:?}");
-        let mut turn = Scene::random(4, 3, 34);
-        for i in 1..3 {
-            turn.motions[i] = Motion {
-                rotation: Rotation3::from_axis_angle(&Vector3::z_axis(), 0.5 * i as f64),
-                translation: Vector2::new(0.1, 0.2),
-            };
-        }
-        // frames 2 and 3 differ by an in-plane turn only: the same view, named before the rank
-        let out = solve(&SquaredLengths::from_tracks(&turn.tracks())).unwrap();
-        assert_eq!(
-            out.degenerate,
-            Some(Degenerate::IdenticalFrames {
-                first: 1,
-                second: 2
-            }),
-            "{out:?}"
-        );
-        assert!(out.solutions.is_empty());
-    }
-
-    #[test]
-    fn realization_rejects_impossible_distances() {
-        // PQ = QR = 1 but RP = 3: the triangle inequality fails
-        let r = realize(&[1.0, 1.0, 9.0, 1.0, 1.0, 1.0], 4);
-        assert!(!r.realizable);
-    }
 }

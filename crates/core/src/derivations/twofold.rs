@@ -198,33 +198,6 @@ pub fn relation_census(patterns: &[[i64; 3]], trials: usize, seed: u64) -> Relat
     }
 }
 
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn every_sign_pattern_squares_to_the_same_polynomial() {
-        let p = twofold_squared([1, 1, -1]);
-        assert_eq!(twofold_squared([1, -1, 1]), p);
-        assert_eq!(twofold_squared([-1, 1, 1]), p);
-        // the norm over the four sign classes (√A ± √B ± √C) is the same polynomial
-        assert_eq!(
-            sign_class_product().ratio_to(&p),
-            Some(BigRational::from_integer(1.into()))
-        );
-    }
-
-    #[test]
-    fn census_covers_all_trials() {
-        let c = relation_census(&[[1, 1, -1], [1, -1, 1], [-1, 1, 1]], 200, 1);
-        assert_eq!(c.none_held, 0);
-        assert_eq!(c.held.iter().sum::<usize>(), 200);
-        // √(e² − eᵢ²) carries an absolute error up to √(4ε)·e per edge (cancellation under
-        // the root), so three terms stay below 3·√(4ε).
-        assert!(c.max_residual < 3.0 * (4.0 * f64::EPSILON).sqrt());
-    }
-}
-
 /// The coefficients of eq. p3f3sqr for one frame, from the projected squared lengths
 /// (aᵢ², bᵢ², cᵢ²): F(x, y, z) = x² + y² + z² − 2xy − 2xz − 2yz + K + 2αx + 2βy + 2γz with
 /// x = a², y = b², z = c².

@@ -113,7 +113,7 @@ fn sample_cameras(
 }
 
 /// Samples needed for [`CONFIDENCE`] that one is all inliers, at inlier share `w`.
-fn samples_needed(w: f64, cap: usize) -> usize {
+pub fn samples_needed(w: f64, cap: usize) -> usize {
     let good = w.powi(4);
     if good >= 1.0 {
         return 1;
@@ -130,7 +130,7 @@ fn samples_needed(w: f64, cap: usize) -> usize {
 }
 
 /// Distinct random indices below `n`.
-fn distinct<const N: usize>(g: &mut impl Rng, n: usize) -> [usize; N] {
+pub fn distinct<const N: usize>(g: &mut impl Rng, n: usize) -> [usize; N] {
     let mut out = [usize::MAX; N];
     for i in 0..N {
         let mut v = g.random_range(0..n);
@@ -505,29 +505,4 @@ fn method_line(r: &Report, given: bool, note: Option<String>) -> String {
         s.push(')');
     }
     s
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn the_sample_count_follows_the_inlier_share() {
-        // 0.999 confidence at share 0.8: 1 − 0.8⁴ = 0.5904, ln(0.001)/ln(0.5904) = 13.1…
-        assert_eq!(samples_needed(0.8, 10_000), 14);
-        assert_eq!(samples_needed(1.0, 10_000), 1);
-        assert_eq!(samples_needed(0.0, 500), 500);
-        assert_eq!(samples_needed(0.05, 500), 500);
-        // the least-median search draws at least ln(0.001)/ln(1 − 1/16) = 107.03… samples
-        assert_eq!(samples_needed(LMEDS_SHARE, 10_000), 108);
-    }
-
-    #[test]
-    fn distinct_indices_are_distinct() {
-        let mut g = rng(3);
-        for _ in 0..100 {
-            let d: [usize; 4] = distinct(&mut g, 5);
-            assert!((0..4).all(|i| (i + 1..4).all(|j| d[i] != d[j])));
-        }
-    }
 }

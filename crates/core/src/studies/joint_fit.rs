@@ -9,10 +9,10 @@ use crate::derivations::p4f3::solve_points;
 use crate::studies::printed_matrix::{identify_rows, row_at, RowMatch};
 use crate::studies::rounding::RoundingBox;
 
-mod jacobian;
+pub mod jacobian;
 
 /// Points per frame of §4's example.
-const POINTS: usize = 4;
+pub const POINTS: usize = 4;
 
 /// The exponents of the Lᵖ stages of the joint fit: least squares first, then ever closer to
 /// the largest residual (p = 64 weighs a residual 1.1 times another by 1.1⁶⁴ ≈ 450).
@@ -164,10 +164,8 @@ pub struct JointFit {
     pub worst: f64,
 }
 
-/// Parameters: 6 edge offsets (in half-widths of their intervals), then per camera a
-/// rotation vector and a 2-D translation.
 /// A configuration unpacked: squared edges, the three frames' image points, the views.
-type Unpacked = (Vec<f64>, Vec<Vec<[f64; 2]>>, Vec<[f64; 3]>);
+pub type Unpacked = (Vec<f64>, Vec<Vec<[f64; 2]>>, Vec<[f64; 3]>);
 
 /// The squared edges at parameters `p`: each edge offset is in half-widths of its interval.
 fn squares_at(inp: &JointInput, p: &[f64]) -> Vec<f64> {
@@ -178,7 +176,10 @@ fn squares_at(inp: &JointInput, p: &[f64]) -> Vec<f64> {
         .collect()
 }
 
-fn unpack(inp: &JointInput, p: &[f64]) -> Option<Unpacked> {
+/// The configuration at parameters `p`: 6 edge offsets (in half-widths of their intervals),
+/// then per camera a rotation vector and a 2-D translation; `None` when the edges span no
+/// body.
+pub fn unpack(inp: &JointInput, p: &[f64]) -> Option<Unpacked> {
     let squares = squares_at(inp, p);
     let body = tetrahedron(&squares)?;
     let mut frames = Vec::new();
@@ -204,7 +205,7 @@ fn flat(frames: &[Vec<[f64; 2]>]) -> Vec<f64> {
 }
 
 /// Every scaled deviation of the configuration `p`: figure, nonzero coefficients, edges.
-fn scaled(inp: &JointInput, matches: &[RowMatch], p: &[f64]) -> Option<Vec<f64>> {
+pub fn scaled(inp: &JointInput, matches: &[RowMatch], p: &[f64]) -> Option<Vec<f64>> {
     let (_, frames, _) = unpack(inp, p)?;
     let x = flat(&frames);
     let mut r: Vec<f64> = x
@@ -432,20 +433,4 @@ pub fn joint_mutants(inp: &JointInput, p: &[f64], shifts: &[f64]) -> Vec<JointMu
             }
         })
         .collect()
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn the_tetrahedron_has_its_edges() {
-        let s = [4.0, 9.0, 12.0, 20.0, 21.0, 18.0];
-        let b = tetrahedron(&s).unwrap_or_else(|| unreachable!());
-        let e = crate::model::edges(4);
-        for (k, (i, j)) in e.iter().enumerate() {
-            approx::assert_relative_eq!((b[*i] - b[*j]).norm_squared(), s[k], max_relative = 1e-12);
-        }
-        assert!(tetrahedron(&[1.0, 1.0, 9.0, 1.0, 1.0, 1.0]).is_none());
-    }
 }

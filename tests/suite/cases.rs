@@ -1,7 +1,8 @@
-//! The paper-reproduction check: every `paper_cases/*.yaml` is a test whose claim results are
-//! snapshotted under `snapshots/`; every `tests/bad_cases/*.yaml` must fail with the error its
-//! first line (`# expect: …`) names (a trailing `…` there matches any rest). The paper runs
-//! once for the whole binary (`common::report`); each case's test snapshots its share.
+//! The paper-reproduction check: every `paper_cases/*.yaml` is a test (`paper_case::<stem>`)
+//! whose claim results are snapshotted under `snapshots/`; every `tests/bad_cases/*.yaml`
+//! (`bad_case::<stem>`) must fail with the error its first line (`# expect: …`) names (a
+//! trailing `…` there matches any rest). `build.rs` writes one test per file; the paper runs
+//! once for the whole suite (`common::report`) and each case's test snapshots its share.
 //!
 //! The errata of the text are decided against the paper's LaTeX source (`ORTHOCHECK_PAPER`):
 //! with it their snapshot is `case__source_errata`, without it `case__source_errata__unverified`
@@ -10,11 +11,11 @@
 
 use std::path::Path;
 
-use libtest_mimic::{Arguments, Trial};
-
 use orthocheck::{cases, check, Error};
 
-mod common;
+use crate::common;
+
+include!(concat!(env!("OUT_DIR"), "/case_tests.rs"));
 
 /// What a case test returns: its failure, if any, as an error.
 type TestResult = Result<(), Box<dyn std::error::Error>>;
@@ -27,7 +28,21 @@ fn snapshot_settings() -> insta::Settings {
     s
 }
 
-fn paper_case(path: &Path) -> TestResult {
+/// The test of the case file `path`.
+fn paper_case(path: &str) {
+    if let Err(e) = check_paper_case(Path::new(path)) {
+        panic!("{path}: {e}");
+    }
+}
+
+/// The test of the malformed case file `path`.
+fn bad_case(path: &str) {
+    if let Err(e) = check_bad_case(Path::new(path)) {
+        panic!("{path}: {e}");
+    }
+}
+
+fn check_paper_case(path: &Path) -> TestResult {
     let case = cases::load_case::<orthocheck::claims::Check>(path)?;
     // one run of the whole paper serves every case (the restatements need all the others)
     let results: Vec<&check::ClaimResult> = common::report()?
@@ -55,7 +70,7 @@ fn paper_case(path: &Path) -> TestResult {
     Ok(())
 }
 
-fn bad_case(path: &Path) -> TestResult {
+fn check_bad_case(path: &Path) -> TestResult {
     let text = std::fs::read_to_string(path)?;
     let expected = text
         .lines()
@@ -93,29 +108,4 @@ fn bad_case(path: &Path) -> TestResult {
         }
         Err(e) => Err(format!("{}: wrong kind of error: {e}", path.display()).into()),
     }
-}
-
-/// One test per file of `dir` ending in `.yaml`, named `{prefix}::{file name}`, in name order;
-/// each is given the file's path relative to the crate, as the errors name it.
-fn trials(dir: &str, prefix: &str, test: fn(&Path) -> TestResult) -> std::io::Result<Vec<Trial>> {
-    let mut names: Vec<String> = std::fs::read_dir(dir)?
-        .map(|e| e.map(|e| e.file_name().to_string_lossy().into_owned()))
-        .collect::<std::io::Result<_>>()?;
-    names.retain(|n| n.ends_with(".yaml"));
-    names.sort();
-    let trial = |name: String| {
-        let path = Path::new(dir).join(&name);
-        Trial::test(format!("{prefix}::{name}"), move || {
-            test(&path).map_err(|e| e.to_string().into())
-        })
-    };
-    Ok(names.into_iter().map(trial).collect())
-}
-
-fn main() -> std::io::Result<()> {
-    // cases are named relative to the crate, the folder the tests run in
-    std::env::set_current_dir(env!("CARGO_MANIFEST_DIR"))?;
-    let mut all = trials("paper_cases", "paper_case", paper_case)?;
-    all.extend(trials("tests/bad_cases", "bad_case", bad_case)?);
-    libtest_mimic::run(&Arguments::from_args(), all).exit()
 }

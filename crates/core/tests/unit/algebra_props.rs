@@ -1,7 +1,7 @@
 use std::collections::BTreeMap;
 
 use num_rational::BigRational;
-use orthocheck::algebra::{exact_rank, rat, svd_rank, Poly, UPoly};
+use orthocheck_core::algebra::{exact_rank, rat, svd_rank, Poly, UPoly};
 use proptest::prelude::*;
 
 /// A random polynomial in x, y, z: up to 5 terms, exponents ≤ 3, coefficients in [−9, 9]/[1, 4].
@@ -119,9 +119,9 @@ mod oracles {
     use num_bigint::BigInt;
     use num_rational::BigRational;
     use num_traits::{One, Zero};
-    use orthocheck::algebra::modp::{eval_poly, Fp, PRIME};
-    use orthocheck::algebra::mpoly::Scalar;
-    use orthocheck::algebra::{Poly, RatFn};
+    use orthocheck_core::algebra::modp::{eval_poly, Fp, PRIME};
+    use orthocheck_core::algebra::mpoly::Scalar;
+    use orthocheck_core::algebra::{Poly, RatFn};
     use proptest::prelude::*;
 
     const VARS: [&str; 8] = ["a", "b", "c", "d_1", "u", "v", "w", "x"];

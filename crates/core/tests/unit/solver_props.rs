@@ -4,9 +4,11 @@
 //! (the nightly run: 20000, see docs/testing.md).
 
 use nalgebra::{Rotation3, Vector2, Vector3};
-use orthocheck::derivations::solver::{solve_tracks, Degenerate, Method, Solution, SquaredLengths};
-use orthocheck::derivations::{p3f3, p3f4, p4f3};
-use orthocheck::model::{Body, Motion, Scene, Tracks};
+use orthocheck_core::derivations::solver::{
+    solve_tracks, Degenerate, Method, Solution, SquaredLengths,
+};
+use orthocheck_core::derivations::{p3f3, p3f4, p4f3};
+use orthocheck_core::model::{Body, Motion, Scene, Tracks};
 use proptest::prelude::*;
 
 /// Cases per property: `PROPTEST_CASES` when set, else `default`.
@@ -18,7 +20,7 @@ fn cases(default: u32) -> u32 {
 }
 
 fn truth(scene: &Scene) -> Vec<f64> {
-    orthocheck::derivations::solver::edges(scene.body.points.len())
+    orthocheck_core::derivations::solver::edges(scene.body.points.len())
         .iter()
         .map(|&(i, j)| scene.body.squared_distance(i, j))
         .collect()
@@ -175,7 +177,7 @@ proptest! {
 
     #[test]
     fn the_true_assignment_ranks_first_with_a_margin(seed in any::<u64>(), shift in 0usize..6) {
-        use orthocheck::derivations::identity::{rank_quadruples_top, epipolar_residual};
+        use orthocheck_core::derivations::identity::{rank_quadruples_top, epipolar_residual};
         let t = Scene::random(6, 2, seed).tracks();
         // frame 2 rotated in order by `shift`
         let f2: Vec<_> = (0..6).map(|k| t.frames[1][(k + shift) % 6]).collect();
@@ -190,13 +192,13 @@ proptest! {
     #[test]
     fn every_member_of_the_two_frame_family_reprojects(seed in any::<u64>(), points in 4usize..12, beta in 0.05f64..3.09) {
         let t = Scene::random(points, 2, seed).tracks();
-        let m = orthocheck::derivations::two_frames::family(&t.frames[0], &t.frames[1], &[beta]).unwrap();
+        let m = orthocheck_core::derivations::two_frames::family(&t.frames[0], &t.frames[1], &[beta]).unwrap();
         prop_assert!(m[0].reprojection <= m[0].error_bound, "{} > {}", m[0].reprojection, m[0].error_bound);
     }
 
     #[test]
     fn frames_no_rigid_body_gives_are_named(seed in any::<u64>(), points in 5usize..10, k in 1.5f64..4.0, angle in 0.1f64..3.0) {
-        use orthocheck::derivations::identity::{degeneracy, rigidity, similar_frames, TwoFrameDegenerate as D};
+        use orthocheck_core::derivations::identity::{degeneracy, rigidity, similar_frames, TwoFrameDegenerate as D};
         let t = Scene::random(points, 2, seed).tracks();
         let (f1, f2) = (&t.frames[0], &t.frames[1]);
         prop_assert_eq!(rigidity(f1, f2), None, "generic");

@@ -1,0 +1,7 @@
+//! Tests of `orthocheck_core::studies`.
+
+mod family_samples;
+mod joint_fit;
+mod noise;
+mod points;
+mod rounding;

@@ -1,0 +1,15 @@
+//! Tests of `orthocheck_core::studies::points`.
+
+use orthocheck_core::algebra::rat;
+use orthocheck_core::algebra::RatFn;
+use orthocheck_core::studies::points::*;
+
+#[test]
+fn a_false_identity_fails_and_the_bound_is_small() {
+    let l = RatFn::parse("x^2 + y").unwrap();
+    let r = RatFn::parse("x^2 - y").unwrap();
+    let c = agree_at_points(&l, &r, &rat(1, 1), 8, 1);
+    assert_eq!(c.agreeing, 0);
+    assert!(c.failure_bound() < 1e-40);
+    assert!((c.log10_failure_bound() - 8.0 * (2.0 / 2_000_001.0_f64).log10()).abs() < 1e-9);
+}
