@@ -9,8 +9,8 @@ pub use points::{points_details, points_tolerance};
 
 mod result;
 pub use result::{
-    ClaimResult, Evidence, Power, PowerKind, Quantity, Real, Role, Tolerance, ToleranceSource,
-    Value, Verdict,
+    ClaimResult, Evidence, Power, PowerKind, Quantity, Real, Resolution, Role, Tolerance,
+    ToleranceSource, Value, Verdict,
 };
 
 use crate::cases::Case;
@@ -165,11 +165,16 @@ impl ClaimBuilder<'_> {
     }
 
     /// Finish with `verdict`. A positive verdict whose power is weak (or missing) becomes
-    /// `inconclusive`: a check that could not have failed confirms nothing.
+    /// `inconclusive`: a check that could not have failed confirms nothing. A `reproduced`
+    /// whose acceptance interval resolves fewer digits than the paper printed becomes
+    /// `reproduced-within-rounding`: it agrees at the resolution its inputs' rounding allows.
     pub fn verdict(self, verdict: Verdict) -> ClaimResult {
         let weak = self.power.as_ref().is_none_or(|p| p.weak);
+        let coarse = self.power.as_ref().is_some_and(Power::coarser_than_printed);
         let v = if verdict.is_positive() && weak {
             Verdict::Inconclusive
+        } else if verdict == Verdict::Reproduced && coarse {
+            Verdict::ReproducedWithinRounding
         } else {
             verdict
         };

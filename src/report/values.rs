@@ -1,7 +1,7 @@
 //! The one place where typed claim values become text.
 
 use crate::check::{
-    ClaimResult, Power, PowerKind, Quantity, Role, Tolerance, ToleranceSource, Value,
+    ClaimResult, Power, PowerKind, Quantity, Resolution, Role, Tolerance, ToleranceSource, Value,
 };
 use crate::numfmt::{sampled_digits, sig, sig_digits};
 
@@ -89,7 +89,27 @@ pub fn power_text(p: &Power) -> String {
         .map(|v| format!(" {}", value_text(v)))
         .unwrap_or_default();
     let weak = if p.weak { " (weak)" } else { "" };
-    format!("{kind}{region}: {}{weak}", p.detail)
+    let resolution = p
+        .resolution
+        .map(|r| format!("; {}", resolution_text(&r)))
+        .unwrap_or_default();
+    format!("{kind}{region}: {}{resolution}{weak}", p.detail)
+}
+
+/// An acceptance interval's resolution: the printed digits it resolves, its half-width.
+pub fn resolution_text(r: &Resolution) -> String {
+    format!(
+        "resolves {} of the {} printed significant digits (± {}, {} relative)",
+        r.digits,
+        r.printed,
+        sig(r.half_width.0),
+        percent_text(r.relative.0)
+    )
+}
+
+/// A ratio as a percentage with the one formatter's digits.
+fn percent_text(ratio: f64) -> String {
+    format!("{} %", sig(ratio * 100.0))
 }
 
 /// A verdict's power in a few words (the full phrase is [`power_text`]).
@@ -101,6 +121,12 @@ pub fn power_phrase(p: &Power) -> String {
         (PowerKind::Interval, None) => "would have rejected any other value".to_string(),
         (PowerKind::Mutant, _) => "would have rejected a changed formula or target".to_string(),
         (PowerKind::None, _) => "nothing it would have rejected".to_string(),
+    };
+    let head = match p.resolution {
+        Some(r) if r.digits < r.printed => {
+            format!("{head}, {} of {} printed digits", r.digits, r.printed)
+        }
+        _ => head,
     };
     if p.weak && p.kind != PowerKind::None {
         format!("{head} (weak: values the paper would call wrong pass too)")

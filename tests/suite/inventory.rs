@@ -1,5 +1,7 @@
 use std::collections::BTreeSet;
 
+use orthocheck::check::Verdict;
+
 use crate::common;
 
 /// The claim inventory: its table's first column lists every claim id the report must decide.
@@ -171,4 +173,39 @@ fn no_positive_verdict_is_weak() {
         weak.is_empty(),
         "positive verdicts with weak power: {weak:?}"
     );
+}
+
+/// The resolution rule on both sides (docs/verdicts.md, "Power"): a check whose acceptance
+/// interval resolves some but not all of the printed digits agrees within rounding, with its
+/// resolution stated; one that resolves none (§4's system from the figure's digits accepts x4
+/// anywhere in about [−10, 93]) decides nothing; a restatement of such a claim is judged by
+/// what it restates.
+#[test]
+fn verdicts_follow_the_resolution_of_their_checks() {
+    let report = common::report().expect("the paper runs");
+    let claim = |id: &str| {
+        report
+            .claims
+            .iter()
+            .find(|c| c.id == id)
+            .unwrap_or_else(|| panic!("{id} is a claim of the report"))
+    };
+    for id in [
+        "ex2-two-solutions",
+        "ex4-solution",
+        "ex4-figure",
+        "ex2-rounding-restricted",
+    ] {
+        let c = claim(id);
+        let r = c
+            .power
+            .resolution
+            .expect("an interval control states its resolution");
+        assert_eq!(c.verdict, Verdict::ReproducedWithinRounding, "{id}");
+        assert!(r.digits >= 1 && r.digits < r.printed, "{id}: {r:?}");
+    }
+    let system = claim("ex4-figure-system");
+    assert_eq!(system.verdict, Verdict::Inconclusive);
+    assert_eq!(system.power.resolution.map(|r| r.digits), Some(0));
+    assert_eq!(claim("conclusions/quadratic").verdict, Verdict::Reproduced);
 }
