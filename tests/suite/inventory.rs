@@ -209,3 +209,33 @@ fn verdicts_follow_the_resolution_of_their_checks() {
     assert_eq!(system.power.resolution.map(|r| r.digits), Some(0));
     assert_eq!(claim("conclusions/quadratic").verdict, Verdict::Reproduced);
 }
+
+/// What a reader computes from §4's printed squares stays in `ex4-body`'s evidence (it was
+/// once dropped): the Cayley–Menger determinant, the volume it gives, and the four faces.
+#[test]
+fn the_body_of_section_4_keeps_its_volume_and_faces() {
+    let report = common::report().expect("the paper runs");
+    let body = report
+        .claims
+        .iter()
+        .find(|c| c.id == "ex4-body")
+        .expect("ex4-body is a claim of the report");
+    let real = |name: &str| {
+        body.evidence
+            .details
+            .iter()
+            .find(|q| q.name == name)
+            .and_then(|q| match &q.value {
+                orthocheck::check::Value::Real { value } => Some(value.0),
+                _ => None,
+            })
+            .unwrap_or_else(|| panic!("ex4-body's evidence lacks {name}"))
+    };
+    let cm = real("Cayley–Menger determinant of the printed squares (288 V²)");
+    let volume = real("volume of the tetrahedron");
+    // V = √(cm/288) and back: four roundings, each half an ulp
+    assert!(cm > 0.0 && (volume * volume * 288.0 - cm).abs() <= 4.0 * f64::EPSILON * cm);
+    for face in ["PQR", "PQT", "QRT", "RPT"] {
+        assert!(real(&format!("area of face {face}")) > 0.0);
+    }
+}

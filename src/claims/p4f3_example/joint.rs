@@ -150,6 +150,7 @@ pub(super) fn body_result(b: &ResultBuilder, case: &P4f3ExampleCase, s: &Shared)
         .power(Power::mutant(of > 0 && rejected == of, &format!("every nonzero coefficient moved alone by ± {largest} of its half units: the same fit ends beyond the rounding ({rejected} of {of} mutants rejected)")))
         .method("one exact configuration — the tetrahedron of six squared edges and three orthographic cameras (rotation vector, image translation), 21 parameters — fitted to the 24 figure coordinates, the 24 nonzero printed coefficients and the six edge intervals, each residual in units of its own rounding: Levenberg–Marquardt on the Lᵖ norm, p = 2 … 64, from the affine cameras of the figure; the same fit, warm-started, for single-coefficient mutants");
     r = joint_details(r, fit.as_ref().map(|f| &f.0));
+    r = body_measures(r, &t.squares);
     for shift in &case.matrix_mutant_half_units {
         let (n, of) = mutants_rejected(&mutants, *shift);
         r = r.detail(
@@ -164,6 +165,47 @@ pub(super) fn body_result(b: &ResultBuilder, case: &P4f3ExampleCase, s: &Shared)
         );
     }
     r.verdict(joint_verdict(fit.map(|f| f.0.worst)))
+}
+
+/// What a reader computes from the printed squares: the Cayley–Menger determinant and the
+/// volume of the tetrahedron, and the area of each face (exact over the printed digits).
+fn body_measures<'b>(
+    mut r: crate::check::ClaimBuilder<'b>,
+    squares: &[crate::cases::Printed],
+) -> crate::check::ClaimBuilder<'b> {
+    use crate::derivations::p4f3::{cayley_menger, edge_index, heron16};
+    use num_traits::ToPrimitive as _;
+    let Ok(s) = <[_; 6]>::try_from(squares.iter().map(|p| p.value.clone()).collect::<Vec<_>>())
+    else {
+        return r;
+    };
+    let cm = cayley_menger(&s);
+    let cm_f = cm.to_f64().unwrap_or(f64::NAN);
+    r = r.detail(
+        "Cayley–Menger determinant of the printed squares (288 V²)",
+        cm_f,
+    );
+    // a negative determinant: no tetrahedron has these distances, so no volume to state
+    if cm_f >= 0.0 {
+        r = r.detail("volume of the tetrahedron", (cm_f / 288.0).sqrt());
+    }
+    for (name, [i, j, k]) in [
+        ("PQR", [0, 1, 2]),
+        ("PQT", [0, 1, 3]),
+        ("QRT", [1, 2, 3]),
+        ("RPT", [2, 0, 3]),
+    ] {
+        let a16 = heron16(
+            &s[edge_index(i, j)],
+            &s[edge_index(j, k)],
+            &s[edge_index(k, i)],
+        );
+        let a16 = a16.to_f64().unwrap_or(f64::NAN);
+        if a16 >= 0.0 {
+            r = r.detail(&format!("area of face {name}"), (a16 / 16.0).sqrt());
+        }
+    }
+    r
 }
 
 fn joint_details<'b>(

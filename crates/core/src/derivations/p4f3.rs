@@ -7,6 +7,8 @@
 //! PQT, QRT, RPT and frames 2, 3: six equations in the six squared edges.
 
 use nalgebra::{DMatrix, DVector, Matrix2x3, Matrix3, SMatrix, SVector, SymmetricEigen, Vector3};
+use num_rational::BigRational;
+use num_traits::Zero;
 
 use super::solver::{feasibility, Degenerate, Feasibility, Solution, SolverOutput, SquaredLengths};
 use super::twofold::FrameCoefficients;
@@ -34,6 +36,35 @@ pub fn edge_index(i: usize, j: usize) -> usize {
         // point hi ≥ 3 has its edges to 0..hi after the 3 + 4 + … + (hi − 1) earlier ones
         _ => 3 + (3..hi).sum::<usize>() + lo,
     }
+}
+
+/// The Cayley–Menger determinant of four points from their six squared distances (in
+/// [`edges`](super::solver::edges) order), exactly: 288 V² for the tetrahedron's volume V,
+/// computed as 8 det G with G the Gram matrix of the edges from point 0 (G = (s₀ᵢ + s₀ⱼ − sᵢⱼ)/2).
+/// Negative when no tetrahedron has these distances, zero for a planar one.
+pub fn cayley_menger(squares: &[BigRational; 6]) -> BigRational {
+    let two = BigRational::from_integer(2.into());
+    let g = |i: usize, j: usize| {
+        (&squares[edge_index(0, i)] + &squares[edge_index(0, j)]
+            - if i == j {
+                BigRational::zero()
+            } else {
+                squares[edge_index(i, j)].clone()
+            })
+            / &two
+    };
+    let m: Vec<Vec<BigRational>> = (1..4).map(|i| (1..4).map(|j| g(i, j)).collect()).collect();
+    let det = &m[0][0] * (&m[1][1] * &m[2][2] - &m[1][2] * &m[2][1])
+        - &m[0][1] * (&m[1][0] * &m[2][2] - &m[1][2] * &m[2][0])
+        + &m[0][2] * (&m[1][0] * &m[2][1] - &m[1][1] * &m[2][0]);
+    det * BigRational::from_integer(8.into())
+}
+
+/// Sixteen times the squared area of a triangle from its squared sides (Heron's formula in
+/// squares: 2ab + 2bc + 2ca − a² − b² − c²), exactly; negative when no triangle has them.
+pub fn heron16(a: &BigRational, b: &BigRational, c: &BigRational) -> BigRational {
+    let two = BigRational::from_integer(2.into());
+    &two * (a * b + b * c + c * a) - a * a - b * b - c * c
 }
 
 /// A triangle as the indices of its three edges (in [`edges`](super::solver::edges) order).

@@ -82,3 +82,20 @@ fn realization_rejects_impossible_distances() {
     let r = realize(&[1.0, 1.0, 9.0, 1.0, 1.0, 1.0], 4);
     assert!(!r.realizable);
 }
+
+#[test]
+fn cayley_menger_and_heron_of_a_unit_corner() {
+    use num_rational::BigRational;
+    let r = |n: i64| BigRational::from_integer(n.into());
+    // P at the origin, Q, R, T on the axes at distance 1 (edges PQ, QR, RP, TP, TQ, TR):
+    // V = 1/6, so 288 V² = 8
+    let corner = [r(1), r(2), r(1), r(1), r(2), r(2)];
+    assert_eq!(cayley_menger(&corner), r(8));
+    // a planar set (T in the plane of P, Q, R) has a zero determinant
+    let planar = [r(1), r(2), r(1), r(2), r(1), r(1)];
+    assert_eq!(cayley_menger(&planar), r(0));
+    // the right triangle with legs 1, 1: 16 A² = 4
+    assert_eq!(heron16(&r(1), &r(1), &r(2)), r(4));
+    // sides 1, 1, 4 (lengths 1, 1, 2) are degenerate: 16 A² = 0
+    assert_eq!(heron16(&r(1), &r(1), &r(4)), r(0));
+}
