@@ -7,10 +7,12 @@ mod points;
 
 pub use points::{points_details, points_tolerance};
 
+mod resolution;
 mod result;
+pub use resolution::Resolution;
 pub use result::{
-    ClaimResult, Evidence, Power, PowerKind, Quantity, Real, Resolution, Role, Tolerance,
-    ToleranceSource, Value, Verdict,
+    ClaimResult, Evidence, Power, PowerKind, Quantity, Real, Role, Tolerance, ToleranceSource,
+    Value, Verdict,
 };
 
 use crate::cases::Case;
