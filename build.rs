@@ -15,17 +15,24 @@ fn main() {
     std::fs::write(Path::new(&out_dir).join("case_tests.rs"), tests).expect("OUT_DIR is writable");
 }
 
+/// The names of the files of `dir` ending in one of `endings`, in name order; the build
+/// script reruns when the folder changes.
+fn listed(dir: &Path, endings: &[&str]) -> Vec<String> {
+    println!("cargo:rerun-if-changed={}", dir.display());
+    let mut names: Vec<String> = std::fs::read_dir(dir)
+        .expect("the case folders are part of the crate")
+        .filter_map(|e| e.ok())
+        .map(|e| e.file_name().to_string_lossy().into_owned())
+        .filter(|n| endings.iter().any(|e| n.ends_with(e)))
+        .collect();
+    names.sort();
+    names
+}
+
 /// `EMBEDDED_CASES`: every file of `paper_cases/`, its name and its text.
 fn embed_cases(root: &Path, out_dir: &Path) {
     let dir = root.join("paper_cases");
-    println!("cargo:rerun-if-changed={}", dir.display());
-    let mut names: Vec<String> = std::fs::read_dir(&dir)
-        .expect("paper_cases/ is part of the crate")
-        .filter_map(|e| e.ok())
-        .map(|e| e.file_name().to_string_lossy().into_owned())
-        .filter(|n| n.ends_with(".yaml") || n.ends_with(".yml") || n.ends_with(".md"))
-        .collect();
-    names.sort();
+    let names = listed(&dir, &[".yaml", ".yml", ".md"]);
     let mut out = String::from("/// Every file of `paper_cases/`: its name and its text.\n");
     out.push_str("pub(crate) static EMBEDDED_CASES: &[(&str, &str)] = &[\n");
     for n in &names {
@@ -42,18 +49,10 @@ fn embed_cases(root: &Path, out_dir: &Path) {
     std::fs::write(out_dir.join("embedded_cases.rs"), out).expect("OUT_DIR is writable");
 }
 
-/// A module `module` of tests, one per `*.yaml` of `folder`, each calling the function of the
-/// same name with the file's path relative to the crate (as the errors name it).
+/// A module `module` of tests, one per `*.yaml` of `folder`, each passing the file's path
+/// relative to the crate (as the errors name it) to the function of the same name.
 fn case_tests(root: &Path, folder: &str, module: &str) -> String {
-    let dir = root.join(folder);
-    println!("cargo:rerun-if-changed={}", dir.display());
-    let mut names: Vec<String> = std::fs::read_dir(&dir)
-        .expect("the case folders are part of the crate")
-        .filter_map(|e| e.ok())
-        .map(|e| e.file_name().to_string_lossy().into_owned())
-        .filter(|n| n.ends_with(".yaml"))
-        .collect();
-    names.sort();
+    let names = listed(&root.join(folder), &[".yaml"]);
     let mut out = format!("/// One test per file of `{folder}/`.\nmod {module} {{\n");
     for n in &names {
         let stem = n.trim_end_matches(".yaml");
@@ -69,7 +68,7 @@ fn case_tests(root: &Path, folder: &str, module: &str) -> String {
             .collect();
         writeln!(
             out,
-            "    #[test]\n    fn {ident}() {{\n        super::{module}(\"{folder}/{n}\");\n    }}"
+            "    #[test]\n    fn {ident}() {{\n        super::passes(\"{folder}/{n}\", super::{module});\n    }}"
         )
         .expect("writing to a String");
     }

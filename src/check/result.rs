@@ -506,12 +506,9 @@ impl Power {
         let within = printed - lo <= allowed * (1.0 + f64::EPSILON)
             && hi - printed <= allowed * (1.0 + f64::EPSILON);
         let resolution = Resolution::of(lo, hi, printed, allowed);
-        let weak = !(lo.is_finite() && hi.is_finite())
-            || match resolution {
-                Some(r) => r.digits == 0,
-                // a printed 0 has no digits to resolve: its half unit decides
-                None => !within,
-            };
+        // no resolution: an unbounded interval (never within), or a printed 0, which has no
+        // digits to resolve, so its half unit decides
+        let weak = resolution.map_or(!within, |r| r.digits == 0);
         Power {
             kind: PowerKind::Interval,
             detail: detail.into(),

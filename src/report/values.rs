@@ -123,7 +123,7 @@ pub fn power_phrase(p: &Power) -> String {
         (PowerKind::None, _) => "nothing it would have rejected".to_string(),
     };
     let head = match p.resolution {
-        Some(r) if r.digits < r.printed => {
+        Some(r) if p.coarser_than_printed() => {
             format!("{head}, {} of {} printed digits", r.digits, r.printed)
         }
         _ => head,

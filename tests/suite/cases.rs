@@ -28,21 +28,14 @@ fn snapshot_settings() -> insta::Settings {
     s
 }
 
-/// The test of the case file `path`.
-fn paper_case(path: &str) {
-    if let Err(e) = check_paper_case(Path::new(path)) {
+/// One generated test: `test` of the case file `path`, its failure a panic naming the file.
+fn passes(path: &str, test: fn(&Path) -> TestResult) {
+    if let Err(e) = test(Path::new(path)) {
         panic!("{path}: {e}");
     }
 }
 
-/// The test of the malformed case file `path`.
-fn bad_case(path: &str) {
-    if let Err(e) = check_bad_case(Path::new(path)) {
-        panic!("{path}: {e}");
-    }
-}
-
-fn check_paper_case(path: &Path) -> TestResult {
+fn paper_case(path: &Path) -> TestResult {
     let case = cases::load_case::<orthocheck::claims::Check>(path)?;
     // one run of the whole paper serves every case (the restatements need all the others)
     let results: Vec<&check::ClaimResult> = common::report()?
@@ -70,7 +63,7 @@ fn check_paper_case(path: &Path) -> TestResult {
     Ok(())
 }
 
-fn check_bad_case(path: &Path) -> TestResult {
+fn bad_case(path: &Path) -> TestResult {
     let text = std::fs::read_to_string(path)?;
     let expected = text
         .lines()

@@ -174,7 +174,7 @@ fn body_measures<'b>(
     squares: &[crate::cases::Printed],
 ) -> crate::check::ClaimBuilder<'b> {
     use crate::derivations::p4f3::{cayley_menger, edge_index, heron16};
-    use num_traits::ToPrimitive as _;
+    use num_traits::{Signed as _, ToPrimitive as _};
     let Ok(s) = <[_; 6]>::try_from(squares.iter().map(|p| p.value.clone()).collect::<Vec<_>>())
     else {
         return r;
@@ -185,8 +185,9 @@ fn body_measures<'b>(
         "Cayley–Menger determinant of the printed squares (288 V²)",
         cm_f,
     );
-    // a negative determinant: no tetrahedron has these distances, so no volume to state
-    if cm_f >= 0.0 {
+    // a negative determinant (decided exactly): no tetrahedron has these distances, so no
+    // volume to state; likewise a negative 16 A² for a face
+    if !cm.is_negative() {
         r = r.detail("volume of the tetrahedron", (cm_f / 288.0).sqrt());
     }
     for (name, [i, j, k]) in [
@@ -200,9 +201,9 @@ fn body_measures<'b>(
             &s[edge_index(j, k)],
             &s[edge_index(k, i)],
         );
-        let a16 = a16.to_f64().unwrap_or(f64::NAN);
-        if a16 >= 0.0 {
-            r = r.detail(&format!("area of face {name}"), (a16 / 16.0).sqrt());
+        if !a16.is_negative() {
+            let area = (a16.to_f64().unwrap_or(f64::NAN) / 16.0).sqrt();
+            r = r.detail(&format!("area of face {name}"), area);
         }
     }
     r

@@ -11,19 +11,14 @@ use orthocheck_core::derivations::{p3f3, p3f4, p4f3};
 use orthocheck_core::model::{Body, Motion, Scene, Tracks};
 use proptest::prelude::*;
 
+use crate::truth;
+
 /// Cases per property: `PROPTEST_CASES` when set, else `default`.
 fn cases(default: u32) -> u32 {
     std::env::var("PROPTEST_CASES")
         .ok()
         .and_then(|v| v.parse().ok())
         .unwrap_or(default)
-}
-
-fn truth(scene: &Scene) -> Vec<f64> {
-    orthocheck_core::derivations::solver::edges(scene.body.points.len())
-        .iter()
-        .map(|&(i, j)| scene.body.squared_distance(i, j))
-        .collect()
 }
 
 /// The largest absolute error of a solution against the truth.

@@ -8,12 +8,7 @@ use orthocheck_core::derivations::solver::edges;
 use orthocheck_core::derivations::solver::{Degenerate, SquaredLengths};
 use orthocheck_core::model::{Body, Motion, Scene};
 
-fn truth(scene: &Scene) -> Vec<f64> {
-    edges(scene.body.points.len())
-        .iter()
-        .map(|&(i, j)| scene.body.squared_distance(i, j))
-        .collect()
-}
+use crate::truth;
 
 fn max_rel(a: &[f64], b: &[f64]) -> f64 {
     a.iter()
