@@ -4,8 +4,12 @@
 //! `study`; here the verdicts (rules in docs/verdicts.md).
 
 use crate::cases::Printed;
+use crate::check::ClaimBuilder;
 use crate::check::{ClaimResult, Power, ResultBuilder, Tolerance, Value, Verdict};
-use crate::claims::solution_count::study::{self as solution_count, P3f3Count, P4f3Count};
+use crate::claims::solution_count::study::{
+    self as solution_count, LinesFirst, P3f3Count, P4f3Count,
+};
+use crate::claims::solution_count::LiteratureCount;
 use crate::claims::solution_count::SolutionCountCase;
 use crate::error::Result;
 
@@ -44,7 +48,8 @@ pub(super) fn check(b: &ResultBuilder, case: &SolutionCountCase) -> Result<Vec<C
     let three = solution_count::p3f3_count(case.instances, case.seed);
     let four = solution_count::p4f3_count(case.instances, case.seed);
     let mut out = vec![three_points(b, case, &three), four_points(b, case, &four)];
-    out.extend(literature(b, case, &three, &four));
+    let lines = solution_count::lines_first_count(case.instances, case.seed);
+    out.extend(literature(b, case, (&three, &four), &lines));
     Ok(out)
 }
 
@@ -137,21 +142,12 @@ fn four_points(b: &ResultBuilder, case: &SolutionCountCase, c: &P4f3Count) -> Cl
 fn literature(
     b: &ResultBuilder,
     case: &SolutionCountCase,
-    three: &P3f3Count,
-    four: &P4f3Count,
+    (three, four): (&P3f3Count, &P4f3Count),
+    lines: &[LinesFirst],
 ) -> Vec<ClaimResult> {
     let lit = &case.literature;
     let fibre4 = common(four.instances.iter().map(|i| i.sm_complex));
     let planar4 = common(four.planar.iter().map(|i| i.sm_patterns));
-    let fibre3 = common(three.instances.iter().map(|i| i.sm_complex));
-    let edges3 = common(three.instances.iter().map(|i| i.edge_complex));
-    let per_edge3 = common(
-        three
-            .instances
-            .iter()
-            .map(|i| i.sm_complex / i.edge_complex.max(1)),
-    );
-    let printed3 = whole(&lit.three_points);
     let printed4 = whole(&lit.four_points);
     let base = |suffix: &str| {
         b.claim(&lit.claim)
@@ -170,19 +166,64 @@ fn literature(
         .method("the four-point count of solution-count/p4f3: one edge solution × the depth-sign patterns realised by proper rotations")
         .cell("planar bodies", "depth-sign patterns realised", planar4.unwrap_or(0))
         .verdict(ratio_verdict(printed4, fibre4));
-    let three_r = base("three-points")
-        .printed("ratio for 3 cameras, 3 points", Value::printed(&lit.three_points))
-        .computed("structure-and-motion solutions (same convention as the four-point ratio)", fibre3.unwrap_or(0))
-        .computed("= edge-length solutions", edges3.unwrap_or(0))
-        .computed("× depth-sign patterns per edge solution (one per frame)", per_edge3.unwrap_or(0))
-        .computed("up to the global reflection", common(three.instances.iter().map(|i| i.sm_up_to_reflection)).unwrap_or(0))
-        .computed_cell("hypothesis", "preimages, the reflection counted (the four-point ratio's convention)", fibre3.unwrap_or(0))
-        .computed_cell("hypothesis", "preimages up to the global reflection", common(three.instances.iter().map(|i| i.sm_up_to_reflection)).unwrap_or(0))
-        .power(Power::exact_value("exact integer comparison; the four-point ratio, counted the same way, reproduces; missing: the publication's definition of what 64 counts (only its abstract was read); a reading not computed here: the lines-first construction's branches, two intersection lines per camera pair with two directions each, over three pairs"))
-        .method("the three-point count of solution-count/p3f3, in the convention that reproduces the four-point ratio: points and proper camera frames modulo proper rigid motions, the reflection counted")
-        .detail("printed ÷ computed", Value::exact(num_rational::Ratio::new(printed3, fibre3.unwrap_or(1).max(1))))
-        .verdict(ratio_verdict(printed3, fibre3));
+    let three_r = three_points_ratio(base("three-points"), lit, three, lines);
     vec![three_r, four_r]
+}
+
+/// Whether the lines-first construction checks out at every instance: its real choices'
+/// edges solve the paper's system, the scene's own lines are among the choices, and each real
+/// choice is a mirror pair of the reconstructions the Sturm count finds.
+fn lines_verified(three: &P3f3Count, lines: &[LinesFirst]) -> bool {
+    lines.len() == three.instances.len()
+        && lines.iter().zip(&three.instances).all(|(l, i)| {
+            l.seed == i.seed
+                && l.edges_solve
+                && l.truth_among
+                && 2 * l.real_choices == i.sm_real
+                && l.per_root.iter().filter(|&&n| n > 0).count() == i.edge_feasible
+        })
+}
+
+/// Knill and Ramirez-Herran's 64 against the branches of the lines-first construction,
+/// beside the reconstructions they come to.
+fn three_points_ratio(
+    c: ClaimBuilder,
+    lit: &LiteratureCount,
+    three: &P3f3Count,
+    lines: &[LinesFirst],
+) -> ClaimResult {
+    let branches = common(lines.iter().map(|l| l.branches));
+    let verified = lines_verified(three, lines);
+    let both = three
+        .instances
+        .iter()
+        .filter(|i| i.edge_feasible == 2)
+        .count();
+    let per_line = |f: fn(&LinesFirst) -> usize| distinct(&lines.iter().map(f).collect::<Vec<_>>());
+    let per_root = common(
+        lines
+            .iter()
+            .flat_map(|l| l.per_root.iter().copied().filter(|&n| n > 0)),
+    );
+    let verdict = match ratio_verdict(whole(&lit.three_points), branches) {
+        Verdict::Reproduced if !verified => Verdict::Inconclusive,
+        v => v,
+    };
+    c.printed("ratio for 3 cameras, 3 points", Value::printed(&lit.three_points))
+        .computed("lines-first branches (a signed direction of each camera pair's intersection line)", branches.unwrap_or(0))
+        .computed("real lines per camera pair", distinct(&lines.iter().flat_map(|l| l.lines.iter().map(|n| n.unwrap_or(0))).collect::<Vec<_>>()))
+        .computed("choices of one line per pair", per_line(|l| l.choices))
+        .computed("of them a real body (Gram matrix positive definite), up to the reflection", per_line(|l| l.real_choices))
+        .computed("choices per feasible edge solution", per_root.unwrap_or(0))
+        .computed("real reconstructions, the reflection counted (the Sturm count of solution-count/p3f3)", distinct(&three.instances.iter().map(|i| i.sm_real).collect::<Vec<_>>()))
+        .computed("instances with both edge solutions feasible (16 reconstructions, 4 branches each)", Value::count_of(both, three.instances.len()))
+        .computed("complex reconstructions, the reflection counted (the four-point ratio's convention)", common(three.instances.iter().map(|i| i.sm_complex)).unwrap_or(0))
+        .detail("every real choice's squared edges solve the paper's system exactly", Value::flag(lines.iter().all(|l| l.edges_solve)))
+        .detail("the scene's own lines among the choices", Value::count_of(lines.iter().filter(|l| l.truth_among).count(), lines.len()))
+        .detail("2 × real choices = real reconstructions at every instance", Value::flag(verified))
+        .power(Power::exact_value("exact integer comparison of the branch count: it rejects 16 (the complex reconstructions, the count that reproduces the four-point ratio), 8 (the branches without the directions' signs) and every other number"))
+        .method("Ullman's lines-first construction at the seeded rational scenes of solution-count/p3f3: per camera pair, the real null lines of vᵀ(NᵀN − I)v on the image circle (its discriminant exact over ℚ), two signed directions each; per choice of one line per pair, the Gram matrix G of the three lines and each squared edge sᵀG⁻¹s, exact in ℚ(√Δ₁₂, √Δ₁₃, √Δ₂₃). Each real choice is one reconstruction up to the reflection, and its 2³ sign patterns are the branches that reach its mirror pair")
+        .verdict(verdict)
 }
 
 #[cfg(test)]

@@ -20,7 +20,9 @@ use rand::Rng;
 use crate::algebra::{Poly, UPoly};
 use crate::derivations::p3f3::{exact_elimination, exact_linear_part};
 
+mod lines;
 mod p4;
+pub use lines::{lines_first_count, LinesFirst};
 pub use p4::{p4f3_count, P4f3Count, P4f3Instance};
 
 /// A scene in exact rational coordinates: points, proper rotations, orthographic images.

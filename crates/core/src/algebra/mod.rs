@@ -7,6 +7,7 @@ pub mod interval;
 mod lanczos;
 pub mod modp;
 pub mod mpoly;
+mod multiquad;
 mod newton;
 mod parse;
 pub mod perm;
@@ -24,6 +25,7 @@ pub use float_roots::{
 pub use gram::gram;
 pub use interval::Interval;
 pub use lanczos::largest_eigenvalue;
+pub use multiquad::Multiquad;
 pub use newton::{min_norm_newton, min_norm_newton_step};
 pub use parse::parse_decimal;
 pub use perm::{permutations, permutations4};

@@ -4,6 +4,7 @@ mod float_roots;
 mod interval;
 mod modp;
 mod mpoly;
+mod multiquad;
 mod perm;
 mod poly;
 mod rank;
