@@ -239,3 +239,54 @@ fn the_body_of_section_4_keeps_its_volume_and_faces() {
         assert!(real(&format!("area of face {face}")) > 0.0);
     }
 }
+
+/// One defect, one erratum: a formula's expansion to the end is evidence of the formula's
+/// claim, never a claim of its own (the audit still lists it), and the §5.2 copy of the
+/// Appendix's constant symbols is not a second erratum.
+#[test]
+fn every_defect_is_one_erratum() {
+    let report = common::report().expect("the paper runs");
+    let twins: Vec<&str> = report
+        .claims
+        .iter()
+        .map(|c| c.id.as_str())
+        .filter(|id| id.ends_with("/expanded"))
+        .collect();
+    assert!(
+        twins.is_empty(),
+        "expanded twins counted as claims: {twins:?}"
+    );
+    let errata: Vec<&str> = report
+        .claims
+        .iter()
+        .filter(|c| c.verdict == Verdict::Erratum)
+        .map(|c| c.id.as_str())
+        .collect();
+    let symbols = errata
+        .iter()
+        .filter(|id| id.ends_with("/constant-symbols"))
+        .count();
+    assert_eq!(symbols, 1, "{errata:?}");
+    // the two levels still agree for every formula erratum
+    for id in errata
+        .iter()
+        .filter(|id| id.starts_with("p3f3-differences/"))
+    {
+        let c = report.claims.iter().find(|c| c.id == *id).unwrap();
+        let cell = c
+            .evidence
+            .details
+            .iter()
+            .chain(&c.computed)
+            .find(|q| {
+                matches!(&q.role, orthocheck::check::Role::Cell { model, statistic }
+                    if model == "every macro expanded" && statistic == "verdict")
+            })
+            .unwrap_or_else(|| panic!("{id} lacks its expanded check"));
+        assert_eq!(
+            cell.value,
+            orthocheck::check::Value::label("erratum"),
+            "{id}"
+        );
+    }
+}

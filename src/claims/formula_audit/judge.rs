@@ -13,7 +13,8 @@ use crate::check::{
 };
 use crate::claims::audit::Shown;
 use crate::claims::formula_audit::study::{
-    arithmetic, computed, expanded, formulas, ArithmeticFinding, Form, FormulaFinding,
+    arithmetic, computed, expanded, formulas, ArithmeticFinding, ExpandedFinding, Form,
+    FormulaFinding,
 };
 use crate::claims::formula_audit::{ArithmeticItem, FormulaAuditCase, FormulaItem, TextItem};
 use crate::derivations::formulas::NAMES;
@@ -67,10 +68,26 @@ fn formula_power(f: &FormulaFinding) -> Power {
     )
 }
 
-fn formula_result(b: &ResultBuilder, f: &FormulaItem, x: &FormulaFinding) -> (ClaimResult, Shown) {
+/// One verdict from the two levels of a formula's check: where they differ, neither decides.
+fn both_levels(macro_level: Verdict, expanded: Verdict) -> Verdict {
+    if macro_level == expanded {
+        macro_level
+    } else {
+        Verdict::Inconclusive
+    }
+}
+
+/// A formula's claim: the macro-level check, with its expansion to the end (the `/expanded`
+/// audit item) as evidence, so that one defect is one erratum.
+fn formula_result(
+    b: &ResultBuilder,
+    f: &FormulaItem,
+    x: &FormulaFinding,
+    e: &ExpandedFinding,
+) -> (ClaimResult, Shown) {
     let what = NAMES.iter().find(|n| n.0 == f.derived).map_or("", |n| n.1);
-    let verdict = formula_verdict(x);
-    let mut r = b.claim(&f.claim).suffix(&f.id);
+    let verdict = both_levels(formula_verdict(x), expanded_verdict(e));
+    let mut r = expanded_evidence(b.claim(&f.claim).suffix(&f.id), e);
     if let Some(p) = &f.printed {
         r = r.printed("formula", Value::formula(p.clone()));
     }
@@ -236,21 +253,25 @@ fn text_result(b: &ResultBuilder, t: &TextItem) -> (ClaimResult, Shown) {
     (r.verdict(Verdict::Erratum), shown)
 }
 
-/// Every item of the audit, judged, with what its audit line shows.
-pub(super) fn judged(
+/// Every item of the audit, judged, with what its audit line shows: with `twins`, each
+/// formula's `/expanded` item after it (the audit lists both levels; as claims, the expansion
+/// is evidence of its formula).
+fn items(
     b: &ResultBuilder,
     case: &FormulaAuditCase,
+    twins: bool,
 ) -> Result<Vec<(ClaimResult, Shown)>> {
     let mut out = Vec::new();
-    // each formula beside its expansion to the end
     for ((f, x), e) in case
         .formulas
         .iter()
         .zip(formulas(case)?)
         .zip(expanded(case)?)
     {
-        out.push(formula_result(b, f, &x));
-        out.push(expanded_result(b, f, &e));
+        out.push(formula_result(b, f, &x, &e));
+        if twins {
+            out.push(expanded_result(b, f, &e));
+        }
     }
     out.extend(case.arithmetic.iter().map(|a| arithmetic_result(b, a)));
     out.extend(
@@ -266,15 +287,23 @@ pub(super) fn judged(
     Ok(out)
 }
 
-/// The audit as claim results (one per item).
+/// The items `orthocheck audit` lists: both levels of every formula.
+pub(super) fn judged(
+    b: &ResultBuilder,
+    case: &FormulaAuditCase,
+) -> Result<Vec<(ClaimResult, Shown)>> {
+    items(b, case, true)
+}
+
+/// The audit as claim results: one per item, a formula's expansion in its evidence.
 pub(super) fn check(b: &ResultBuilder, case: &FormulaAuditCase) -> Result<Vec<ClaimResult>> {
-    Ok(judged(b, case)?.into_iter().map(|(r, _)| r).collect())
+    Ok(items(b, case, false)?.into_iter().map(|(r, _)| r).collect())
 }
 
 mod computed;
 mod expanded;
 use computed::computed_result;
-use expanded::expanded_result;
+use expanded::{expanded_evidence, expanded_result, expanded_verdict};
 
 #[cfg(test)]
 mod tests {
@@ -284,6 +313,15 @@ mod tests {
     use crate::claims::formula_audit::study::ComputedFinding;
     use crate::claims::formula_audit::ComputedTest;
     use crate::studies::points::PointCheck;
+
+    #[test]
+    fn the_two_levels_of_a_formula_decide_only_together() {
+        let (iv, e) = (Verdict::IdentityVerified, Verdict::Erratum);
+        assert_eq!(both_levels(iv, iv), iv);
+        assert_eq!(both_levels(e, e), e);
+        assert_eq!(both_levels(iv, e), Verdict::Inconclusive);
+        assert_eq!(both_levels(e, Verdict::Contradicted), Verdict::Inconclusive);
+    }
 
     fn points(agreeing: usize) -> PointCheck {
         PointCheck {

@@ -50,6 +50,31 @@ fn screen_details<'b>(r: ClaimBuilder<'b>, who: &str, s: &Screened) -> ClaimBuil
     .computed_cell(who, "exactly equal", s.ratio.is_some())
 }
 
+/// The expansion as evidence of the macro-level item: its verdict and checks, one row of
+/// cells.
+pub(super) fn expanded_evidence<'b>(r: ClaimBuilder<'b>, x: &ExpandedFinding) -> ClaimBuilder<'b> {
+    const WHO: &str = "every macro expanded";
+    let mut r = r.computed_cell(WHO, "verdict", Value::label(expanded_verdict(x).name()));
+    let accepted = match x.accepted {
+        Some(Form::Printed) => x.printed.as_ref(),
+        Some(Form::Corrected) => x.corrected.as_ref(),
+        None => None,
+    };
+    if let Some(s) = accepted {
+        r = r
+            .computed_cell(
+                WHO,
+                "points agreeing modulo p",
+                Value::count_of(s.screen.agreeing, s.screen.points),
+            )
+            .computed_cell(WHO, "exactly equal", s.ratio.is_some());
+    }
+    if let Some((_, m)) = &x.mutant {
+        r = r.computed_cell(WHO, "mutant rejected", !m.holds());
+    }
+    r
+}
+
 /// The `/expanded` item of formula `f`.
 pub(super) fn expanded_result(
     b: &ResultBuilder,
