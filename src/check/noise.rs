@@ -125,6 +125,17 @@ pub(crate) fn any_model(ds: impl IntoIterator<Item = Decision>) -> Decision {
     }
 }
 
+/// A sentence that leaves its reading open (squares or lengths, the largest or the mean
+/// error over the edges) holds when it holds under every reading, fails when it fails under
+/// every one, and is too close to call when the readings disagree.
+pub(crate) fn every_reading(ds: impl IntoIterator<Item = Decision>) -> Decision {
+    let ds: Vec<Decision> = ds.into_iter().collect();
+    match ds.first() {
+        Some(&d) if d != Decision::TooClose && ds.iter().all(|&x| x == d) => d,
+        _ => Decision::TooClose,
+    }
+}
+
 /// Both parts of a claim must hold; either failing fails it.
 pub(crate) fn both(a: Decision, b: Decision) -> Decision {
     match (a, b) {
@@ -341,6 +352,16 @@ mod tests {
         assert_eq!(any_model([Fails, TooClose]), TooClose);
         assert_eq!(any_model([Fails, Fails]), Fails);
         assert_eq!(any_model([]), TooClose);
+    }
+
+    #[test]
+    fn every_reading_must_agree() {
+        assert_eq!(every_reading([Holds, Holds, Holds, Holds]), Holds);
+        assert_eq!(every_reading([Fails, Fails]), Fails);
+        assert_eq!(every_reading([Holds, Fails, Holds, Holds]), TooClose);
+        assert_eq!(every_reading([Holds, TooClose]), TooClose);
+        assert_eq!(every_reading([TooClose, TooClose]), TooClose);
+        assert_eq!(every_reading([]), TooClose);
         assert_eq!(both(Holds, Holds), Holds);
         assert_eq!(both(Holds, Fails), Fails);
         assert_eq!(both(TooClose, Fails), Fails);

@@ -290,3 +290,40 @@ fn every_defect_is_one_erratum() {
         );
     }
 }
+
+/// One reading rule for the noise sentences: a sentence that leaves its reading open decides
+/// only where every reading agrees (§3's "average performance within 20 %" fails only as the
+/// largest error in squares), and one that names its reading is judged in it alone (§4's
+/// "errors of well above 20 %", in lengths).
+#[test]
+fn noise_claims_follow_one_reading_rule() {
+    use orthocheck::check::{Role, Value};
+    let report = common::report().expect("the paper runs");
+    let decisions = |id: &str| -> (Verdict, Vec<String>) {
+        let c = report
+            .claims
+            .iter()
+            .find(|c| c.id == id)
+            .unwrap_or_else(|| panic!("{id} is a claim of the report"));
+        let ds = c
+            .computed
+            .iter()
+            .filter(|q| matches!(&q.role, Role::Cell { statistic, .. } if statistic == "decision"))
+            .map(|q| match &q.value {
+                Value::Label { text } => text.clone(),
+                v => panic!("{id}: a decision is a label, not {v:?}"),
+            })
+            .collect();
+        (c.verdict, ds)
+    };
+    let (v, ds) = decisions("ex3-noise/eps-0.1");
+    assert_eq!(v, Verdict::Inconclusive);
+    assert_eq!(ds, ["fails", "holds", "holds", "holds"]);
+    let (v, ds) = decisions("ex4-noise-1");
+    assert_eq!(v, Verdict::StatisticalFails);
+    assert_eq!(ds.iter().filter(|d| *d == "fails").count(), 1, "{ds:?}");
+    assert_eq!(ds.iter().filter(|d| d.starts_with("not read")).count(), 3);
+    let (v, ds) = decisions("ex2-noise-0.1");
+    assert_eq!(v, Verdict::StatisticalHolds);
+    assert!(ds.iter().all(|d| d == "holds"), "{ds:?}");
+}

@@ -3,16 +3,15 @@
 
 use super::run_study;
 use crate::check::noise::{
-    decide, judge_bound, margin, metric_phrase, power, Claim, Decision, Facts, Judged, TYPICAL_BAND,
+    decide, every_reading, judge_bound, margin, metric_phrase, power, Claim, Decision, Facts,
+    Judged, TYPICAL_BAND,
 };
 use crate::check::Role;
 use crate::check::{
     ClaimResult, Evidence, Power, ResultBuilder, Tolerance, ToleranceSource, Value, Verdict,
 };
 use crate::claims::noise_study::NoiseStudyCase;
-use crate::claims::shared::{
-    claim_of, metric_of, Direction, NoiseLevel, OverEdges, Quantity as Symbols,
-};
+use crate::claims::shared::{claim_of, readings, Direction, NoiseLevel, Quantity as Symbols};
 use crate::derivations::noise::{LevelResult, Study, METRICS, QUANTILES};
 use crate::derivations::solver::default_edge_names;
 use crate::error::Result;
@@ -180,22 +179,28 @@ impl Context<'_> {
             out.push(self.symbols_result(b, lv, suffix(Some("symbols")), dist, read_as));
         }
         let run = run_errors(&values, &half, dist.are_squares(), self.truth);
-        let (quantity, edges) = match &lv.statement {
-            Some(st) => (st.quantity.unwrap_or(read_as), st.over_edges),
-            None => (read_as, OverEdges::Max),
+        // every reading the sentence leaves open decides; the first is the one shown
+        let metrics = readings(lv.statement.as_ref(), read_as);
+        let at = |metric: usize| {
+            let facts = Facts {
+                metric,
+                run: run.as_ref(),
+                dists: res,
+            };
+            Judged::new(claim_of(lv), facts)
         };
-        let facts = Facts {
-            metric: metric_of(quantity, edges),
-            run: run.as_ref(),
-            dists: res,
+        let all: Vec<Judged> = (0..METRICS.len()).map(at).collect();
+        let judged = at(metrics[0]);
+        let reading = Reading {
+            decision: every_reading(metrics.iter().map(|&m| all[m].decision)),
+            metrics: &metrics,
+            all: &all,
         };
-        let judged = Judged::new(claim_of(lv), facts);
-        let result = self.main_result(b, lv, suffix(None), read_as, &judged, neighbour);
+        let result = self.main_result(b, lv, suffix(None), read_as, &judged, &reading, neighbour);
         b.figure(figure::figure(
             &result,
             &self.setting,
-            lv,
-            &judged,
+            (lv, &judged, &reading),
             (self.trials, self.seed),
         ));
         out.push(result);
@@ -245,7 +250,9 @@ impl Context<'_> {
         .verdict(Verdict::Erratum)
     }
 
-    /// The level's claim, as [`Judged`] (decided by [`decide`]).
+    /// The level's claim: its details as [`Judged`] under the reading shown, its decision
+    /// from every reading the sentence leaves open.
+    #[allow(clippy::too_many_arguments)]
     fn main_result(
         &self,
         b: &ResultBuilder,
@@ -253,9 +260,10 @@ impl Context<'_> {
         suffix: Option<String>,
         read_as: Symbols,
         judged: &Judged,
+        reading: &Reading,
         neighbour: Option<&[LevelResult]>,
     ) -> ClaimResult {
-        let (claim, decision, f) = (judged.claim, judged.decision, &judged.facts);
+        let (claim, decision, f) = (judged.claim, reading.decision, &judged.facts);
         let mut r = b.claim(&lv.claim).printed("ε", &lv.level);
         if let Some(s) = &suffix {
             r = r.suffix(s);
@@ -294,7 +302,8 @@ impl Context<'_> {
                 );
             }
         }
-        let r = r
+        let r = reading
+            .cells(r, f.run)
             .tolerance(self.tolerance(claim, f))
             .power(power(claim, f, neighbour))
             .evidence(self.evidence(lv, claim, f, decision, neighbour));
@@ -329,6 +338,52 @@ impl Context<'_> {
             },
             how,
         )
+    }
+}
+
+/// A level's claim under each reading of its sentence.
+pub(super) struct Reading<'a> {
+    /// The decision from every reading the sentence leaves open ([`every_reading`]).
+    pub decision: Decision,
+    /// The metrics of those readings.
+    pub metrics: &'a [usize],
+    /// The claim judged under every metric, in the order of [`METRICS`].
+    pub all: &'a [Judged<'a>],
+}
+
+impl Reading<'_> {
+    /// One row of cells per reading: the printed run's error, the median trial's error where
+    /// the claim is about the trials, and the reading's decision (or that the sentence names
+    /// another reading).
+    fn cells<'b>(
+        &self,
+        mut r: crate::check::ClaimBuilder<'b>,
+        run: Option<&crate::studies::noise::RunErrors>,
+    ) -> crate::check::ClaimBuilder<'b> {
+        for (m, j) in self.all.iter().enumerate() {
+            let phrase = metric_phrase(m);
+            if let Some(run) = run {
+                r = r.computed_cell(phrase, "printed run's error", run.metrics[m]);
+            }
+            if let Claim::Median(..) = j.claim {
+                for d in j.facts.dists {
+                    if let Some(q) = d.quantile(m, 0.5) {
+                        r = r.computed_cell(
+                            phrase,
+                            &format!("median trial's error, {}", d.model),
+                            q,
+                        );
+                    }
+                }
+            }
+            let decides = if self.metrics.contains(&m) {
+                j.decision.name()
+            } else {
+                "not read: the sentence names another"
+            };
+            r = r.computed_cell(phrase, "decision", decides);
+        }
+        r
     }
 }
 
@@ -377,15 +432,6 @@ impl Context<'_> {
                     "bound on the printed run",
                     judge_bound(run.ranges[m], bound, d).name(),
                 );
-                // the other readings, for comparison (they do not decide)
-                for (k, phrase) in METRICS.iter().enumerate() {
-                    ev = ev
-                        .with(&format!("printed run, {phrase}"), run.metrics[k])
-                        .with(
-                            &format!("printed run, {phrase}: bound holds"),
-                            judge_bound(run.ranges[k], bound, d) == Decision::Holds,
-                        );
-                }
             }
             if !matches!(claim, Claim::Median(..)) {
                 let band = decide(Claim::Typical, f);

@@ -47,21 +47,21 @@ pub struct Statement {
     pub direction: Direction,
     /// The bound as a fraction ("0.002" for 0.2 %).
     pub bound: Printed,
-    /// How the edges' errors combine: the worst edge (default) or their mean ("on average").
+    /// How the edges' errors combine, when the sentence names it: the worst edge or their
+    /// mean ("on average"); absent: both readings.
     #[serde(default)]
-    pub over_edges: OverEdges,
-    /// What the error is measured in when the paper names it ("errors for edge lengths");
-    /// absent: the quantity the printed values are.
+    pub over_edges: Option<OverEdges>,
+    /// What the error is measured in, when the sentence names it ("errors for edge
+    /// lengths"); absent: both squares and lengths.
     #[serde(default)]
     pub quantity: Option<Quantity>,
 }
 
 /// How a statement combines the errors of the edges.
-#[derive(Clone, Copy, Debug, Default, Deserialize, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Deserialize, PartialEq, Eq)]
 #[serde(rename_all = "snake_case")]
 pub enum OverEdges {
     /// The largest error over the edges.
-    #[default]
     Max,
     /// The mean error over the edges.
     Mean,
@@ -107,6 +107,26 @@ pub(crate) fn claim_of(lv: &NoiseLevel) -> Claim {
     }
 }
 
+/// The readings of a level's sentence, as metrics: what it names is fixed, what it leaves
+/// open takes both values. The first is the quantity the printed values are (`read_as`) and
+/// the largest error, where the sentence leaves them open: the reading the figure shows.
+pub(crate) fn readings(st: Option<&Statement>, read_as: Quantity) -> Vec<usize> {
+    let other = match read_as {
+        Quantity::Squares => Quantity::Lengths,
+        Quantity::Lengths => Quantity::Squares,
+    };
+    let quantities = st
+        .and_then(|s| s.quantity)
+        .map_or(vec![read_as, other], |q| vec![q]);
+    let edges = st
+        .and_then(|s| s.over_edges)
+        .map_or(vec![OverEdges::Max, OverEdges::Mean], |e| vec![e]);
+    quantities
+        .iter()
+        .flat_map(|&q| edges.iter().map(move |&e| metric_of(q, e)))
+        .collect()
+}
+
 /// The metric of a reading: the quantity (squares or lengths) and how the edges combine.
 pub(crate) fn metric_of(quantity: Quantity, edges: OverEdges) -> usize {
     let q = if quantity == Quantity::Lengths { 2 } else { 0 };
@@ -123,5 +143,25 @@ mod tests {
         assert_eq!(metric_of(Quantity::Squares, OverEdges::Mean), 1);
         assert_eq!(metric_of(Quantity::Lengths, OverEdges::Max), 2);
         assert_eq!(metric_of(Quantity::Lengths, OverEdges::Mean), 3);
+    }
+
+    #[test]
+    fn a_sentence_fixes_what_it_names_and_leaves_the_rest_open() {
+        use crate::check::noise::Direction;
+        let st = |quantity, over_edges| Statement {
+            about: StatementSubject::Example,
+            direction: Direction::Below,
+            bound: Printed::parse("0.2").unwrap(),
+            over_edges,
+            quantity,
+        };
+        // nothing named: the printed values' quantity first, both combinations of each
+        assert_eq!(readings(None, Quantity::Squares), vec![0, 1, 2, 3]);
+        assert_eq!(readings(None, Quantity::Lengths), vec![2, 3, 0, 1]);
+        // §4: "on average, errors for edge lengths": one reading
+        let named = st(Some(Quantity::Lengths), Some(OverEdges::Mean));
+        assert_eq!(readings(Some(&named), Quantity::Squares), vec![3]);
+        let lengths = st(Some(Quantity::Lengths), None);
+        assert_eq!(readings(Some(&lengths), Quantity::Squares), vec![2, 3]);
     }
 }

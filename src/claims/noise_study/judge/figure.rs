@@ -3,6 +3,7 @@
 //! drawn as vertical lines, the points where the judge reads each curve marked, and a caption
 //! that says in the judge's numbers why the level holds or fails.
 
+use super::Reading;
 use crate::check::figure::{ecdf, percent_text, Figure, Layer, Plot, Shape, Style};
 use crate::check::noise::{any_model, on_run, parts, Claim, Decision, Judged, Part, TYPICAL_BAND};
 use crate::check::ClaimResult;
@@ -28,8 +29,7 @@ const RUN: &str = "the paper's test run";
 pub(super) fn figure(
     result: &ClaimResult,
     setting: &str,
-    lv: &NoiseLevel,
-    j: &Judged,
+    (lv, j, reading): (&NoiseLevel, &Judged, &Reading),
     study: (usize, u64),
 ) -> Figure {
     let bound = bound_layer(lv, j.claim);
@@ -45,7 +45,7 @@ pub(super) fn figure(
             result.section,
             percent_text(&lv.level)
         ),
-        caption: caption(result, lv, j, study),
+        caption: caption(result, (lv, j, reading), study),
         panels,
     }
 }
@@ -177,7 +177,11 @@ fn read_points(j: &Judged) -> Vec<Layer> {
 }
 
 /// What the figure draws, then why the level holds or fails, then the failed trials.
-fn caption(result: &ClaimResult, lv: &NoiseLevel, j: &Judged, study: (usize, u64)) -> String {
+fn caption(
+    result: &ClaimResult,
+    (lv, j, reading): (&NoiseLevel, &Judged, &Reading),
+    study: (usize, u64),
+) -> String {
     let (trials, seed) = study;
     let (how, what) = metric_words(j.facts.metric);
     let also = if drawn_metrics(j.facts.metric).len() > 2 {
@@ -192,9 +196,10 @@ fn caption(result: &ClaimResult, lv: &NoiseLevel, j: &Judged, study: (usize, u64
     };
     let mut s = format!(
         "For each noise model, the fraction of its successful trials whose error is at most x: the largest relative error over the edges in squared lengths and in lengths{also}, over {trials} seeded trials per model (seed {seed}). The vertical lines are {lines}; in the panel marked judged, a marker on each curve is where the judge reads it. {}",
-        why(lv, j, sampled_digits(trials as u64))
+        why(lv, j, sampled_digits(trials as u64), reading.metrics.len() == 1)
     );
-    if result.verdict != j.decision.verdict() {
+    s.push_str(&other_readings(j, reading));
+    if result.verdict != reading.decision.verdict() {
         s.push_str(&format!(
             " Its verdict is nevertheless {}: the negative control could not have failed it.",
             result.verdict.name()
@@ -220,8 +225,48 @@ fn caption(result: &ClaimResult, lv: &NoiseLevel, j: &Judged, study: (usize, u64
     s
 }
 
-/// Why the level holds or fails, in the judge's numbers (`digits` significant digits).
-fn why(lv: &NoiseLevel, j: &Judged, digits: usize) -> String {
+/// The readings the sentence leaves open besides the one drawn, and what they decide
+/// together (empty when the sentence names its reading).
+fn other_readings(j: &Judged, reading: &Reading) -> String {
+    let Some((_, others)) = reading.metrics.split_first() else {
+        return String::new();
+    };
+    if others.is_empty() {
+        return String::new();
+    }
+    // a metric is (quantity, combination): 2·quantity + combination
+    let one_quantity = reading.metrics.iter().all(|m| m / 2 == j.facts.metric / 2);
+    let one_combination = reading.metrics.iter().all(|m| m % 2 == j.facts.metric % 2);
+    let open = match (one_quantity, one_combination) {
+        (true, _) => "how the edges' errors combine",
+        (_, true) => "whether it means squares or lengths",
+        _ => "whether it means squares or lengths, nor how the edges' errors combine",
+    };
+    let each: Vec<String> = others
+        .iter()
+        .map(|&m| {
+            let (how, what) = metric_words(m);
+            format!(
+                "{} as the {how} error in {what}",
+                decision_words(reading.all[m].decision)
+            )
+        })
+        .collect();
+    let end = match reading.decision {
+        Decision::TooClose if reading.all.iter().any(|x| x.decision != Decision::TooClose) => {
+            "the readings disagree, so the claim is too close to call".to_string()
+        }
+        d => format!("so the claim {} under every reading", decision_words(d)),
+    };
+    format!(
+        " The sentence does not say {open}: under the other readings it {}; {end}.",
+        join_and(&each)
+    )
+}
+
+/// Why the level holds or fails, in the judge's numbers (`digits` significant digits);
+/// `alone` when the sentence has this one reading.
+fn why(lv: &NoiseLevel, j: &Judged, digits: usize, alone: bool) -> String {
     let f = &j.facts;
     let m = f.metric;
     let (how, what) = metric_words(m);
@@ -234,7 +279,11 @@ fn why(lv: &NoiseLevel, j: &Judged, digits: usize) -> String {
         sig(PERCENT * TYPICAL_BAND.0),
         sig(PERCENT * TYPICAL_BAND.1)
     );
-    let verdict = decision_words(j.decision);
+    let verdict = if alone {
+        decision_words(j.decision).to_string()
+    } else {
+        format!("{} in this reading", decision_words(j.decision))
+    };
     match (j.claim, f.run, bound_words(lv)) {
         (Claim::Median(..), _, Some(said)) => {
             let medians: Vec<String> = f
