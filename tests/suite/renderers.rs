@@ -496,3 +496,48 @@ fn relabelling_the_evidence_changes_words_not_layout() {
     let kinds = |md: &str| md.lines().map(kind).collect::<Vec<_>>();
     assert_eq!(kinds(&mb), kinds(&ma));
 }
+
+/// The judges that read other claims (the restatements of the discussion and the
+/// conclusions) read their ids and verdicts, never their words: with every quantity, method
+/// and power statement of the earlier results renamed, each restatement keeps its verdict.
+#[test]
+fn restated_verdicts_are_stable_under_relabelling() {
+    let report = crate::common::report().expect("the paper runs");
+    let cases = crate::common::cases().expect("the cases load");
+    let restating: Vec<_> = cases.iter().filter(|c| c.check.kind().restates()).collect();
+    assert!(!restating.is_empty(), "the paper has restatements");
+    let restated_ids: std::collections::BTreeSet<&str> = restating
+        .iter()
+        .flat_map(|c| report.claims.iter().filter(move |r| r.case == c.id))
+        .map(|r| r.id.as_str())
+        .collect();
+    let mut earlier: Vec<_> = report
+        .claims
+        .iter()
+        .filter(|r| !restated_ids.contains(r.id.as_str()))
+        .cloned()
+        .collect();
+    let mut n = 0;
+    for c in &mut earlier {
+        for q in c
+            .printed
+            .iter_mut()
+            .chain(c.computed.iter_mut())
+            .chain(c.evidence.details.iter_mut())
+        {
+            n += 1;
+            q.name = format!("quantity {n}");
+        }
+        c.power.detail = format!("control {n}");
+        c.evidence.method = format!("method {n}");
+    }
+    let mut checked = 0;
+    for case in restating {
+        for r in orthocheck::claims::run_case_full(case, &earlier).unwrap().0 {
+            let before = report.claims.iter().find(|c| c.id == r.id).unwrap();
+            assert_eq!(r.verdict, before.verdict, "{}", r.id);
+            checked += 1;
+        }
+    }
+    assert_eq!(checked, restated_ids.len());
+}
