@@ -9,7 +9,7 @@ pub use points::{points_details, points_tolerance};
 
 mod resolution;
 mod result;
-pub use resolution::Resolution;
+pub use resolution::{excluded_by, Resolution};
 pub use result::{
     ClaimResult, Evidence, Power, PowerKind, Quantity, Real, Role, Tolerance, ToleranceSource,
     Value, Verdict,

@@ -22,6 +22,16 @@ pub struct Resolution {
     pub relative: Real,
 }
 
+/// The component of an alternative (the other root in place of a solution, say) that lies
+/// outside its accepted region: the first such, or `None` when every component is accepted,
+/// so that the check cannot tell the alternative from the printed value.
+pub fn excluded_by(regions: &[(f64, f64)], alternative: &[f64]) -> Option<usize> {
+    regions
+        .iter()
+        .zip(alternative)
+        .position(|(&(lo, hi), &v)| !(lo <= v && v <= hi))
+}
+
 impl Resolution {
     /// The resolution of `[lo, hi]` around `printed`, whose half unit is `half_unit`; `None`
     /// when an end is not finite or the printed value is 0 (it has no significant digit).
@@ -62,6 +72,17 @@ impl Resolution {
 mod tests {
     use super::*;
     use crate::check::Power;
+
+    #[test]
+    fn an_alternative_is_excluded_by_its_first_component_outside() {
+        let regions = [(2.63, 2.73), (8.29, 8.39), (15.7, 16.7)];
+        // the other root of §2's example in place of its second solution
+        assert_eq!(excluded_by(&regions, &[4.0, 9.0, 16.0]), Some(0));
+        assert_eq!(excluded_by(&regions, &[2.7, 9.0, 16.0]), Some(1));
+        // inside every region: not excluded
+        assert_eq!(excluded_by(&regions, &[2.7, 8.3, 16.0]), None);
+        assert_eq!(excluded_by(&regions, &[2.73, 8.29, 16.7]), None);
+    }
 
     #[test]
     fn resolution_counts_the_printed_digits_an_interval_keeps() {

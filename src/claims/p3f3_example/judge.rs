@@ -5,12 +5,15 @@
 use crate::algebra::Interval;
 use crate::cases::Printed;
 use crate::check::figure::{central_window, thin, Figure, Layer, Plot, Shape, Style};
-use crate::check::{ClaimResult, Power, ResultBuilder, Tolerance, ToleranceSource, Value, Verdict};
+use crate::check::{
+    excluded_by, ClaimResult, Power, ResultBuilder, Tolerance, ToleranceSource, Value, Verdict,
+};
 use crate::claims::p3f3_example::restricted as p3f3_restricted;
 use crate::claims::p3f3_example::study::{self as ex2, ExampleStudy};
 use crate::claims::p3f3_example::P3f3ExampleCase;
 use crate::derivations::solver::first_violation;
 use crate::error::{Error, Result};
+use crate::numfmt::sig;
 use crate::studies::rounding::{Acceptance, RoundingBox};
 
 /// The verdict on printed solutions: agreement at the printed coordinates themselves, else a
@@ -35,6 +38,54 @@ fn feasible_within(s: f64, longest: &Interval) -> Option<bool> {
         Some(false)
     } else {
         None
+    }
+}
+
+/// The nearest alternative of a pair of printed solutions: the other one in place of each.
+/// Per solution, the evidence row, and whether the accepted regions of its components
+/// exclude it (the verdict needs both excluded).
+pub(super) fn other_solution(
+    acc: &[[Acceptance; 3]],
+    targets: &[[f64; 3]],
+    half: &[[f64; 3]],
+) -> (Vec<(String, Value)>, bool) {
+    let mut rows = Vec::new();
+    let mut all = targets.len() == 2 && acc.len() == 2;
+    for k in 0..acc.len().min(targets.len()) {
+        let other = targets[1 - k.min(1)];
+        let regions: Vec<(f64, f64)> = (0..3)
+            .map(|e| acc[k][e].interval(targets[k][e], half[k][e]))
+            .collect();
+        let name = format!(
+            "nearest alternative: solution {} in place of solution {}",
+            2 - k.min(1),
+            k + 1
+        );
+        let text = match excluded_by(&regions, &other) {
+            Some(e) => format!(
+                "excluded: component {} accepts {}–{}, the alternative is {}",
+                e + 1,
+                sig(regions[e].0),
+                sig(regions[e].1),
+                sig(other[e])
+            ),
+            None => {
+                all = false;
+                "not excluded: every component's accepted region holds it".into()
+            }
+        };
+        rows.push((name, Value::label(text)));
+    }
+    (rows, all)
+}
+
+/// A positive verdict stands only when the check excludes the nearest alternative; one that
+/// accepts it could not tell the claim from its alternative.
+pub(super) fn alternative_verdict(v: Verdict, excluded: bool) -> Verdict {
+    if v.is_positive() && !excluded {
+        Verdict::Inconclusive
+    } else {
+        v
     }
 }
 
@@ -194,7 +245,14 @@ fn solutions_result(
             );
     }
     r = spread_details(r, case, s, targets, half);
-    r.verdict(solutions_verdict(direct, s.witness.is_some()))
+    let (rows, excluded) = other_solution(&s.acceptance, targets, half);
+    for (name, v) in rows {
+        r = r.computed(&name, v);
+    }
+    r.verdict(alternative_verdict(
+        solutions_verdict(direct, s.witness.is_some()),
+        excluded,
+    ))
 }
 
 /// The acceptance regions and the Monte Carlo spread, as evidence.
@@ -498,6 +556,30 @@ fn rounding_figure(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_other_solution_must_be_excluded() {
+        let a = |r: f64| Acceptance {
+            accepted: [1.0, 1.0],
+            rejected: [Some(r), Some(r)],
+        };
+        let targets = [[4.0, 9.0, 16.0], [2.6849, 8.33902, 16.2189]];
+        let half = [[0.5e-5, 0.5e-5, 0.5e-5], [0.5e-5, 0.5e-5, 0.5e-5]];
+        let narrow = [[a(3.0); 3], [a(3.0); 3]];
+        let (rows, excluded) = other_solution(&narrow, &targets, &half);
+        assert!(excluded && rows.len() == 2);
+        // regions wide enough (10⁶ half units, ±5) to hold the other solution everywhere
+        let wide = [[a(1e6); 3], [a(1e6); 3]];
+        let (rows, excluded) = other_solution(&wide, &targets, &half);
+        assert!(!excluded, "{rows:?}");
+        let v = Verdict::ReproducedWithinRounding;
+        assert_eq!(alternative_verdict(v, true), v);
+        assert_eq!(alternative_verdict(v, false), Verdict::Inconclusive);
+        assert_eq!(
+            alternative_verdict(Verdict::Contradicted, false),
+            Verdict::Contradicted
+        );
+    }
 
     #[test]
     fn solutions_verdict_prefers_direct_agreement() {

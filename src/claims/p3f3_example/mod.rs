@@ -3,7 +3,6 @@
 mod case;
 mod judge;
 pub mod restricted;
-pub mod restricted_study;
 pub mod study;
 
 pub use case::*;

@@ -1,25 +1,15 @@
 //! §2's example under rounding restricted to exact views of the printed body
 //! (`ex2-rounding-restricted`), and the discriminant of the paper's quadratic at the printed
-//! data (`ex2-discriminant`). Computation lives in `studies::ex2_restricted`.
+//! data (`ex2-discriminant`). Computation in `studies::exact_views`.
 
 use crate::check::{ClaimResult, Power, ResultBuilder, Tolerance, ToleranceSource, Value, Verdict};
-use crate::claims::p3f3_example::restricted_study::{restricted, Restricted, RestrictedDesign};
+use crate::studies::exact_views::{restricted, Restricted, RestrictedDesign};
 use crate::claims::p3f3_example::P3f3ExampleCase;
-use crate::studies::rounding::{inside, RoundingBox};
-
-/// Whether every printed component lies inside the range of its paired root.
-fn inside_ranges(targets: &[[f64; 3]], ranges: &[[(f64, f64); 3]]) -> bool {
-    !ranges.is_empty()
-        && targets.len() == ranges.len()
-        && targets
-            .iter()
-            .zip(ranges)
-            .all(|(t, r)| (0..3).all(|e| r[e].0 <= t[e] && t[e] <= r[e].1))
-}
+use crate::studies::rounding::{inside, Acceptance, RoundingBox};
 
 /// Two real roots at every sample (and at least one sample).
 fn always_two_real(r: &Restricted) -> bool {
-    r.samples > 0 && r.two_real == r.samples && r.discriminant_range.0 > 0.0
+    r.samples > 0 && r.two_real == r.samples && r.discriminant_spread.0 > 0.0
 }
 
 pub(super) fn results(
@@ -51,21 +41,14 @@ pub(super) fn results(
     out
 }
 
-fn range_values(r: &[[(f64, f64); 3]], k: usize) -> Vec<Value> {
-    r.get(k)
-        .map(|c| c.iter().map(|(lo, hi)| Value::interval(*lo, *hi)).collect())
-        .unwrap_or_default()
-}
-
-/// The weakest component: the widest restricted range against its half unit (solution,
+/// The component whose accepted region is widest against its half unit (solution,
 /// component).
-fn widest_component(range: &[[(f64, f64); 3]], half: &[[f64; 3]]) -> (usize, usize) {
+fn widest_component(acc: &[[Acceptance; 3]]) -> (usize, usize) {
     let mut widest = (0, 0, 0.0);
-    for (k, c) in range.iter().enumerate() {
-        for (e, (lo, hi)) in c.iter().enumerate() {
-            let w = (hi - lo) / half[k][e];
-            if w > widest.2 {
-                widest = (k, e, w);
+    for (k, c) in acc.iter().enumerate() {
+        for (e, a) in c.iter().enumerate() {
+            if a.outer() > widest.2 {
+                widest = (k, e, a.outer());
             }
         }
     }
@@ -79,18 +62,21 @@ fn restricted_result(
     targets: &[[f64; 3]],
     half: &[[f64; 3]],
 ) -> ClaimResult {
-    let within = inside_ranges(targets, &r.range);
     let witness = r.witness.as_ref().is_some_and(inside);
-    let (k, e) = widest_component(&r.range, half);
-    let (lo, hi) = r.range.get(k).map_or((0.0, 0.0), |c| c[e]);
+    let (k, e) = widest_component(&r.acceptance);
+    let (lo, hi) = r
+        .acceptance
+        .get(k)
+        .map_or((f64::NEG_INFINITY, f64::INFINITY), |a| {
+            a[e].interval(targets[k][e], half[k][e])
+        });
     let mut out = b
         .claim(claim)
         .printed("solutions", Value::reals(&targets.concat()))
-        .computed("printed solutions inside the restricted ranges", Value::flag(within))
         .computed("exact views reproduce both printed solutions within their half units", Value::flag(witness))
         .tolerance(Tolerance::bound(1.0, ToleranceSource::Propagated, "exact views of the printed body whose coordinates round to the figure (half a unit of each printed digit); each printed component within half a unit of its sixth significant digit"))
-        .power(Power::interval(lo, hi, targets[k][e], half[k][e], &format!("solution {} component {}: the printed values any exact view rounding to the figure produces (the sampled range, an inner bound of what the search accepts)", k + 1, e + 1)))
-        .method("per frame, views of the printed body (P at the origin) drawn with Q and R's first coordinate uniform in their rounding and R's second solved from rigidity, kept when inside its rounding; the paper's route at each; a minimum-norm search over the same views for one that reproduces every printed digit; the unrestricted box sampled beside it")
+        .power(Power::interval(lo, hi, targets[k][e], half[k][e], &format!("solution {} component {}: the same search for exact views, the target moved along the ladder of half units, fails first at this interval", k + 1, e + 1)))
+        .method("per frame, views of the printed body (P at the origin) drawn with Q and R's first coordinate uniform in their rounding and R's second solved from rigidity, kept when inside its rounding; the paper's route at each; a minimum-norm search over the rotations of the body for exact views that round to the figure and reproduce every printed digit, started at the sample nearest them; the unrestricted box sampled beside it")
         .detail("samples of three exact views", r.samples)
         .detail("samples with two real roots", Value::count_of(r.two_real, r.samples));
     for (f, (a, n)) in r.accepted.iter().enumerate() {
@@ -100,23 +86,30 @@ fn restricted_result(
             Value::count_of(*a, *n),
         );
     }
-    for k in 0..targets.len() {
-        for (e, v) in range_values(&r.range, k).into_iter().enumerate() {
+    for (k, acc) in r.acceptance.iter().enumerate() {
+        for (e, a) in acc.iter().enumerate() {
+            let (lo, hi) = a.interval(targets[k][e], half[k][e]);
             out = out.computed_cell(
                 &format!("solution {}, component {}", k + 1, e + 1),
-                "restricted range",
-                v,
+                "accepted region",
+                Value::interval(lo, hi),
             );
         }
-        for (e, v) in range_values(&r.unrestricted_range, k)
-            .into_iter()
-            .enumerate()
-        {
-            out = out.cell(
-                &format!("solution {}, component {}", k + 1, e + 1),
-                "unrestricted range",
-                v,
-            );
+    }
+    for (k, (sp, un)) in r.spread.iter().zip(&r.unrestricted_spread).enumerate() {
+        for e in 0..3 {
+            let row = format!("solution {}, component {}", k + 1, e + 1);
+            out = out
+                .cell(
+                    &row,
+                    "5 / 50 / 95 % over the exact views",
+                    Value::reals(&sp[e]),
+                )
+                .cell(
+                    &row,
+                    "5 / 50 / 95 % over the unrestricted box",
+                    Value::reals(&un[e]),
+                );
         }
     }
     let (n, of) = r.unrestricted_no_real;
@@ -138,11 +131,16 @@ fn restricted_result(
                 w.residual,
             );
     }
-    out.verdict(if within && witness {
+    let (rows, excluded) = super::judge::other_solution(&r.acceptance, targets, half);
+    for (name, v) in rows {
+        out = out.computed(&name, v);
+    }
+    let v = if witness {
         Verdict::ReproducedWithinRounding
     } else {
         Verdict::Contradicted
-    })
+    };
+    out.verdict(super::judge::alternative_verdict(v, excluded))
 }
 
 fn discriminant_result(
@@ -155,11 +153,12 @@ fn discriminant_result(
     let mut out = b
         .claim(claim)
         .printed("solutions", Value::label("two"))
-        .computed("two real roots at every exact view rounding to the figure", Value::flag(holds))
-        .computed("discriminant range over the exact views", Value::interval(r.discriminant_range.0, r.discriminant_range.1))
+        .computed("two real roots at every sampled exact view rounding to the figure", Value::flag(holds))
+        .computed("smallest discriminant over the sampled exact views", r.discriminant_spread.0)
+        .computed("discriminant over the sampled exact views: 5 / 50 / 95 %", Value::reals(&r.discriminant_spread.1))
         .tolerance(Tolerance::bound(0.0, ToleranceSource::Propagated, "Δ > 0 at every exact view of the printed body whose coordinates round to the figure"))
         .power(Power::mutant(n > 0, &format!("the same count over the unrestricted rounding box (projections no rigid body need produce) finds data with no real root: {n} of {of} samples")))
-        .method("β² − 4αγ of the paper's quadratic α c⁴ + β c² + γ (F₃ with a², b² from Cramer's rule); its change and the roots' over the figure's rounding to first order (Σₖ |∂/∂cₖ|·hₖ); its range over the exact views of the printed body");
+        .method("β² − 4αγ of the paper's quadratic α c⁴ + β c² + γ (F₃ with a², b² from Cramer's rule); its change and the roots' over the figure's rounding to first order (Σₖ |∂/∂cₖ|·hₖ); its distribution over seeded exact views of the printed body");
     if let Some(d) = &r.discriminant {
         out = out
             .computed("discriminant at the printed data", d.value)
@@ -193,11 +192,14 @@ mod tests {
     use super::*;
 
     #[test]
-    fn targets_must_lie_inside_every_range() {
-        let r = [[(1.0, 2.0), (3.0, 4.0), (5.0, 6.0)]];
-        assert!(inside_ranges(&[[1.5, 3.5, 5.5]], &r));
-        assert!(!inside_ranges(&[[2.5, 3.5, 5.5]], &r));
-        assert!(!inside_ranges(&[], &[]));
+    fn the_widest_component_is_the_one_whose_search_fails_last() {
+        let a = |r: f64| Acceptance {
+            accepted: [1.0, 1.0],
+            rejected: [Some(3.0), Some(r)],
+        };
+        let acc = [[a(3.0), a(10.0), a(3.0)], [a(3.0), a(3.0), a(30.0)]];
+        assert_eq!(widest_component(&acc), (1, 2));
+        assert_eq!(widest_component(&acc[..1]), (0, 1));
     }
 
     #[test]
@@ -207,16 +209,17 @@ mod tests {
             accepted: [(1, 1); 3],
             samples: 2,
             two_real: 2,
-            range: Vec::new(),
-            discriminant_range: (0.5, 1.0),
+            spread: Vec::new(),
+            discriminant_spread: (0.5, [0.6, 0.8, 1.0]),
             unrestricted_no_real: (0, 2),
-            unrestricted_range: Vec::new(),
+            unrestricted_spread: Vec::new(),
+            acceptance: Vec::new(),
             witness: None,
         };
         assert!(always_two_real(&r));
-        r.discriminant_range.0 = -0.1;
+        r.discriminant_spread.0 = -0.1;
         assert!(!always_two_real(&r));
-        r.discriminant_range.0 = 0.5;
+        r.discriminant_spread.0 = 0.5;
         r.two_real = 1;
         assert!(!always_two_real(&r));
     }

@@ -3,6 +3,7 @@
 //! exact values, never text.
 
 pub mod census;
+pub mod exact_views;
 pub mod family_samples;
 pub mod joint_fit;
 pub mod noise;

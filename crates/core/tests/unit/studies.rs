@@ -1,5 +1,6 @@
 //! Tests of `orthocheck_core::studies`.
 
+mod exact_views;
 mod family_samples;
 mod joint_fit;
 mod noise;

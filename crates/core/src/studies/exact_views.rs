@@ -1,5 +1,5 @@
-//! §2's example under the rounding of its figure, restricted to projections a rigid body can
-//! produce: per frame, the exact orthographic views of the printed body (P at the origin)
+//! A three-point example under the rounding of its figure (§2's), restricted to projections a
+//! rigid body can produce: per frame, the exact orthographic views of the printed body (P at the origin)
 //! that round to the printed coordinates; the roots of the paper's quadratic over them; and
 //! the quadratic's discriminant at the printed data, which says how well the data fix the
 //! roots.
@@ -12,7 +12,7 @@ use crate::algebra::{central_jacobian, kabsch};
 use crate::derivations::p3f3::{match_solutions, real_solutions_from_coordinates, solve_core};
 use crate::model::rng;
 use crate::studies::joint_fit::lp_minimax;
-use crate::studies::rounding::{RoundingBox, Witness};
+use crate::studies::rounding::{acceptance, inside, quantile, Acceptance, RoundingBox, Witness};
 
 /// Bisection steps when solving a frame's last coordinate: 60 halvings of a box of width
 /// 0.01 leave far less than one ulp.
@@ -49,7 +49,7 @@ fn discriminant(x: &[f64]) -> Option<f64> {
 /// z_Q = √(a² − |q|²) ≥ 0 (the mirror through the image plane is the same view), and
 /// R = (rx, ry, s·√(c² − |r|²)), the view is exact iff |R − Q|² = b². `None` outside the
 /// sphere of either depth.
-fn rigidity(body: [f64; 3], q: [f64; 2], r: [f64; 2], s: f64) -> Option<f64> {
+pub fn rigidity(body: [f64; 3], q: [f64; 2], r: [f64; 2], s: f64) -> Option<f64> {
     let zq2 = body[0] - q[0] * q[0] - q[1] * q[1];
     let zr2 = body[2] - r[0] * r[0] - r[1] * r[1];
     if zq2 < 0.0 || zr2 < 0.0 {
@@ -61,7 +61,7 @@ fn rigidity(body: [f64; 3], q: [f64; 2], r: [f64; 2], s: f64) -> Option<f64> {
 
 /// Every ry in [lo, hi] where the frame is an exact view (either sign of R's depth), by a
 /// scan for sign changes and bisection.
-fn solve_ry(body: [f64; 3], q: [f64; 2], rx: f64, lo: f64, hi: f64) -> Vec<f64> {
+pub fn solve_ry(body: [f64; 3], q: [f64; 2], rx: f64, lo: f64, hi: f64) -> Vec<f64> {
     let mut out = Vec::new();
     for s in [1.0, -1.0] {
         let f = |y: f64| rigidity(body, q, [rx, y], s);
@@ -138,14 +138,18 @@ pub struct Restricted {
     pub samples: usize,
     /// Samples with two real roots.
     pub two_real: usize,
-    /// Per printed solution and component: the smallest and largest paired root.
-    pub range: Vec<[(f64, f64); 3]>,
-    /// The smallest and largest discriminant over the samples.
-    pub discriminant_range: (f64, f64),
+    /// Per printed solution and component: the 5, 50 and 95 % quantiles of the paired root
+    /// over the samples (a sample's spread, not a bound).
+    pub spread: Vec<[[f64; 3]; 3]>,
+    /// The smallest discriminant over the samples, and its 5, 50 and 95 % quantiles.
+    pub discriminant_spread: (f64, [f64; 3]),
     /// Unrestricted box: samples with no real root, of all.
     pub unrestricted_no_real: (usize, usize),
-    /// Unrestricted box: per printed solution and component, the smallest and largest root.
-    pub unrestricted_range: Vec<[(f64, f64); 3]>,
+    /// Unrestricted box: per printed solution and component, the quantiles of the root.
+    pub unrestricted_spread: Vec<[[f64; 3]; 3]>,
+    /// Per printed solution and component: how far the target may move (in half units) with
+    /// the witness search still finding exact views that reproduce every printed digit.
+    pub acceptance: Vec<[Acceptance; 3]>,
     /// The exact views (one rotation of the body per frame) nearest to rounding to the figure
     /// and reproducing every printed component: the largest coordinate shift (half-widths)
     /// and component deviation (half units); a witness when both are at most 1.
@@ -196,17 +200,16 @@ fn draw_frame<R: Rng>(inp: &RestrictedDesign, f: usize, g: &mut R) -> Option<[f6
     ys.first().map(|y| [qx, qy, rx, *y])
 }
 
-fn ranges(cloud: &[Vec<[f64; 3]>], n: usize) -> Vec<[(f64, f64); 3]> {
+/// The 5, 50 and 95 % quantiles of `v` (sorted here).
+fn quantiles(mut v: Vec<f64>) -> [f64; 3] {
+    v.sort_by(f64::total_cmp);
+    [0.05, 0.5, 0.95].map(|q| quantile(&v, q).unwrap_or(f64::NAN))
+}
+
+/// Per solution and component, the quantiles of the paired roots of `cloud`.
+fn spreads(cloud: &[Vec<[f64; 3]>], n: usize) -> Vec<[[f64; 3]; 3]> {
     (0..n)
-        .map(|k| {
-            std::array::from_fn(|e| {
-                cloud
-                    .iter()
-                    .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), m| {
-                        (lo.min(m[k][e]), hi.max(m[k][e]))
-                    })
-            })
-        })
+        .map(|k| std::array::from_fn(|e| quantiles(cloud.iter().map(|m| m[k][e]).collect())))
         .collect()
 }
 
@@ -301,6 +304,26 @@ fn restricted_witness(inp: &RestrictedDesign, seed_views: &[f64]) -> Option<Witn
     })
 }
 
+/// Per solution and component, the ladder of the witness search: the target moved by each
+/// rung (in its half units), the search from the same start.
+fn witness_acceptance(inp: &RestrictedDesign, start: &[f64]) -> Vec<[Acceptance; 3]> {
+    (0..inp.targets.len())
+        .map(|k| {
+            std::array::from_fn(|e| {
+                acceptance(&|shift| {
+                    let mut moved = inp.targets.to_vec();
+                    moved[k][e] += shift * inp.target_half[k][e];
+                    let design = RestrictedDesign {
+                        targets: &moved,
+                        ..inp.clone()
+                    };
+                    restricted_witness(&design, start).is_some_and(|w| inside(&w))
+                })
+            })
+        })
+        .collect()
+}
+
 /// The largest deviation of paired roots from the printed solutions, in half units.
 fn scaled_miss(m: &[[f64; 3]], inp: &RestrictedDesign) -> f64 {
     m.iter()
@@ -315,7 +338,7 @@ pub fn restricted(inp: &RestrictedDesign) -> Restricted {
     let frames = inp.figure_box.center.len() / 6;
     let mut accepted = [(0, 0); 3];
     let mut cloud = Vec::new();
-    let (mut samples, mut dmin, mut dmax) = (0, f64::INFINITY, f64::NEG_INFINITY);
+    let (mut samples, mut discriminants) = (0, Vec::new());
     // the seeded start of the witness: the sample whose roots come nearest the printed ones
     let mut nearest: Option<(f64, Vec<f64>)> = None;
     'trial: for _ in 0..inp.trials {
@@ -334,9 +357,7 @@ pub fn restricted(inp: &RestrictedDesign) -> Restricted {
             x[6 * f + 2..6 * f + 6].copy_from_slice(&v);
         }
         samples += 1;
-        if let Some(d) = discriminant(&x) {
-            (dmin, dmax) = (dmin.min(d), dmax.max(d));
-        }
+        discriminants.extend(discriminant(&x));
         if let Some(m) = match_solutions(&real_solutions_from_coordinates(&x), inp.targets) {
             let miss = scaled_miss(&m, inp);
             if nearest.as_ref().is_none_or(|(b, _)| miss < *b) {
@@ -351,34 +372,24 @@ pub fn restricted(inp: &RestrictedDesign) -> Restricted {
         });
     let no_real = plain.iter().filter(|m| m.is_none()).count();
     let plain: Vec<Vec<[f64; 3]>> = plain.into_iter().flatten().collect();
+    let witness = nearest.and_then(|(_, x)| restricted_witness(inp, &x));
+    // the ladder starts where the unmoved search ended: each rung is a small step from it
+    let start = witness.as_ref().map(|w| w.point.clone());
     Restricted {
         discriminant: discriminant_at(inp.figure_box),
         accepted,
         samples,
         two_real: cloud.len(),
-        range: ranges(&cloud, inp.targets.len()),
-        discriminant_range: (dmin, dmax),
+        spread: spreads(&cloud, inp.targets.len()),
+        discriminant_spread: (
+            discriminants.iter().copied().fold(f64::INFINITY, f64::min),
+            quantiles(discriminants),
+        ),
         unrestricted_no_real: (no_real, inp.trials),
-        unrestricted_range: ranges(&plain, inp.targets.len()),
-        witness: nearest.and_then(|(_, x)| restricted_witness(inp, &x)),
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn a_view_of_the_body_satisfies_the_rigidity_condition() {
-        // P = 0, Q = (1, 1, √2), R = (0, 2, √12 − …): a body with a² = 4, c² = 16
-        let (q, r) = ([1.0, 1.0], [0.5, 3.0]);
-        let zq = 2.0_f64.sqrt();
-        let zr = (16.0_f64 - 0.25 - 9.0).sqrt();
-        let b2 = (zr - zq).powi(2) + 0.25 + 4.0;
-        let d = rigidity([4.0, b2, 16.0], q, r, 1.0).unwrap_or(f64::NAN);
-        assert!(d.abs() < 1e-12);
-        let ys = solve_ry([4.0, b2, 16.0], q, 0.5, 2.9, 3.1);
-        assert!(ys.iter().any(|y| (y - 3.0).abs() < 1e-12));
-        assert!(solve_ry([4.0, b2 + 1.0, 16.0], q, 0.5, 2.99, 3.01).is_empty());
+        unrestricted_spread: spreads(&plain, inp.targets.len()),
+        acceptance: start
+            .as_ref()
+            .map_or_else(Vec::new, |x| witness_acceptance(inp, x)),
+        witness,
     }
 }
