@@ -294,7 +294,16 @@ fn table_result(b: &ResultBuilder, case: &IdentityExampleCase, fit: &NamesFit) -
         })
         .collect();
     let (rank, _) = exact_rank(&gram);
-    b.claim(&t.claim)
+    let (points, height2) = placed(&gram);
+    let mut r = b.claim(&t.claim);
+    for (name, p) in ["Q", "R", "T"].iter().zip(&points) {
+        r = r.computed_cell(
+            name,
+            "placed from the printed squares (P at the origin, Q on the x axis, R in the xy plane)",
+            Value::reals(p),
+        );
+    }
+    r.computed("T's squared height above the plane PQR (exact: det G over its leading 2×2 minor)", Value::exact(&height2))
         .printed("columns", Value::count(t.columns.len()))
         .computed("real = real2", Value::flag(same))
         .computed("every length squared is its square", Value::flag(check(&real)))
@@ -306,9 +315,53 @@ fn table_result(b: &ResultBuilder, case: &IdentityExampleCase, fit: &NamesFit) -
         .verdict(Verdict::holds(same && check(&real)))
 }
 
+/// The points of a body from the Gram matrix `g` of its edges from P (3×3, exact): Q on the
+/// x axis, R in the xy plane, T above it, and T's squared height, exact (the Schur
+/// complement det G / det G₂, zero for a planar body).
+fn placed(g: &[Vec<BigRational>]) -> ([[f64; 3]; 3], BigRational) {
+    use num_traits::{ToPrimitive, Zero};
+    let f = |x: &BigRational| x.to_f64().unwrap_or(f64::NAN);
+    let minor = |r: [usize; 2], c: [usize; 2]| {
+        &g[r[0]][c[0]] * &g[r[1]][c[1]] - &g[r[0]][c[1]] * &g[r[1]][c[0]]
+    };
+    let det2 = minor([0, 1], [0, 1]);
+    let det3 = &g[0][0] * minor([1, 2], [1, 2]) - &g[0][1] * minor([1, 2], [0, 2])
+        + &g[0][2] * minor([1, 2], [0, 1]);
+    let height2 = if det2.is_zero() {
+        det2.clone()
+    } else {
+        &det3 / &det2
+    };
+    let xq = f(&g[0][0]).sqrt();
+    let (xr, xt) = (f(&g[0][1]) / xq, f(&g[0][2]) / xq);
+    let yr = (f(&det2) / f(&g[0][0])).sqrt();
+    let yt = (f(&g[1][2]) - xr * xt) / yr;
+    let zt = f(&height2).max(0.0).sqrt();
+    ([[xq, 0.0, 0.0], [xr, yr, 0.0], [xt, yt, zt]], height2)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_planar_body_is_placed_with_no_height() {
+        let q = |n: i64| BigRational::from_integer(n.into());
+        // P = 0, Q = (3, 0, 0), R = (0, 4, 0), T = (3, 4, h): Gram of Q, R, T from P
+        let gram = |h2: i64| {
+            vec![
+                vec![q(9), q(0), q(9)],
+                vec![q(0), q(16), q(16)],
+                vec![q(9), q(16), q(25 + h2)],
+            ]
+        };
+        let (p, h) = placed(&gram(0));
+        assert!(num_traits::Zero::is_zero(&h) && p[2][2] == 0.0);
+        assert_eq!(p[1], [0.0, 4.0, 0.0]);
+        let (p, h) = placed(&gram(4));
+        assert_eq!(h, q(4));
+        assert_eq!(p[2], [3.0, 4.0, 2.0]);
+    }
 
     #[test]
     fn names_judge_both_sides() {

@@ -3,8 +3,8 @@
 //! data (`ex2-discriminant`). Computation in `studies::exact_views`.
 
 use crate::check::{ClaimResult, Power, ResultBuilder, Tolerance, ToleranceSource, Value, Verdict};
-use crate::studies::exact_views::{restricted, Restricted, RestrictedDesign};
 use crate::claims::p3f3_example::P3f3ExampleCase;
+use crate::studies::exact_views::{restricted, Restricted, RestrictedDesign};
 use crate::studies::rounding::{inside, Acceptance, RoundingBox};
 
 /// Two real roots at every sample (and at least one sample).
