@@ -58,6 +58,7 @@ impl<'a> ResultBuilder<'a> {
             tolerance: None,
             power: None,
             correction: None,
+            undecided: None,
             evidence: Evidence::new(""),
         }
     }
@@ -80,6 +81,7 @@ pub struct ClaimBuilder<'b> {
     tolerance: Option<Tolerance>,
     power: Option<Power>,
     correction: Option<String>,
+    undecided: Option<String>,
     evidence: Evidence,
 }
 
@@ -166,6 +168,12 @@ impl ClaimBuilder<'_> {
         self
     }
 
+    /// Why the judge could not decide, should it return `inconclusive` (kept only then).
+    pub fn undecided(mut self, why: impl Into<String>) -> Self {
+        self.undecided = Some(why.into());
+        self
+    }
+
     /// Finish with `verdict`. A positive verdict whose power is weak (or missing) becomes
     /// `inconclusive`: a check that could not have failed confirms nothing. A `reproduced`
     /// whose acceptance interval resolves fewer digits than the paper printed becomes
@@ -206,6 +214,7 @@ impl ClaimBuilder<'_> {
                 .power
                 .unwrap_or_else(|| Power::none("no negative control")),
             correction: self.correction,
+            undecided: self.undecided.filter(|_| verdict == Verdict::Inconclusive),
             evidence: self.evidence,
         }
     }

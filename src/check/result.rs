@@ -622,6 +622,10 @@ pub struct ClaimResult {
     /// For an erratum: the corrected form, verified.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub correction: Option<String>,
+    /// For an `inconclusive` verdict the judge reached itself (not for a weak control, which
+    /// the power states): why the check could not decide.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub undecided: Option<String>,
     /// How.
     pub evidence: Evidence,
 }

@@ -197,6 +197,7 @@ mod tests {
             tolerance: None,
             power: Power::exact_value("d"),
             correction: None,
+            undecided: None,
             evidence: e,
         }
     }

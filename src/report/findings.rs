@@ -55,9 +55,14 @@ pub(crate) fn defect_sentence(c: &ClaimResult) -> Why {
     named.unwrap_or_else(|| Why::ShouldRead(c.correction.clone().unwrap_or_default()))
 }
 
-/// Why a claim was not decided: what its power says could not be told apart.
+/// Why a claim was not decided: the judge's own reason, else what its power says could not
+/// be told apart.
 fn why(c: &ClaimResult) -> Why {
-    Why::Text(c.power.detail.clone())
+    Why::Text(
+        c.undecided
+            .clone()
+            .unwrap_or_else(|| c.power.detail.clone()),
+    )
 }
 
 /// Counts of the verdicts in `claims` as "12 reproduced, 3 identity-verified".
@@ -123,7 +128,7 @@ pub(crate) fn findings<'a>(ordered: &[&'a ClaimResult]) -> Vec<Finding<'a>> {
             ),
             _ => (
                 format!(
-                    "{}: could not have failed on values the paper would call wrong, so decides nothing:",
+                    "{}, each for the reason given (a check that could not have failed on values the paper would call wrong, or whose readings or parts disagree):",
                     plural(n, "check is inconclusive", "checks are inconclusive")
                 ),
                 claims.iter().map(|c| (*c, why(c))).collect(),
@@ -252,6 +257,7 @@ mod tests {
             tolerance: None,
             power: Power::exact_value("d"),
             correction: None,
+            undecided: None,
             evidence: Evidence::new("m"),
         }
     }
@@ -285,5 +291,13 @@ mod tests {
             Role::Defect,
         ));
         assert_eq!(defect_sentence(&e), Why::Text("a sign is wrong".into()));
+    }
+
+    #[test]
+    fn an_undecided_claim_says_the_judge_s_reason_else_its_control() {
+        let mut c = claim_with("a-1", Verdict::Inconclusive);
+        assert_eq!(why(&c), Why::Text("d".into()));
+        c.undecided = Some("the readings disagree".into());
+        assert_eq!(why(&c), Why::Text("the readings disagree".into()));
     }
 }

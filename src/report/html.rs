@@ -399,6 +399,9 @@ fn claim_html(page: &Page, c: &ClaimResult, figures: &[&Figure], h: usize) -> St
         escape(&power_phrase(&c.power)),
         page.linked(&c.power.detail)
     );
+    if let Some(u) = &c.undecided {
+        let _ = write!(s, "<dt>undecided</dt><dd>{}</dd>", page.linked(u));
+    }
     s.push_str("</dl>");
     if c.correction.is_some() {
         s.push_str(&super::glance::fix_html(page, c));

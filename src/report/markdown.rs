@@ -163,6 +163,9 @@ fn claim_in(
         power_phrase(&c.power),
         ctx.linked(&c.power.detail)
     );
+    if let Some(u) = &c.undecided {
+        let _ = writeln!(s, "- undecided: {}", ctx.linked(u));
+    }
     if c.correction.is_some() {
         let _ = writeln!(s, "- corrected: {}", correction_md(ctx, c));
     }

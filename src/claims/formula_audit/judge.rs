@@ -87,7 +87,11 @@ fn formula_result(
 ) -> (ClaimResult, Shown) {
     let what = NAMES.iter().find(|n| n.0 == f.derived).map_or("", |n| n.1);
     let verdict = both_levels(formula_verdict(x), expanded_verdict(e));
-    let mut r = expanded_evidence(b.claim(&f.claim).suffix(&f.id), e);
+    let mut r = expanded_evidence(b.claim(&f.claim).suffix(&f.id), e).undecided(format!(
+        "the check over the macros says {} and the check with every macro expanded says {}",
+        formula_verdict(x).name(),
+        expanded_verdict(e).name()
+    ));
     if let Some(p) = &f.printed {
         r = r.printed("formula", Value::formula(p.clone()));
     }

@@ -304,6 +304,7 @@ impl Context<'_> {
         }
         let r = reading
             .cells(r, f.run)
+            .undecided(reading.undecided())
             .tolerance(self.tolerance(claim, f))
             .power(power(claim, f, neighbour))
             .evidence(self.evidence(lv, claim, f, decision, neighbour));
@@ -352,6 +353,37 @@ pub(super) struct Reading<'a> {
 }
 
 impl Reading<'_> {
+    /// Why the readings together decide nothing: they disagree, or one is too close to call.
+    fn undecided(&self) -> String {
+        let each: Vec<String> = self
+            .metrics
+            .iter()
+            .map(|&m| {
+                format!(
+                    "{} as the {}",
+                    self.all[m].decision.name(),
+                    metric_phrase(m)
+                )
+            })
+            .collect();
+        let split = self
+            .metrics
+            .iter()
+            .any(|&m| self.all[m].decision == Decision::Holds)
+            && self
+                .metrics
+                .iter()
+                .any(|&m| self.all[m].decision == Decision::Fails);
+        if split {
+            format!(
+                "the sentence does not say which error it means, and the readings disagree: {}",
+                each.join("; ")
+            )
+        } else {
+            format!("too close to call: {}", each.join("; "))
+        }
+    }
+
     /// One row of cells per reading: the printed run's error, the median trial's error where
     /// the claim is about the trials, and the reading's decision (or that the sentence names
     /// another reading).

@@ -249,6 +249,9 @@ fn solutions_result(
     for (name, v) in rows {
         r = r.computed(&name, v);
     }
+    if !excluded {
+        r = r.undecided("the accepted regions of a solution's components hold the other solution: the check cannot tell the two apart");
+    }
     r.verdict(alternative_verdict(
         solutions_verdict(direct, s.witness.is_some()),
         excluded,

@@ -135,6 +135,9 @@ fn restricted_result(
     for (name, v) in rows {
         out = out.computed(&name, v);
     }
+    if !excluded {
+        out = out.undecided("the accepted regions of a solution's components hold the other solution: the check cannot tell the two apart");
+    }
     let v = if witness {
         Verdict::ReproducedWithinRounding
     } else {

@@ -221,6 +221,7 @@ fn three_points_ratio(
         .detail("every real choice's squared edges solve the paper's system exactly", Value::flag(lines.iter().all(|l| l.edges_solve)))
         .detail("the scene's own lines among the choices", Value::count_of(lines.iter().filter(|l| l.truth_among).count(), lines.len()))
         .detail("2 × real choices = real reconstructions at every instance", Value::flag(verified))
+        .undecided("the lines-first construction did not check out at every instance (the edges of its real choices, the scene's own lines among them, or two reconstructions per real choice)")
         .power(Power::exact_value("exact integer comparison of the branch count: it rejects 16 (the complex reconstructions, the count that reproduces the four-point ratio), 8 (the branches without the directions' signs) and every other number"))
         .method("Ullman's lines-first construction at the seeded rational scenes of solution-count/p3f3: per camera pair, the real null lines of vᵀ(NᵀN − I)v on the image circle (its discriminant exact over ℚ), two signed directions each; per choice of one line per pair, the Gram matrix G of the three lines and each squared edge sᵀG⁻¹s, exact in ℚ(√Δ₁₂, √Δ₁₃, √Δ₂₃). Each real choice is one reconstruction up to the reflection, and its 2³ sign patterns are the branches that reach its mirror pair")
         .verdict(verdict)
