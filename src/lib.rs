@@ -5,6 +5,7 @@
 pub mod cases;
 pub mod check;
 pub mod claims;
+pub mod files;
 pub mod input;
 pub mod provenance;
 pub mod report;

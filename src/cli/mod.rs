@@ -18,7 +18,6 @@ mod report;
 mod solve;
 mod synth;
 
-use std::io::Write as _;
 use std::path::Path;
 
 use clap::Subcommand;
@@ -185,40 +184,7 @@ fn in_file(path: &Path, e: Error) -> Error {
 /// Write a file that must not exist yet: a user's file is never overwritten (an existing
 /// name is refused with [`would_overwrite`], exit 2; a failed write is exit 1).
 fn write_new(path: &Path, text: &str) -> Result<(), Error> {
-    let failed = |e: std::io::Error| Error::Write {
-        path: path.to_path_buf(),
-        message: e.to_string(),
-    };
-    // refuse an existing file (or a link, even a dangling one) before writing anything
-    if std::fs::symlink_metadata(path).is_ok() {
-        return Err(would_overwrite(path));
-    }
-    // written whole under a temporary name, then linked to its name (a hard link fails if
-    // the name exists, so nothing is overwritten): an interrupt or a full disk never leaves
-    // a half-written file under the user's name
-    let dir = path.parent().filter(|d| !d.as_os_str().is_empty());
-    let name = path
-        .file_name()
-        .map(|n| n.to_string_lossy())
-        .unwrap_or_default();
-    let temp = dir
-        .unwrap_or(Path::new("."))
-        .join(format!(".{name}.{}.tmp", std::process::id()));
-    let written = std::fs::OpenOptions::new()
-        .write(true)
-        .create_new(true)
-        .open(&temp)
-        .and_then(|mut f| f.write_all(text.as_bytes()).and_then(|()| f.sync_all()))
-        .map_err(failed)
-        .and_then(|()| {
-            std::fs::hard_link(&temp, path).map_err(|e| match e.kind() {
-                // the name appeared while the file was being written
-                std::io::ErrorKind::AlreadyExists => would_overwrite(path),
-                _ => failed(e),
-            })
-        });
-    let _ = std::fs::remove_file(&temp);
-    written
+    orthocheck::files::write_new(path, text, would_overwrite)
 }
 
 /// The refusal to write over an existing file: usage, not a failure (exit 2).

@@ -3,8 +3,9 @@
 //! The bar is drawn only when standard error is a terminal: piped or redirected output is
 //! byte-identical with or without it. Ctrl-C stops the computation where it is: nothing has
 //! been printed yet (output is written only once a command has its whole answer), files are
-//! written to a temporary name and renamed, so the handler says "interrupted" and exits 130
-//! (128 + SIGINT, the shell's convention) without leaving a half-written output.
+//! written to a temporary name and renamed, so the handler removes the temporaries, says
+//! "interrupted" and exits 130 (128 + SIGINT, the shell's convention) without leaving a
+//! half-written output. SIGTERM and SIGHUP are handled the same way.
 
 use std::io::IsTerminal as _;
 
@@ -13,13 +14,22 @@ use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 /// The exit code of an interrupted command: 128 + SIGINT.
 pub const INTERRUPTED: i32 = 130;
 
-/// Install the Ctrl-C handler (once, at start-up). A failure to install it only means Ctrl-C
-/// keeps its default meaning (the process ends), so it is not an error.
+/// Install the handler of Ctrl-C, SIGTERM and SIGHUP (once, at start-up): it removes the
+/// temporary files alive and exits 130. A failure to install it only means the signals keep
+/// their default meaning (the process ends), so it is not an error.
+///
+/// SIGXFSZ (a file grown past the size limit) is caught too, so that the write fails with
+/// EFBIG and its error names the file, instead of the signal ending the process silently.
 pub fn on_interrupt_stop() {
     let _ = ctrlc::set_handler(|| {
+        orthocheck::files::remove_temporaries();
         eprintln!("\ninterrupted");
         std::process::exit(INTERRUPTED);
     });
+    let _ = signal_hook::flag::register(
+        signal_hook::consts::SIGXFSZ,
+        std::sync::Arc::new(std::sync::atomic::AtomicBool::new(false)),
+    );
 }
 
 /// A bar counting `total` units of work, drawn on standard error when it is a terminal,

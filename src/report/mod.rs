@@ -128,49 +128,7 @@ impl Report {
     }
 }
 
-/// Make sure `dir` exists and can be written to, before anything is computed for it.
-pub fn prepare_output_dir(dir: &Path) -> Result<()> {
-    let fail = |message: String| crate::error::Error::Write {
-        path: dir.to_path_buf(),
-        message,
-    };
-    std::fs::create_dir_all(dir).map_err(|e| fail(e.to_string()))?;
-    let probe = dir.join(format!(".orthocheck-probe-{}", std::process::id()));
-    std::fs::write(&probe, b"").map_err(|e| fail(e.to_string()))?;
-    std::fs::remove_file(&probe).map_err(|e| fail(e.to_string()))?;
-    Ok(())
-}
-
-/// Write every `(name, text)` into `dir` atomically as a set: all temporary files first, then
-/// the renames; names that are symbolic links are refused.
-pub fn write_all_atomic(dir: &Path, files: &[(&str, String)]) -> Result<()> {
-    let fail = |path: &Path, message: String| crate::error::Error::Write {
-        path: path.to_path_buf(),
-        message,
-    };
-    for (name, _) in files {
-        let target = dir.join(name);
-        if let Ok(m) = std::fs::symlink_metadata(&target)
-            && m.file_type().is_symlink()
-        {
-            return Err(fail(&target, "is a symbolic link; not followed".into()));
-        }
-    }
-    let temp = |name: &str| dir.join(format!(".{name}.{}.tmp", std::process::id()));
-    for (name, text) in files {
-        if let Err(e) = std::fs::write(temp(name), text) {
-            for (n, _) in files {
-                let _ = std::fs::remove_file(temp(n));
-            }
-            return Err(fail(&dir.join(name), e.to_string()));
-        }
-    }
-    for (name, _) in files {
-        std::fs::rename(temp(name), dir.join(name))
-            .map_err(|e| fail(&dir.join(name), e.to_string()))?;
-    }
-    Ok(())
-}
+pub use crate::files::{prepare_output_dir, write_all_atomic};
 
 /// The `dof --table` grid as text: counted against the real (Jacobian) rank.
 pub fn dof_table_text(rows: &[crate::derivations::dof::Identifiability]) -> String {
