@@ -89,11 +89,12 @@ pub fn remove_temporaries() {
 }
 
 /// Make sure `dir` exists and can be written to, before anything is computed for it: a
-/// temporary file is created in it and removed.
+/// temporary file is created in it and removed. A folder that cannot be used (a file of that
+/// name, no permission) is the command's usage, not a failed check: an input error (exit 2).
 pub fn prepare_output_dir(dir: &Path) -> Result<()> {
-    let fail = |e: std::io::Error| Error::Write {
-        path: dir.to_path_buf(),
-        message: e.to_string(),
+    let fail = |e: std::io::Error| Error::Input {
+        location: crate::error::InputLocation::file(dir),
+        message: format!("cannot be used as the output folder: {e}"),
     };
     std::fs::create_dir_all(dir).map_err(fail)?;
     let probe = tempfile::Builder::new()

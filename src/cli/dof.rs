@@ -9,22 +9,32 @@ use super::emit;
 #[derive(clap::Args)]
 pub struct Args {
     /// Number of points p.
-    #[arg(long, required_unless_present = "table")]
+    #[arg(long, allow_negative_numbers = true, required_unless_present = "table")]
     points: Option<usize>,
     /// Number of frames k.
-    #[arg(long, required_unless_present = "table")]
+    #[arg(long, allow_negative_numbers = true, required_unless_present = "table")]
     frames: Option<usize>,
     /// The whole grid p = 1..max-points, k = 1..max-frames.
     #[arg(long, conflicts_with_all = ["points", "frames"])]
     table: bool,
     /// Largest p of the grid.
-    #[arg(long, default_value_t = 8, requires = "table")]
+    #[arg(
+        long,
+        allow_negative_numbers = true,
+        default_value_t = 8,
+        requires = "table"
+    )]
     max_points: usize,
     /// Largest k of the grid.
-    #[arg(long, default_value_t = 6, requires = "table")]
+    #[arg(
+        long,
+        allow_negative_numbers = true,
+        default_value_t = 6,
+        requires = "table"
+    )]
     max_frames: usize,
     /// Seed of the generic scene.
-    #[arg(long, default_value_t = 1)]
+    #[arg(long, allow_negative_numbers = true, default_value_t = 1)]
     seed: u64,
     /// JSON output.
     #[arg(long)]
@@ -49,6 +59,11 @@ pub fn run(a: Args) -> Result<(), Error> {
 fn check_limits(a: &Args) -> Result<(), String> {
     use orthocheck::limits::{at_most, DOF_FRAMES, DOF_GRID, DOF_POINTS, DOF_POINTS_TIMES_FRAMES};
     if a.table {
+        if a.max_points == 0 || a.max_frames == 0 {
+            return Err(
+                "--max-points and --max-frames must be at least 1: the table would be empty".into(),
+            );
+        }
         at_most("--max-points", a.max_points, DOF_GRID)?;
         return at_most("--max-frames", a.max_frames, DOF_GRID);
     }

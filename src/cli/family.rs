@@ -15,7 +15,7 @@ pub struct Args {
     #[arg(long)]
     input: PathBuf,
     /// Members, at angles evenly spread in (0, π).
-    #[arg(long, default_value_t = 5)]
+    #[arg(long, allow_negative_numbers = true, default_value_t = 5)]
     samples: usize,
     /// JSON output.
     #[arg(long)]

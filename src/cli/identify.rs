@@ -22,14 +22,14 @@ pub struct Args {
     #[arg(long, value_enum, default_value = "epipolar")]
     method: IdentifyMethod,
     /// Assignments listed.
-    #[arg(long, default_value_t = 10)]
+    #[arg(long, allow_negative_numbers = true, default_value_t = 10)]
     top: usize,
     /// JSON output.
     #[arg(long)]
     json: bool,
     /// Largest number of points per frame accepted; by default the method's limit
     /// (docs/limits.md: 40 epipolar, 20 four, 30 five). Time grows as n⁴ (n⁵ for five).
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     max_points: Option<usize>,
 }
 

@@ -22,10 +22,10 @@ pub struct Args {
     #[arg(long, value_delimiter = ',')]
     levels: Vec<f64>,
     /// Trials per level and model (default: the case's).
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     trials: Option<usize>,
     /// Seed (default: the case's).
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     seed: Option<u64>,
     /// Noise model (default: both).
     #[arg(long, value_enum)]
@@ -34,7 +34,7 @@ pub struct Args {
     #[arg(long)]
     cases: Option<PathBuf>,
     /// Largest trial count accepted (docs/limits.md); memory stays fixed, time grows.
-    #[arg(long, default_value_t = orthocheck::limits::NOISE_TRIALS)]
+    #[arg(long, allow_negative_numbers = true, default_value_t = orthocheck::limits::NOISE_TRIALS)]
     max_trials: usize,
     /// JSON output.
     #[arg(long)]

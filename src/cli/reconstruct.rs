@@ -29,10 +29,10 @@ pub struct Args {
     /// point to its reprojection. Default: from the data, 3.035 σ (the 99 % point of the
     /// norm of a 2-D normal error) with σ = median residual norm / 1.1774 (the Rayleigh
     /// median), corrected for the fit's parameters, never below rounding.
-    #[arg(long, requires = "robust")]
+    #[arg(long, allow_negative_numbers = true, requires = "robust")]
     threshold: Option<f64>,
     /// Seed of --robust's sample generator.
-    #[arg(long, default_value_t = DEFAULT_SEED)]
+    #[arg(long, allow_negative_numbers = true, default_value_t = DEFAULT_SEED)]
     seed: u64,
     /// Skip the bundle adjustment (Tomasi–Kanade only).
     #[arg(long)]

@@ -16,16 +16,16 @@ use super::{out, write_new};
 #[derive(clap::Args)]
 pub struct Args {
     /// Number of points.
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     points: usize,
     /// Number of frames.
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     frames: usize,
     /// Seed.
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     seed: u64,
     /// Relative error up to ε on every image coordinate.
-    #[arg(long)]
+    #[arg(long, allow_negative_numbers = true)]
     noise: Option<f64>,
     /// Output format.
     #[arg(long, value_enum, default_value = "yaml")]

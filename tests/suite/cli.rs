@@ -1389,3 +1389,46 @@ fn sigterm_stops_the_report_cleanly() {
         "nothing left in the folder"
     );
 }
+
+/// Bad usage is exit 2 and names what is wrong: a negative count or seed names its option
+/// (it is not taken for an unknown flag), an output folder that is a file or cannot be
+/// written is refused before any work, and an empty `dof` table is refused.
+#[test]
+fn bad_usage_is_exit_2_and_names_the_option() {
+    let cases: [(&[&str], &str); 5] = [
+        (&["dof", "--points", "-1", "--frames", "3"], "--points"),
+        (
+            &["dof", "--points", "3", "--frames", "3", "--seed", "-1"],
+            "--seed",
+        ),
+        (&["noise", "--trials", "-1"], "--trials"),
+        (
+            &[
+                "synth", "--points", "3", "--frames", "3", "--seed", "1", "--noise", "-1",
+            ],
+            "--noise",
+        ),
+        (&["dof", "--table", "--max-points", "0"], "--max-points"),
+    ];
+    for (args, names) in cases {
+        let out = orthocheck(args);
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{args:?}: {err}");
+        assert!(
+            err.contains(names) && !err.contains("unexpected argument"),
+            "{args:?}: {err}"
+        );
+        assert!(out.stdout.is_empty(), "{args:?}");
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("a-file");
+    std::fs::write(&file, "mine").unwrap();
+    let out = orthocheck(&["report", "--out", file.to_str().unwrap()]);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("a-file") && err.contains("output folder"),
+        "{err}"
+    );
+    assert_eq!(std::fs::read_to_string(&file).unwrap(), "mine");
+}
