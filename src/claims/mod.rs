@@ -210,20 +210,39 @@ pub fn run_all(cases: &[Case]) -> Result<Vec<ClaimResult>> {
     Ok(run_all_full(cases, &|_, _| {})?.0)
 }
 
-/// [`run_all`] with the figures; `progress` hears of each case as it finishes (index, id).
+/// [`run_all`] with the figures; `progress` hears of each case as it finishes (how many
+/// finished before it, its id).
+///
+/// The cases are independent (each seeds its own streams), so they run at once on rayon's
+/// pool; their results are kept in the cases' order, so the output does not depend on which
+/// finishes first, and the first failing case in that order is the error reported.
 pub fn run_all_full(
     cases: &[Case],
-    progress: &dyn Fn(usize, &str),
+    progress: &(dyn Fn(usize, &str) + Sync),
 ) -> Result<(Vec<ClaimResult>, Vec<Figure>)> {
+    use rayon::prelude::*;
+    let finished = std::sync::atomic::AtomicUsize::new(0);
+    let runs: Vec<Result<(Vec<ClaimResult>, Vec<Figure>)>> = cases
+        .par_iter()
+        .map(|case| {
+            let run = if case.check.kind().restates() {
+                Ok((Vec::new(), Vec::new()))
+            } else {
+                run_case_full(case, &[])
+            };
+            progress(
+                finished.fetch_add(1, std::sync::atomic::Ordering::Relaxed),
+                &case.id,
+            );
+            run
+        })
+        .collect();
     let mut out = Vec::new();
     let mut figures = Vec::new();
-    for (i, case) in cases.iter().enumerate() {
-        if !case.check.kind().restates() {
-            let (r, f) = run_case_full(case, &[])?;
-            out.extend(r);
-            figures.extend(f);
-        }
-        progress(i, &case.id);
+    for run in runs {
+        let (r, f) = run?;
+        out.extend(r);
+        figures.extend(f);
     }
     let mut restated = Vec::new();
     for case in cases.iter().filter(|c| c.check.kind().restates()) {
@@ -246,7 +265,7 @@ pub struct PaperRun {
 
 /// Run every case of the paper; `progress` hears of each finished case (index, id). The
 /// report renders the run ([`crate::report::Report::from_run`]).
-pub fn run_paper(cases: &[Case], progress: &dyn Fn(usize, &str)) -> Result<PaperRun> {
+pub fn run_paper(cases: &[Case], progress: &(dyn Fn(usize, &str) + Sync)) -> Result<PaperRun> {
     let (results, figures) = run_all_full(cases, progress)?;
     Ok(PaperRun {
         results,

@@ -57,19 +57,19 @@ pub fn cases() -> Result<&'static [Case], String> {
     inputs().map(|i| i.cases.as_slice())
 }
 
-/// The whole report (every case's claim results and figures), computed once; a failure names
-/// the case that stopped the run.
+/// The whole report (every case's claim results and figures), computed once; a failure says
+/// how far the run came.
 pub fn report() -> Result<&'static Report, String> {
     static REPORT: OnceLock<Result<Report, String>> = OnceLock::new();
     REPORT
         .get_or_init(|| {
             let inputs = inputs()?;
             let all = cases()?;
-            // the run reports each finished case: the one after the last reported failed
+            // the run reports each finished case (they run at once, in no fixed order)
             let done = std::sync::Mutex::new(0usize);
             let progress = |i: usize, _: &str| {
                 if let Ok(mut d) = done.lock() {
-                    *d = i + 1;
+                    *d = (*d).max(i + 1);
                 }
             };
             let provenance = Provenance {
@@ -80,8 +80,10 @@ pub fn report() -> Result<&'static Report, String> {
                 .map(|run| Report::from_run(run, provenance).with_paper(inputs.paper.clone()))
                 .map_err(|e| {
                     let at = done.lock().map(|d| *d).unwrap_or(0);
-                    let case = all.get(at).map_or("?", |c| c.id.as_str());
-                    format!("the paper run stopped at case {case}: {e}")
+                    format!(
+                        "the paper run failed ({at} of {} cases finished): {e}",
+                        all.len()
+                    )
                 })
         })
         .as_ref()
