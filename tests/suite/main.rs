@@ -18,6 +18,7 @@ mod errata;
 mod figures;
 /// Structured fuzzing of the tracks and case parsers (proptest; long run in docs/limits.md).
 mod fuzz;
+mod hardening;
 /// The paper cases cover the claims this tool must decide.
 mod inventory;
 /// The Markdown and HTML renderers on fixed claims.

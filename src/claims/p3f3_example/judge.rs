@@ -6,7 +6,8 @@ use crate::algebra::Interval;
 use crate::cases::Printed;
 use crate::check::figure::{central_window, thin, Figure, Layer, Plot, Shape, Style};
 use crate::check::{
-    excluded_by, ClaimResult, Power, ResultBuilder, Tolerance, ToleranceSource, Value, Verdict,
+    excluded_by, ClaimBuilder, ClaimResult, Power, ResultBuilder, Tolerance, ToleranceSource,
+    Value, Verdict,
 };
 use crate::claims::p3f3_example::restricted as p3f3_restricted;
 use crate::claims::p3f3_example::study::{self as ex2, ExampleStudy};
@@ -77,6 +78,24 @@ pub(super) fn other_solution(
         rows.push((name, Value::label(text)));
     }
     (rows, all)
+}
+
+/// The nearest alternative's rows added to `r`, the reason should it not be excluded, and
+/// whether it is excluded.
+pub(super) fn with_alternative<'b>(
+    mut r: ClaimBuilder<'b>,
+    acc: &[[Acceptance; 3]],
+    targets: &[[f64; 3]],
+    half: &[[f64; 3]],
+) -> (ClaimBuilder<'b>, bool) {
+    let (rows, excluded) = other_solution(acc, targets, half);
+    for (name, v) in rows {
+        r = r.computed(&name, v);
+    }
+    if !excluded {
+        r = r.undecided("the accepted regions of a solution's components hold the other solution: the check cannot tell the two apart");
+    }
+    (r, excluded)
 }
 
 /// A positive verdict stands only when the check excludes the nearest alternative; one that
@@ -245,13 +264,7 @@ fn solutions_result(
             );
     }
     r = spread_details(r, case, s, targets, half);
-    let (rows, excluded) = other_solution(&s.acceptance, targets, half);
-    for (name, v) in rows {
-        r = r.computed(&name, v);
-    }
-    if !excluded {
-        r = r.undecided("the accepted regions of a solution's components hold the other solution: the check cannot tell the two apart");
-    }
+    let (r, excluded) = with_alternative(r, &s.acceptance, targets, half);
     r.verdict(alternative_verdict(
         solutions_verdict(direct, s.witness.is_some()),
         excluded,

@@ -2,7 +2,9 @@
 //! (`ex2-rounding-restricted`), and the discriminant of the paper's quadratic at the printed
 //! data (`ex2-discriminant`). Computation in `studies::exact_views`.
 
-use crate::check::{ClaimResult, Power, ResultBuilder, Tolerance, ToleranceSource, Value, Verdict};
+use crate::check::{
+    ClaimBuilder, ClaimResult, Power, ResultBuilder, Tolerance, ToleranceSource, Value, Verdict,
+};
 use crate::claims::p3f3_example::P3f3ExampleCase;
 use crate::studies::exact_views::{restricted, Restricted, RestrictedDesign};
 use crate::studies::rounding::{inside, Acceptance, RoundingBox};
@@ -79,13 +81,6 @@ fn restricted_result(
         .method("per frame, views of the printed body (P at the origin) drawn with Q and R's first coordinate uniform in their rounding and R's second solved from rigidity, kept when inside its rounding; the paper's route at each; a minimum-norm search over the rotations of the body for exact views that round to the figure and reproduce every printed digit, started at the sample nearest them; the unrestricted box sampled beside it")
         .detail("samples of three exact views", r.samples)
         .detail("samples with two real roots", Value::count_of(r.two_real, r.samples));
-    for (f, (a, n)) in r.accepted.iter().enumerate() {
-        out = out.cell(
-            &format!("frame {}", f + 1),
-            "draws giving an exact view in the box",
-            Value::count_of(*a, *n),
-        );
-    }
     for (k, acc) in r.acceptance.iter().enumerate() {
         for (e, a) in acc.iter().enumerate() {
             let (lo, hi) = a.interval(targets[k][e], half[k][e]);
@@ -95,6 +90,26 @@ fn restricted_result(
                 Value::interval(lo, hi),
             );
         }
+    }
+    let out = sample_cells(out, r);
+    let (out, excluded) = super::judge::with_alternative(out, &r.acceptance, targets, half);
+    let v = if witness {
+        Verdict::ReproducedWithinRounding
+    } else {
+        Verdict::Contradicted
+    };
+    out.verdict(super::judge::alternative_verdict(v, excluded))
+}
+
+/// The samples' part of the evidence: the draws per frame, the spread of the roots over the
+/// exact views and over the unrestricted box, and the nearest views.
+fn sample_cells<'b>(mut out: ClaimBuilder<'b>, r: &Restricted) -> ClaimBuilder<'b> {
+    for (f, (a, n)) in r.accepted.iter().enumerate() {
+        out = out.cell(
+            &format!("frame {}", f + 1),
+            "draws giving an exact view in the box",
+            Value::count_of(*a, *n),
+        );
     }
     for (k, (sp, un)) in r.spread.iter().zip(&r.unrestricted_spread).enumerate() {
         for e in 0..3 {
@@ -131,19 +146,7 @@ fn restricted_result(
                 w.residual,
             );
     }
-    let (rows, excluded) = super::judge::other_solution(&r.acceptance, targets, half);
-    for (name, v) in rows {
-        out = out.computed(&name, v);
-    }
-    if !excluded {
-        out = out.undecided("the accepted regions of a solution's components hold the other solution: the check cannot tell the two apart");
-    }
-    let v = if witness {
-        Verdict::ReproducedWithinRounding
-    } else {
-        Verdict::Contradicted
-    };
-    out.verdict(super::judge::alternative_verdict(v, excluded))
+    out
 }
 
 fn discriminant_result(

@@ -1,0 +1,145 @@
+//! The writes and exits of the command line: temporary files that cannot be redirected,
+//! a file-size limit, SIGTERM, and bad usage (exit 2, the option named).
+
+use std::process::Command;
+
+use orthocheck::report::Report;
+
+use crate::cli::orthocheck;
+
+/// Temporary and probe files are created exclusively under unpredictable names: links planted
+/// under the names they once had (`.report.md.PID.tmp`, `.orthocheck-probe-PID`) are neither
+/// followed nor removed, the file they point to keeps its bytes, and no temporary is left.
+#[test]
+fn planted_links_under_temporary_names_are_not_followed() {
+    let dir = tempfile::tempdir().unwrap();
+    let outside = dir.path().join("outside.txt");
+    std::fs::write(&outside, "keep me").unwrap();
+    let out = dir.path().join("out");
+    std::fs::create_dir(&out).unwrap();
+    let pid = std::process::id();
+    let mut planted = vec![format!(".orthocheck-probe-{pid}")];
+    planted.extend(["report.md", "report.json", "report.html"].map(|n| format!(".{n}.{pid}.tmp")));
+    for name in &planted {
+        std::os::unix::fs::symlink(&outside, out.join(name)).unwrap();
+    }
+    orthocheck::report::prepare_output_dir(&out).unwrap();
+    Report::new(Vec::new()).write(&out).unwrap();
+    assert_eq!(std::fs::read_to_string(&outside).unwrap(), "keep me");
+    let mut left: Vec<String> = std::fs::read_dir(&out)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    left.sort();
+    let mut expected = planted.clone();
+    expected.extend(["report.html", "report.json", "report.md"].map(String::from));
+    expected.sort();
+    assert_eq!(left, expected, "only the report and the planted links");
+    assert!(std::fs::read_to_string(out.join("report.md"))
+        .unwrap()
+        .contains("Reproducibility"));
+}
+
+/// A file-size limit (`ulimit -f`) makes the write fail with a message naming the file, exit
+/// 1, instead of SIGXFSZ ending the process silently; nothing is left behind.
+#[test]
+fn a_full_file_size_limit_is_an_error_that_names_the_file() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("big.yaml");
+    // 1 block of 1024 bytes: 40 points in 6 frames take far more
+    let script = format!(
+        "ulimit -f 1; exec \"$0\" synth --points 40 --frames 6 --seed 3 --out {}",
+        file.display()
+    );
+    let out = Command::new("bash")
+        .args(["-c", &script, env!("CARGO_BIN_EXE_orthocheck")])
+        .output()
+        .expect("bash runs");
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{err}");
+    assert!(
+        err.contains("big.yaml") && err.to_lowercase().contains("too large"),
+        "{err}"
+    );
+    assert_eq!(
+        std::fs::read_dir(dir.path()).unwrap().count(),
+        0,
+        "neither the file nor a temporary is left"
+    );
+}
+
+/// SIGTERM is handled like Ctrl-C: the command stops, says so, exits 130, and leaves no
+/// temporary file in the output folder.
+#[test]
+fn sigterm_stops_the_report_cleanly() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("out");
+    let child = Command::new(env!("CARGO_BIN_EXE_orthocheck"))
+        .args(["report", "--out", out.to_str().unwrap()])
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .expect("the binary runs");
+    // the folder is prepared before the paper runs: wait for it, then signal
+    let start = std::time::Instant::now();
+    while !out.exists() && start.elapsed() < std::time::Duration::from_secs(20) {
+        std::thread::sleep(std::time::Duration::from_millis(20));
+    }
+    std::thread::sleep(std::time::Duration::from_millis(200));
+    let killed = Command::new("kill")
+        .args(["-TERM", &child.id().to_string()])
+        .status()
+        .expect("kill runs");
+    assert!(killed.success());
+    let done = child.wait_with_output().unwrap();
+    let err = String::from_utf8_lossy(&done.stderr);
+    assert_eq!(done.status.code(), Some(130), "{err}");
+    assert!(err.contains("interrupted"), "{err}");
+    assert_eq!(
+        std::fs::read_dir(&out).unwrap().count(),
+        0,
+        "nothing left in the folder"
+    );
+}
+
+/// Bad usage is exit 2 and names what is wrong: a negative count or seed names its option
+/// (it is not taken for an unknown flag), an output folder that is a file or cannot be
+/// written is refused before any work, and an empty `dof` table is refused.
+#[test]
+fn bad_usage_is_exit_2_and_names_the_option() {
+    let cases: [(&[&str], &str); 5] = [
+        (&["dof", "--points", "-1", "--frames", "3"], "--points"),
+        (
+            &["dof", "--points", "3", "--frames", "3", "--seed", "-1"],
+            "--seed",
+        ),
+        (&["noise", "--trials", "-1"], "--trials"),
+        (
+            &[
+                "synth", "--points", "3", "--frames", "3", "--seed", "1", "--noise", "-1",
+            ],
+            "--noise",
+        ),
+        (&["dof", "--table", "--max-points", "0"], "--max-points"),
+    ];
+    for (args, names) in cases {
+        let out = orthocheck(args);
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{args:?}: {err}");
+        assert!(
+            err.contains(names) && !err.contains("unexpected argument"),
+            "{args:?}: {err}"
+        );
+        assert!(out.stdout.is_empty(), "{args:?}");
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("a-file");
+    std::fs::write(&file, "mine").unwrap();
+    let out = orthocheck(&["report", "--out", file.to_str().unwrap()]);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("a-file") && err.contains("output folder"),
+        "{err}"
+    );
+    assert_eq!(std::fs::read_to_string(&file).unwrap(), "mine");
+}
