@@ -464,6 +464,21 @@ fn skeleton(html: &str) -> Vec<String> {
         .collect()
 }
 
+/// Rename every printed, computed and evidence quantity of `c` ("quantity 1", …); how many.
+fn rename_quantities(c: &mut orthocheck::check::ClaimResult) -> usize {
+    let mut n = 0;
+    for q in c
+        .printed
+        .iter_mut()
+        .chain(c.computed.iter_mut())
+        .chain(c.evidence.details.iter_mut())
+    {
+        n += 1;
+        q.name = format!("quantity {n}");
+    }
+    n
+}
+
 /// Renaming every printed, computed and evidence quantity of the paper's report changes
 /// words only: the renderers read roles, never names, so the page keeps its shape (tables,
 /// rows, the printed side of each erratum, the digits each value is shown with).
@@ -471,18 +486,11 @@ fn skeleton(html: &str) -> Vec<String> {
 fn relabelling_the_evidence_changes_words_not_layout() {
     let report = crate::common::report().expect("the paper runs");
     let mut renamed = report.clone();
-    let mut n = 0;
-    for c in &mut renamed.claims {
-        for q in c
-            .printed
-            .iter_mut()
-            .chain(c.computed.iter_mut())
-            .chain(c.evidence.details.iter_mut())
-        {
-            n += 1;
-            q.name = format!("quantity {n}");
-        }
-    }
+    let n = renamed
+        .claims
+        .iter_mut()
+        .map(rename_quantities)
+        .sum::<usize>();
     assert!(n > 1000, "the report has its quantities ({n})");
     let (before, after) = (html::render(report), html::render(&renamed));
     assert_ne!(before, after, "the names are on the page");
@@ -518,17 +526,8 @@ fn restated_verdicts_are_stable_under_relabelling() {
         .filter(|r| !restated_ids.contains(r.id.as_str()))
         .cloned()
         .collect();
-    let mut n = 0;
-    for c in &mut earlier {
-        for q in c
-            .printed
-            .iter_mut()
-            .chain(c.computed.iter_mut())
-            .chain(c.evidence.details.iter_mut())
-        {
-            n += 1;
-            q.name = format!("quantity {n}");
-        }
+    for (n, c) in earlier.iter_mut().enumerate() {
+        rename_quantities(c);
         c.power.detail = format!("control {n}");
         c.evidence.method = format!("method {n}");
     }
