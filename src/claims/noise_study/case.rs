@@ -66,6 +66,16 @@ pub(super) fn checks(c: &NoiseStudyCase, v: &Validator) -> Result<()> {
             format!("the solver needs {edges} lengths (and {edges} squares if any)"),
         );
     }
+    // the body must exist: a triangle (or, for more points, realizable in 3-D), refused here
+    // with the field rather than when the study runs
+    let lengths: Vec<f64> = c.body.lengths.iter().map(|p| p.to_f64()).collect();
+    let squares: Vec<f64> = c.body.squares.iter().map(|p| p.to_f64()).collect();
+    if let Err(e) = crate::studies::noise::body_of(&lengths, &squares) {
+        return v.err(
+            "body.lengths",
+            e.to_string().trim_start_matches("invalid input: ").into(),
+        );
+    }
     let frames_ok = match c.solver {
         StudySolver::P3f3 | StudySolver::P4f3 => c.frames == 3,
         StudySolver::P3f4 => c.frames >= 4,
