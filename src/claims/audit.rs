@@ -19,13 +19,41 @@ pub struct Shown {
     pub should_be: String,
 }
 
-/// Every audit item of the given cases, in case order, each a claim result and what it
-/// shows: each kind gives its own ([`super::ClaimKind::audit_items`]).
-pub fn audit_all(cases: &[Case]) -> Result<Vec<(ClaimResult, Shown)>> {
+/// Which audit items a command asks for: every one, or those of one item id or claim id.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Wanted<'a> {
+    /// Every item.
+    All,
+    /// The item of this id, or every item of this claim; an item's `/expanded` sibling is
+    /// computed with it.
+    Id(&'a str),
+}
+
+impl Wanted<'_> {
+    /// Whether the item `id` of claim `claim` is asked for, as itself or as the item whose
+    /// `/expanded` sibling is asked: a kind computes only those.
+    pub fn item(&self, id: &str, claim: &str) -> bool {
+        self.shows(id, claim)
+            || matches!(self, Wanted::Id(w) if w.strip_suffix("/expanded") == Some(id))
+    }
+
+    /// Whether the item `id` of claim `claim` is one the command shows.
+    pub fn shows(&self, id: &str, claim: &str) -> bool {
+        match self {
+            Wanted::All => true,
+            Wanted::Id(w) => *w == id || *w == claim,
+        }
+    }
+}
+
+/// The audit items of the given cases that `wanted` asks for, in case order, each a claim
+/// result and what it shows: each kind gives its own ([`super::ClaimKind::audit_items`]) and
+/// computes only what is asked.
+pub fn audit_all(cases: &[Case], wanted: Wanted) -> Result<Vec<(ClaimResult, Shown)>> {
     let mut out = Vec::new();
     for case in cases {
         let b = ResultBuilder::new(case);
-        out.extend(case.check.kind().audit_items(&b, &case.source)?);
+        out.extend(case.check.kind().audit_items(&b, &case.source, wanted)?);
     }
     Ok(out)
 }

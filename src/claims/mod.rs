@@ -72,11 +72,13 @@ pub trait ClaimKind {
     }
 
     /// The items `orthocheck audit` shows: formulas and text the kind audits, each with what
-    /// it shows beside its result. Most kinds audit nothing.
+    /// it shows beside its result, those `wanted` asks for (and only those computed). Most
+    /// kinds audit nothing.
     fn audit_items(
         &self,
         _b: &ResultBuilder,
         _source: &crate::cases::Source,
+        _wanted: audit::Wanted,
     ) -> Result<Vec<(ClaimResult, audit::Shown)>> {
         Ok(Vec::new())
     }

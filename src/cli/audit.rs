@@ -5,7 +5,7 @@ use std::io::Write as _;
 use std::path::{Path, PathBuf};
 
 use orthocheck::check::{ClaimResult, Verdict};
-use orthocheck::claims::audit::Shown;
+use orthocheck::claims::audit::{Shown, Wanted};
 use orthocheck::claims::formula_audit::Place;
 use orthocheck::claims::twofold_squared::TwofoldAudit;
 use orthocheck::claims::twofold_squared::TwofoldCase;
@@ -142,7 +142,8 @@ pub fn run(a: Args) -> Result<(), Error> {
         emit(a.json, &audit, twofold_text)?;
         return Ok(());
     }
-    let mut items: Vec<AuditItem> = orthocheck::claims::audit::audit_all(&loaded)?
+    let wanted = a.id.as_deref().map_or(Wanted::All, Wanted::Id);
+    let mut items: Vec<AuditItem> = orthocheck::claims::audit::audit_all(&loaded, wanted)?
         .into_iter()
         .map(|(r, s)| item(&r, s))
         .collect();

@@ -21,7 +21,8 @@ fn docs_errata_is_up_to_date() {
         "docs/errata.md is out of date: run `cargo run --release -- audit --all --markdown > docs/errata.md`"
     );
     // the audit's errata stay found
-    let items = orthocheck::claims::audit::audit_all(all).unwrap();
+    let items =
+        orthocheck::claims::audit::audit_all(all, orthocheck::claims::audit::Wanted::All).unwrap();
     assert!(
         items
             .iter()
@@ -29,4 +30,33 @@ fn docs_errata_is_up_to_date() {
             .count()
             >= 11
     );
+}
+
+/// The audit computes what is asked: one item (or one claim's items) alone gives exactly
+/// what the whole audit gives for it, the formulas it builds on computed with it.
+#[test]
+fn one_item_of_the_audit_is_its_line_in_the_whole() {
+    use orthocheck::claims::audit::{audit_all, Wanted};
+    let all = common::cases().unwrap();
+    let whole = audit_all(all, Wanted::All).unwrap();
+    for id in [
+        "p3f3-differences/equation-1",
+        "p3f3-a2-b2/a-squared/expanded",
+        "p3f3-quadratic/substitution",
+        "appA-quartic/constant-symbols",
+        "p3f3-a2-b2",
+    ] {
+        let one: Vec<_> = audit_all(all, Wanted::Id(id))
+            .unwrap()
+            .into_iter()
+            .map(|(r, _)| r)
+            .collect();
+        let expected: Vec<_> = whole
+            .iter()
+            .filter(|(r, _)| r.id == id || r.claim == id)
+            .map(|(r, _)| r.clone())
+            .collect();
+        assert!(!expected.is_empty(), "{id} is an audit item or claim");
+        assert_eq!(one, expected, "{id}");
+    }
 }

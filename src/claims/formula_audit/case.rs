@@ -215,6 +215,40 @@ pub struct TextItem {
     pub effect: String,
 }
 
+/// The case with only the items `wanted` asks for (its definitions kept): the audit of one
+/// item computes that item, and the formulas before it, whose results its expansion uses (a
+/// formula's expansion substitutes those of the formulas it follows).
+pub(super) fn asked(
+    c: &FormulaAuditCase,
+    wanted: crate::claims::audit::Wanted,
+) -> FormulaAuditCase {
+    let keep =
+        |claim: &ClaimRef, id: &str| wanted.item(&format!("{}/{id}", claim.claim), &claim.claim);
+    let last = c.formulas.iter().rposition(|f| keep(&f.claim, &f.id));
+    FormulaAuditCase {
+        formulas: c.formulas[..last.map_or(0, |k| k + 1)].to_vec(),
+        arithmetic: c
+            .arithmetic
+            .iter()
+            .filter(|a| keep(&a.claim, &a.id))
+            .cloned()
+            .collect(),
+        computed: c
+            .computed
+            .iter()
+            .filter(|x| keep(&x.claim, &x.id))
+            .cloned()
+            .collect(),
+        text: c
+            .text
+            .iter()
+            .filter(|t| keep(&t.claim, &t.id))
+            .cloned()
+            .collect(),
+        ..c.clone()
+    }
+}
+
 pub(super) fn checks(c: &FormulaAuditCase, v: &Validator) -> Result<()> {
     formula_audit_sizes(c, v)?;
     for (i, d) in c.definitions.iter().enumerate() {

@@ -39,7 +39,12 @@ impl ClaimKind for FormulaAuditCase {
         b: &ResultBuilder,
         // each item names its own place
         _source: &crate::cases::Source,
+        wanted: crate::claims::audit::Wanted,
     ) -> Result<Vec<(ClaimResult, crate::claims::audit::Shown)>> {
-        judge::judged(b, self)
+        let items = judge::judged(b, &case::asked(self, wanted))?;
+        Ok(items
+            .into_iter()
+            .filter(|(r, _)| wanted.shows(&r.id, &r.claim))
+            .collect())
     }
 }

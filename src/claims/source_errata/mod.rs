@@ -42,9 +42,19 @@ impl ClaimKind for SourceErrataCase {
         &self,
         b: &ResultBuilder,
         _source: &crate::cases::Source,
+        wanted: crate::claims::audit::Wanted,
     ) -> Result<Vec<(ClaimResult, crate::claims::audit::Shown)>> {
-        let results = judge::check(b, self)?;
-        Ok(self
+        let asked = SourceErrataCase {
+            findings: self
+                .findings
+                .iter()
+                .filter(|f| wanted.item(&format!("{}/{}", f.claim.claim, f.id), &f.claim.claim))
+                .cloned()
+                .collect(),
+            ..self.clone()
+        };
+        let results = judge::check(b, &asked)?;
+        Ok(asked
             .findings
             .iter()
             .zip(&results)

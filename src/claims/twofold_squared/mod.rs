@@ -38,7 +38,12 @@ impl ClaimKind for TwofoldCase {
         &self,
         b: &ResultBuilder,
         source: &crate::cases::Source,
+        wanted: crate::claims::audit::Wanted,
     ) -> Result<Vec<(ClaimResult, crate::claims::audit::Shown)>> {
+        let id = &self.polynomial.claim.claim;
+        if !wanted.item(id, id) {
+            return Ok(Vec::new());
+        }
         let (r, derived) = judge::audit_item(b, self)?;
         let shown = crate::claims::audit::Shown {
             place: crate::claims::formula_audit::Place {
