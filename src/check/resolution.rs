@@ -75,13 +75,12 @@ mod tests {
 
     #[test]
     fn an_alternative_is_excluded_by_its_first_component_outside() {
-        let regions = [(2.63, 2.73), (8.29, 8.39), (15.7, 16.7)];
-        // the other root of §2's example in place of its second solution
-        assert_eq!(excluded_by(&regions, &[4.0, 9.0, 16.0]), Some(0));
-        assert_eq!(excluded_by(&regions, &[2.7, 9.0, 16.0]), Some(1));
-        // inside every region: not excluded
-        assert_eq!(excluded_by(&regions, &[2.7, 8.3, 16.0]), None);
-        assert_eq!(excluded_by(&regions, &[2.73, 8.29, 16.7]), None);
+        let regions = [(1.0, 2.0), (3.0, 4.0), (5.0, 7.0)];
+        assert_eq!(excluded_by(&regions, &[2.5, 3.5, 6.0]), Some(0));
+        assert_eq!(excluded_by(&regions, &[1.5, 4.5, 6.0]), Some(1));
+        // inside every region, ends included: not excluded
+        assert_eq!(excluded_by(&regions, &[1.5, 3.5, 6.0]), None);
+        assert_eq!(excluded_by(&regions, &[2.0, 3.0, 7.0]), None);
     }
 
     #[test]

@@ -192,7 +192,6 @@ impl Context<'_> {
         let all: Vec<Judged> = (0..METRICS.len()).map(at).collect();
         let judged = at(metrics[0]);
         let reading = Reading {
-            decision: every_reading(metrics.iter().map(|&m| all[m].decision)),
             metrics: &metrics,
             all: &all,
         };
@@ -263,7 +262,7 @@ impl Context<'_> {
         reading: &Reading,
         neighbour: Option<&[LevelResult]>,
     ) -> ClaimResult {
-        let (claim, decision, f) = (judged.claim, reading.decision, &judged.facts);
+        let (claim, decision, f) = (judged.claim, reading.decision(), &judged.facts);
         let mut r = b.claim(&lv.claim).printed("ε", &lv.level);
         if let Some(s) = &suffix {
             r = r.suffix(s);
@@ -344,15 +343,18 @@ impl Context<'_> {
 
 /// A level's claim under each reading of its sentence.
 pub(super) struct Reading<'a> {
-    /// The decision from every reading the sentence leaves open ([`every_reading`]).
-    pub decision: Decision,
-    /// The metrics of those readings.
+    /// The metrics of the readings the sentence leaves open (or the one it names).
     pub metrics: &'a [usize],
     /// The claim judged under every metric, in the order of [`METRICS`].
     pub all: &'a [Judged<'a>],
 }
 
 impl Reading<'_> {
+    /// The decision from every reading the sentence leaves open ([`every_reading`]).
+    pub fn decision(&self) -> Decision {
+        every_reading(self.metrics.iter().map(|&m| self.all[m].decision))
+    }
+
     /// Why the readings together decide nothing: they disagree, or one is too close to call.
     fn undecided(&self) -> String {
         let each: Vec<String> = self

@@ -271,15 +271,14 @@ fn solutions_result(
     ))
 }
 
-/// The acceptance regions and the Monte Carlo spread, as evidence.
-fn spread_details<'b>(
-    mut r: crate::check::ClaimBuilder<'b>,
-    case: &P3f3ExampleCase,
-    s: &ExampleStudy,
+/// Each component's accepted region, one cell per solution and component.
+pub(super) fn accepted_cells<'b>(
+    mut r: ClaimBuilder<'b>,
+    acc: &[[Acceptance; 3]],
     targets: &[[f64; 3]],
     half: &[[f64; 3]],
-) -> crate::check::ClaimBuilder<'b> {
-    for (k, acc) in s.acceptance.iter().enumerate() {
+) -> ClaimBuilder<'b> {
+    for (k, acc) in acc.iter().enumerate() {
         for (e, a) in acc.iter().enumerate() {
             let (lo, hi) = a.interval(targets[k][e], half[k][e]);
             r = r.cell(
@@ -289,7 +288,18 @@ fn spread_details<'b>(
             );
         }
     }
-    r = r
+    r
+}
+
+/// The acceptance regions and the Monte Carlo spread, as evidence.
+fn spread_details<'b>(
+    mut r: crate::check::ClaimBuilder<'b>,
+    case: &P3f3ExampleCase,
+    s: &ExampleStudy,
+    targets: &[[f64; 3]],
+    half: &[[f64; 3]],
+) -> crate::check::ClaimBuilder<'b> {
+    r = accepted_cells(r, &s.acceptance, targets, half)
         .detail("Monte Carlo samples", case.rounding_trials)
         .detail("seed", case.seed)
         .detail("samples with two real roots", s.cloud.len());
@@ -579,12 +589,13 @@ mod tests {
             accepted: [1.0, 1.0],
             rejected: [Some(r), Some(r)],
         };
-        let targets = [[4.0, 9.0, 16.0], [2.6849, 8.33902, 16.2189]];
+        let targets = [[1.0, 2.0, 3.0], [1.5, 2.5, 3.5]];
         let half = [[0.5e-5, 0.5e-5, 0.5e-5], [0.5e-5, 0.5e-5, 0.5e-5]];
         let narrow = [[a(3.0); 3], [a(3.0); 3]];
         let (rows, excluded) = other_solution(&narrow, &targets, &half);
         assert!(excluded && rows.len() == 2);
-        // regions wide enough (10⁶ half units, ±5) to hold the other solution everywhere
+        // regions wide enough (10⁶ half units, ±5) to hold the other solution everywhere;
+        // 3 half units (1.5e-5) hold neither
         let wide = [[a(1e6); 3], [a(1e6); 3]];
         let (rows, excluded) = other_solution(&wide, &targets, &half);
         assert!(!excluded, "{rows:?}");

@@ -72,7 +72,7 @@ fn restricted_result(
         .map_or((f64::NEG_INFINITY, f64::INFINITY), |a| {
             a[e].interval(targets[k][e], half[k][e])
         });
-    let mut out = b
+    let out = b
         .claim(claim)
         .printed("solutions", Value::reals(&targets.concat()))
         .computed("exact views reproduce both printed solutions within their half units", Value::flag(witness))
@@ -81,16 +81,7 @@ fn restricted_result(
         .method("per frame, views of the printed body (P at the origin) drawn with Q and R's first coordinate uniform in their rounding and R's second solved from rigidity, kept when inside its rounding; the paper's route at each; a minimum-norm search over the rotations of the body for exact views that round to the figure and reproduce every printed digit, started at the sample nearest them; the unrestricted box sampled beside it")
         .detail("samples of three exact views", r.samples)
         .detail("samples with two real roots", Value::count_of(r.two_real, r.samples));
-    for (k, acc) in r.acceptance.iter().enumerate() {
-        for (e, a) in acc.iter().enumerate() {
-            let (lo, hi) = a.interval(targets[k][e], half[k][e]);
-            out = out.computed_cell(
-                &format!("solution {}, component {}", k + 1, e + 1),
-                "accepted region",
-                Value::interval(lo, hi),
-            );
-        }
-    }
+    let out = super::judge::accepted_cells(out, &r.acceptance, targets, half);
     let out = sample_cells(out, r);
     let (out, excluded) = super::judge::with_alternative(out, &r.acceptance, targets, half);
     let v = if witness {

@@ -11,7 +11,7 @@ use crate::derivations::p3f3::{
 };
 use crate::derivations::twofold::FrameCoefficients;
 use crate::studies::rounding::{
-    acceptance, monte_carlo, quantile, reproduce, Acceptance, RoundingBox, Witness,
+    acceptance, cloud_spread, monte_carlo, reproduce, Acceptance, RoundingBox, Witness,
 };
 
 /// What the study needs: the figure's box and what the paper printed, as numbers.
@@ -119,14 +119,6 @@ fn mutant_acceptance(
         .collect()
 }
 
-fn spread(cloud: &[Vec<[f64; 3]>], k: usize) -> [[f64; 3]; 3] {
-    std::array::from_fn(|e| {
-        let mut v: Vec<f64> = cloud.iter().map(|m| m[k][e]).collect();
-        v.sort_by(f64::total_cmp);
-        [0.05, 0.5, 0.95].map(|q| quantile(&v, q).unwrap_or(0.0))
-    })
-}
-
 fn longest_projection(figure_box: &RoundingBox) -> [Interval; 3] {
     let frames = figure_box.center.len() / 6;
     std::array::from_fn(|e| {
@@ -184,7 +176,9 @@ pub fn study(inp: &ExampleData) -> ExampleStudy {
         witness,
         witness_routes,
         acceptance: mutant_acceptance(figure_box, inp.targets, inp.target_half),
-        spread: (0..inp.targets.len()).map(|k| spread(&cloud, k)).collect(),
+        spread: (0..inp.targets.len())
+            .map(|k| cloud_spread(&cloud, k))
+            .collect(),
         cloud,
         projections: frame_lengths(&figure_box.center),
         longest_projection: longest_projection(figure_box),

@@ -12,7 +12,9 @@ use crate::algebra::{central_jacobian, kabsch};
 use crate::derivations::p3f3::{match_solutions, real_solutions_from_coordinates, solve_core};
 use crate::model::rng;
 use crate::studies::joint_fit::lp_minimax;
-use crate::studies::rounding::{acceptance, inside, quantile, Acceptance, RoundingBox, Witness};
+use crate::studies::rounding::{
+    acceptance, cloud_spread, inside, spread, Acceptance, RoundingBox, Witness,
+};
 
 /// Bisection steps when solving a frame's last coordinate: 60 halvings of a box of width
 /// 0.01 leave far less than one ulp.
@@ -200,17 +202,9 @@ fn draw_frame<R: Rng>(inp: &RestrictedDesign, f: usize, g: &mut R) -> Option<[f6
     ys.first().map(|y| [qx, qy, rx, *y])
 }
 
-/// The 5, 50 and 95 % quantiles of `v` (sorted here).
-fn quantiles(mut v: Vec<f64>) -> [f64; 3] {
-    v.sort_by(f64::total_cmp);
-    [0.05, 0.5, 0.95].map(|q| quantile(&v, q).unwrap_or(f64::NAN))
-}
-
 /// Per solution and component, the quantiles of the paired roots of `cloud`.
 fn spreads(cloud: &[Vec<[f64; 3]>], n: usize) -> Vec<[[f64; 3]; 3]> {
-    (0..n)
-        .map(|k| std::array::from_fn(|e| quantiles(cloud.iter().map(|m| m[k][e]).collect())))
-        .collect()
+    (0..n).map(|k| cloud_spread(cloud, k)).collect()
 }
 
 /// The triangle P, Q, R of squared edges PQ, QR, RP: P at the origin, Q on the x axis.
@@ -381,9 +375,14 @@ pub fn restricted(inp: &RestrictedDesign) -> Restricted {
         samples,
         two_real: cloud.len(),
         spread: spreads(&cloud, inp.targets.len()),
+        // no sample: 0, which no positive bound passes
         discriminant_spread: (
-            discriminants.iter().copied().fold(f64::INFINITY, f64::min),
-            quantiles(discriminants),
+            discriminants
+                .iter()
+                .copied()
+                .reduce(f64::min)
+                .unwrap_or(0.0),
+            spread(discriminants),
         ),
         unrestricted_no_real: (no_real, inp.trials),
         unrestricted_spread: spreads(&plain, inp.targets.len()),

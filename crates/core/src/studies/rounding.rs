@@ -104,3 +104,14 @@ pub fn acceptance(accepts: &dyn Fn(f64) -> bool) -> Acceptance {
     }
     a
 }
+
+/// The 5, 50 and 95 % quantiles of `v` (0 for no data).
+pub fn spread(mut v: Vec<f64>) -> [f64; 3] {
+    v.sort_by(f64::total_cmp);
+    [0.05, 0.5, 0.95].map(|q| quantile(&v, q).unwrap_or(0.0))
+}
+
+/// Per component, the [`spread`] of solution `k` over a cloud of paired roots.
+pub fn cloud_spread(cloud: &[Vec<[f64; 3]>], k: usize) -> [[f64; 3]; 3] {
+    std::array::from_fn(|e| spread(cloud.iter().map(|m| m[k][e]).collect()))
+}

@@ -199,7 +199,7 @@ fn caption(
         why(lv, j, sampled_digits(trials as u64), reading.metrics.len() == 1)
     );
     s.push_str(&other_readings(j, reading));
-    if result.verdict != reading.decision.verdict() {
+    if result.verdict != reading.decision().verdict() {
         s.push_str(&format!(
             " Its verdict is nevertheless {}: the negative control could not have failed it.",
             result.verdict.name()
@@ -252,7 +252,7 @@ fn other_readings(j: &Judged, reading: &Reading) -> String {
             )
         })
         .collect();
-    let end = match reading.decision {
+    let end = match reading.decision() {
         Decision::TooClose if reading.all.iter().any(|x| x.decision != Decision::TooClose) => {
             "the readings disagree, so the claim is too close to call".to_string()
         }

@@ -22,7 +22,7 @@ use num_rational::BigRational;
 use num_traits::{Signed, Zero};
 
 use super::{constant_of, RationalScene};
-use crate::algebra::{Multiquad, Poly, UPoly};
+use crate::algebra::{rat, Multiquad, Poly, UPoly};
 
 type M2 = [[BigRational; 2]; 2];
 type V2 = [Multiquad; 2];
@@ -51,10 +51,6 @@ pub struct LinesFirst {
     pub edges_solve: bool,
     /// Whether the scene's own intersection lines are one of the choices.
     pub truth_among: bool,
-}
-
-fn q(n: i64) -> BigRational {
-    BigRational::from_integer(n.into())
 }
 
 /// Aᵢ: the images of Q − P and R − P in frame `i`, as columns.
@@ -98,8 +94,8 @@ fn carry(s: &RationalScene, i: usize, j: usize) -> Option<M2> {
 /// The form NᵀN − I, and its discriminant q₀₁² − q₀₀q₁₁.
 fn form(n: &M2) -> (M2, BigRational) {
     let mut f = mul(&transpose(n), n);
-    f[0][0] -= q(1);
-    f[1][1] -= q(1);
+    f[0][0] -= rat(1, 1);
+    f[1][1] -= rat(1, 1);
     let disc = &f[0][1] * &f[0][1] - &f[0][0] * &f[1][1];
     (f, disc)
 }
@@ -122,9 +118,9 @@ fn null_lines(
     let (a, b, d) = (&f[0][0], &f[0][1], &f[1][1]);
     if a.is_zero() {
         // v₁(2b·v₀ + d·v₁) = 0
-        let mut lines = vec![[c(&q(1)), c(&q(0))]];
+        let mut lines = vec![[c(&rat(1, 1)), c(&rat(0, 1))]];
         if !b.is_zero() {
-            lines.push([c(d), c(&(-b * q(2)))]);
+            lines.push([c(d), c(&(-b * rat(2, 1)))]);
         }
         return Some(lines);
     }
@@ -202,7 +198,7 @@ impl Choice {
             }
         };
         let adj: [[Multiquad; 3]; 3] = std::array::from_fn(|i| std::array::from_fn(|j| cof(j, i)));
-        let det = (0..3).fold(Multiquad::constant(g[0][0].squares(), q(0)), |s, j| {
+        let det = (0..3).fold(Multiquad::constant(g[0][0].squares(), rat(0, 1)), |s, j| {
             &s + &(&g[0][j] * &adj[j][0])
         });
         (adj, det)
@@ -220,7 +216,7 @@ impl Choice {
     fn squares(&self, adj: &[[Multiquad; 3]; 3]) -> [Multiquad; 3] {
         self.edges.clone().map(|e| {
             let f = e[0].squares();
-            (0..3).fold(Multiquad::constant(f, q(0)), |s, i| {
+            (0..3).fold(Multiquad::constant(f, rat(0, 1)), |s, i| {
                 (0..3).fold(s, |s, j| &s + &(&(&adj[i][j] * &e[i]) * &e[j]))
             })
         })
@@ -231,12 +227,13 @@ impl Choice {
 fn is_root(p: &UPoly, n: &Multiquad, d: &Multiquad) -> bool {
     let deg = p.degree().unwrap_or(0);
     let f = n.squares();
-    let power = |x: &Multiquad, k: usize| (0..k).fold(Multiquad::constant(f, q(1)), |s, _| &s * x);
+    let power =
+        |x: &Multiquad, k: usize| (0..k).fold(Multiquad::constant(f, rat(1, 1)), |s, _| &s * x);
     let sum = p
         .coeffs()
         .iter()
         .enumerate()
-        .fold(Multiquad::constant(f, q(0)), |s, (k, c)| {
+        .fold(Multiquad::constant(f, rat(0, 1)), |s, (k, c)| {
             &s + &(&power(n, k) * &power(d, deg - k)).scale(c)
         });
     sum.is_zero()
@@ -267,7 +264,7 @@ fn is_true_line(s: &RationalScene, (i, j): (usize, usize), v: &V2) -> bool {
     });
     let r = &s.rotations[i];
     let t: [BigRational; 2] =
-        std::array::from_fn(|row| (0..3).fold(q(0), |acc, k| acc + &r[row][k] * &u[k]));
+        std::array::from_fn(|row| (0..3).fold(rat(0, 1), |acc, k| acc + &r[row][k] * &u[k]));
     (&v[0].scale(&t[1]) - &v[1].scale(&t[0])).is_zero()
 }
 
@@ -290,7 +287,13 @@ pub fn lines_first(
     let field = Multiquad::field(
         forms
             .iter()
-            .map(|(_, d)| if d.is_positive() { d.clone() } else { q(1) })
+            .map(|(_, d)| {
+                if d.is_positive() {
+                    d.clone()
+                } else {
+                    rat(1, 1)
+                }
+            })
             .collect(),
     );
     let lines: Vec<Option<Vec<V2>>> = (0..3)
@@ -394,7 +397,7 @@ mod tests {
     #[test]
     fn congruent_images_leave_every_line() {
         let mut s = RationalScene::random(3, 3, 1500);
-        let turn = cayley(&[q(0), q(0), BigRational::new(2.into(), 5.into())]);
+        let turn = cayley(&[rat(0, 1), rat(0, 1), BigRational::new(2.into(), 5.into())]);
         s.rotations[2] = mat_mul(&turn, &s.rotations[1]);
         let l = s.triangle_squares();
         let poly = crate::derivations::p3f3::exact_elimination(&l).unwrap_or(UPoly::new(vec![]));
