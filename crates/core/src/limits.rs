@@ -74,12 +74,13 @@ pub const FORMULA_TERMS: f64 = 1e6;
 /// its eigen-decomposition costs about side³ (1,000 takes about a second).
 pub const RECONSTRUCT_GRAM: usize = 1_000;
 /// The work of one bundle-adjustment iteration, Σ over points of (frames seeing it)²: the
-/// Schur complement's accumulation costs about 75 flops per unit (10⁷ ≈ 0.1 s per
-/// iteration); beyond it `reconstruct` skips the adjustment and says so in `method`.
+/// Schur complement's accumulation costs at most about 37 multiply-adds per unit, in matrix
+/// products for long tracks (docs/limits.md, "Bundle adjustment's cost"); beyond it
+/// `reconstruct` skips the adjustment and says so in `method`.
 pub const BUNDLE_WORK: usize = 10_000_000;
 /// Frames of a bundle adjustment: the reduced camera system is dense, 5k × 5k, factorised in
-/// about (5k)³/3 flops per iteration (k = 200: about 0.1 s); beyond it `reconstruct` skips
-/// the adjustment and says so in `method`.
+/// about (5k)³/3 multiply-adds per iteration by a blocked Cholesky (k = 200: 3.3 × 10⁸, about
+/// 10 ms); beyond it `reconstruct` skips the adjustment and says so in `method`.
 pub const BUNDLE_FRAMES: usize = 200;
 /// RANSAC samples at most (each costs one point intersection per point and frame).
 pub const RANSAC_SAMPLES: usize = 10_000;

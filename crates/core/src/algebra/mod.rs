@@ -1,5 +1,6 @@
 //! Exact and floating algebra: polynomials over ℚ, exact root isolation, float roots, rank.
 
+pub mod cholesky;
 mod diff;
 pub mod float_roots;
 mod gram;

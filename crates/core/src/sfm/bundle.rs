@@ -1,7 +1,8 @@
 //! Bundle adjustment: Levenberg–Marquardt on the orthographic reprojection error over the
 //! points, the rotations (a local update R·exp([δ]×), three parameters) and the image
 //! translations (two), with the normal equations reduced by the Schur complement on the 3 × 3
-//! point blocks to a dense 5k × 5k camera system.
+//! point blocks to a dense 5k × 5k camera system, accumulated by matrix products over chunks
+//! of points and factored by a blocked Cholesky (`algebra::cholesky`).
 //!
 //! The gauge (a common rotation, a common 3-D shift) is fixed by holding frame 1's rotation
 //! and re-centring the points after every step (an exact change of gauge that moves no
@@ -16,6 +17,7 @@ use nalgebra::{
 };
 
 use super::{Error, Observations, Reconstruction, Units};
+use crate::algebra::cholesky::{cholesky_lower, cholesky_solve};
 
 /// Levenberg–Marquardt iterations by default.
 pub const MAX_ITERATIONS: usize = 100;
@@ -190,58 +192,128 @@ fn normal(by_point: &ByPoint, s: &State) -> Normal {
     n
 }
 
-/// The damped step: (JᵀJ + λI) δ = −Jᵀr by the Schur complement on the point blocks.
+/// Points whose Schur terms are accumulated together (one matrix product when their frames
+/// make it cheaper than block by block).
+const CHUNK: usize = 64;
+/// Rows of the camera system per matrix product when a chunk's points span every frame: the
+/// lower triangle is computed panel by panel, about half the products of the whole square.
+const PANEL: usize = 128;
+/// How much faster a multiply-add runs in a large matrix product than in the 5 × 3 · 3 × 5
+/// block products of the scattered accumulation (about 4 here; the choice only moves time,
+/// never the result beyond rounding).
+const DENSE_GAIN: usize = 4;
+
+/// One point's share of the damped step: M = L⁻¹ for L Lᵀ = V + λI, and per image the
+/// camera–point block Z = W Mᵀ (so that W (V + λI)⁻¹ Wᵀ = Z Zᵀ).
+struct PointTerms {
+    m: Matrix3<f64>,
+    z: Vec<Mat5x3>,
+}
+
+/// The damped step: (JᵀJ + λI) δ = −Jᵀr by the Schur complement on the point blocks; the
+/// camera system's lower triangle is accumulated and factored by a blocked Cholesky.
 fn solve(n: &Normal, by_point: &ByPoint, lambda: f64) -> Option<(Vec<Vec5>, Vec<Vector3<f64>>)> {
     let k = n.u.len();
     let mut s = DMatrix::<f64>::zeros(5 * k, 5 * k);
     let mut rhs = DVector::<f64>::zeros(5 * k);
     for (f, (u, g)) in n.u.iter().zip(&n.gc).enumerate() {
-        for a in 0..5 {
-            for b in 0..5 {
-                s[(5 * f + a, 5 * f + b)] = u[(a, b)] + if a == b { lambda } else { 0.0 };
-            }
-            rhs[5 * f + a] = -g[a];
-        }
+        s.fixed_view_mut::<5, 5>(5 * f, 5 * f)
+            .copy_from(&(u + Mat5::identity() * lambda));
+        rhs.fixed_rows_mut::<5>(5 * f).copy_from(&-g);
     }
-    let mut vinv = Vec::with_capacity(by_point.len());
+    let mut terms = Vec::with_capacity(by_point.len());
     for (j, list) in by_point.iter().enumerate() {
-        let vi = (n.v[j] + Matrix3::identity() * lambda).try_inverse()?;
-        let ys: Vec<Mat5x3> = n.w[j].iter().map(|w| w * vi).collect();
-        for (a, (f, _)) in list.iter().enumerate() {
-            let add = ys[a] * n.gp[j];
-            for r in 0..5 {
-                rhs[5 * f + r] += add[r];
-            }
-            for (b, (g, _)) in list.iter().enumerate().skip(a) {
-                let blk = ys[a] * n.w[j][b].transpose();
-                for r in 0..5 {
-                    for c in 0..5 {
-                        s[(5 * f + r, 5 * g + c)] -= blk[(r, c)];
-                        if b != a {
-                            s[(5 * g + c, 5 * f + r)] -= blk[(r, c)];
-                        }
-                    }
-                }
-            }
+        let l = (n.v[j] + Matrix3::identity() * lambda).cholesky()?.unpack();
+        let m = l.try_inverse()?;
+        let h = m * n.gp[j];
+        let z: Vec<Mat5x3> = n.w[j].iter().map(|w| w * m.transpose()).collect();
+        for ((f, _), za) in list.iter().zip(&z) {
+            let mut r = rhs.fixed_rows_mut::<5>(5 * f);
+            r += za * h;
         }
-        vinv.push(vi);
+        terms.push(PointTerms { m, z });
     }
-    let dc_all = s.cholesky()?.solve(&rhs);
+    for start in (0..by_point.len()).step_by(CHUNK) {
+        let end = (start + CHUNK).min(by_point.len());
+        subtract_chunk(&mut s, &by_point[start..end], &terms[start..end]);
+    }
+    let l = cholesky_lower(s)?;
+    let dc_all = cholesky_solve(&l, &rhs)?;
     let dc: Vec<Vec5> = (0..k)
-        .map(|f| Vec5::from_fn(|r, _| dc_all[5 * f + r]))
+        .map(|f| dc_all.fixed_rows::<5>(5 * f).into_owned())
         .collect();
     let dp = by_point
         .iter()
+        .zip(&terms)
         .enumerate()
-        .map(|(j, list)| {
+        .map(|(j, (list, t))| {
             let mut g = -n.gp[j];
             for (a, (f, _)) in list.iter().enumerate() {
                 g -= n.w[j][a].transpose() * dc[*f];
             }
-            vinv[j] * g
+            t.m.transpose() * (t.m * g)
         })
         .collect();
     Some((dc, dp))
+}
+
+/// S −= Σ Z Zᵀ over a chunk of points, into S's lower triangle (image lists in frame order):
+/// one matrix product over the frames the chunk sees when that costs less than the
+/// scattered 5 × 5 blocks, block by block otherwise (short tracks in many frames).
+fn subtract_chunk(
+    s: &mut DMatrix<f64>,
+    lists: &[Vec<(usize, Vector2<f64>)>],
+    terms: &[PointTerms],
+) {
+    let k = s.nrows() / 5;
+    let mut pos = vec![usize::MAX; k];
+    for (f, _) in lists.iter().flatten() {
+        pos[*f] = 0;
+    }
+    let frames: Vec<usize> = (0..k).filter(|&f| pos[f] == 0).collect();
+    for (i, &f) in frames.iter().enumerate() {
+        pos[f] = i;
+    }
+    let r = frames.len();
+    let dense = 25 * r * r * 3 * lists.len() / 2;
+    let scattered: usize = lists.iter().map(|l| 75 * l.len() * (l.len() + 1) / 2).sum();
+    if dense > DENSE_GAIN * scattered {
+        for (list, t) in lists.iter().zip(terms) {
+            for (a, (fa, _)) in list.iter().enumerate() {
+                for (b, (fb, _)) in list.iter().enumerate().take(a + 1) {
+                    let mut blk = s.fixed_view_mut::<5, 5>(5 * fa, 5 * fb);
+                    blk -= t.z[a] * t.z[b].transpose();
+                }
+            }
+        }
+        return;
+    }
+    let mut zc = DMatrix::<f64>::zeros(5 * r, 3 * lists.len());
+    for (i, (list, t)) in lists.iter().zip(terms).enumerate() {
+        for ((f, _), za) in list.iter().zip(&t.z) {
+            zc.fixed_view_mut::<5, 3>(5 * pos[*f], 3 * i).copy_from(za);
+        }
+    }
+    let zt = zc.transpose();
+    if r == k {
+        for i0 in (0..5 * k).step_by(PANEL) {
+            let len = PANEL.min(5 * k - i0);
+            s.view_mut((i0, 0), (len, i0 + len)).gemm(
+                -1.0,
+                &zc.rows(i0, len),
+                &zt.columns(0, i0 + len),
+                1.0,
+            );
+        }
+        return;
+    }
+    let prod = &zc * &zt;
+    for (a, &fa) in frames.iter().enumerate() {
+        for (b, &fb) in frames.iter().enumerate().take(a + 1) {
+            let mut blk = s.fixed_view_mut::<5, 5>(5 * fa, 5 * fb);
+            blk -= prod.fixed_view::<5, 5>(5 * a, 5 * b);
+        }
+    }
 }
 
 /// The reduction the damped model predicts: ½ δᵀ(λδ − g).
@@ -320,6 +392,43 @@ pub fn bundle_adjust(
     })
 }
 
+/// Damped steps from `state` until one lowers the cost: that step's state, cost and length.
+/// `None` when none can beyond rounding: a rejected step whose predicted reduction is
+/// within the cost's rounding (4ε·cost) or whose length is within the parameters' (4ε·‖x‖)
+/// ends the search, as does [`MAX_REJECTIONS`] in a row (more damping only shortens the
+/// step further).
+fn trial(
+    n: &Normal,
+    by_point: &ByPoint,
+    state: &State,
+    c: f64,
+    lambda: &mut f64,
+    nu: &mut f64,
+) -> Option<(State, f64, f64)> {
+    for _ in 0..MAX_REJECTIONS {
+        if let Some((dc, dp)) = solve(n, by_point, *lambda) {
+            let next = state.step(&dc, &dp);
+            let nc = cost(by_point, &next);
+            let pred = predicted(n, &dc, &dp, *lambda);
+            let step = (dc.iter().map(|d| d.norm_squared()).sum::<f64>()
+                + dp.iter().map(|d| d.norm_squared()).sum::<f64>())
+            .sqrt();
+            if nc.is_finite() && nc < c && pred > 0.0 {
+                let rho = (c - nc) / pred;
+                *lambda *= (1.0 - (2.0 * rho - 1.0).powi(3)).max(1.0 / 3.0);
+                *nu = 2.0;
+                return Some((next, nc, step));
+            }
+            if pred <= 4.0 * f64::EPSILON * c || step <= 4.0 * f64::EPSILON * state.norm() {
+                return None;
+            }
+        }
+        *lambda *= *nu;
+        *nu *= 2.0;
+    }
+    None
+}
+
 /// The damped Gauss–Newton loop.
 fn levenberg_marquardt(
     by_point: &ByPoint,
@@ -342,26 +451,7 @@ fn levenberg_marquardt(
     let mut nu = 2.0;
     while report.iterations < max_iterations && c > 0.0 {
         let n = normal(by_point, &state);
-        let mut accepted = None;
-        for _ in 0..MAX_REJECTIONS {
-            if let Some((dc, dp)) = solve(&n, by_point, lambda) {
-                let next = state.step(&dc, &dp);
-                let nc = cost(by_point, &next);
-                let pred = predicted(&n, &dc, &dp, lambda);
-                if nc.is_finite() && nc < c && pred > 0.0 {
-                    let rho = (c - nc) / pred;
-                    lambda *= (1.0 - (2.0 * rho - 1.0).powi(3)).max(1.0 / 3.0);
-                    nu = 2.0;
-                    let step: f64 = dc.iter().map(|d| d.norm_squared()).sum::<f64>()
-                        + dp.iter().map(|d| d.norm_squared()).sum::<f64>();
-                    accepted = Some((next, nc, step.sqrt()));
-                    break;
-                }
-            }
-            lambda *= nu;
-            nu *= 2.0;
-        }
-        let Some((next, nc, step)) = accepted else {
+        let Some((next, nc, step)) = trial(&n, by_point, &state, c, &mut lambda, &mut nu) else {
             report.converged = true;
             break;
         };

@@ -1,5 +1,6 @@
 //! Tests of `orthocheck_core::algebra`.
 
+mod cholesky;
 mod float_roots;
 mod interval;
 mod modp;
