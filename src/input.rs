@@ -385,6 +385,32 @@ pub fn tracks_to_csv(t: &Tracks) -> String {
     s
 }
 
+/// Observations with gaps as CSV (`frame,point,x,y`, a missing point has no row), in the
+/// format `reconstruct` reads.
+pub fn observations_to_csv(o: &crate::sfm::Observations) -> String {
+    let mut s = String::from("frame,point,x,y\n");
+    for (f, j, y) in o.seen() {
+        let _ = writeln!(s, "{},{},{:?},{:?}", f + 1, o.names[j], y.x, y.y);
+    }
+    s
+}
+
+/// Observations with gaps as YAML (`null` for a missing point), in the format `reconstruct`
+/// reads.
+pub fn observations_to_yaml(o: &crate::sfm::Observations) -> String {
+    let mut s = String::new();
+    let _ = writeln!(s, "points: [{}]", o.names.join(", "));
+    let _ = writeln!(s, "frames:");
+    for f in &o.frames {
+        let pts: Vec<String> = f
+            .iter()
+            .map(|p| p.map_or("null".into(), |p| format!("[{:?}, {:?}]", p.x, p.y)))
+            .collect();
+        let _ = writeln!(s, "  - [{}]", pts.join(", "));
+    }
+    s
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -517,6 +517,22 @@ fn robust_mode_takes_its_threshold_from_the_data_and_drops_single_observations()
         .collect();
     assert_eq!(kept, names[..39]);
     assert_eq!(v["points"].as_object().unwrap().len(), 39);
+    // each kept point's inlier frames: its 8 frames less the dropped
+    let inlier_frames = v["inlier_frames"].as_object().unwrap();
+    let listed: BTreeSet<&str> = inlier_frames.keys().map(String::as_str).collect();
+    assert_eq!(listed, names[..39].iter().map(String::as_str).collect());
+    for (name, frames) in inlier_frames {
+        let frames: BTreeSet<u64> = frames
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|f| f.as_u64().unwrap())
+            .collect();
+        let expected: BTreeSet<u64> = (1..=8)
+            .filter(|f| !dropped.contains(&(name.clone(), *f)))
+            .collect();
+        assert_eq!(frames, expected, "{name}");
+    }
     // the text says the threshold and counts the dropped
     let out = orthocheck(&["reconstruct", "--input", file.to_str().unwrap(), "--robust"]);
     assert!(out.status.success());
@@ -567,4 +583,96 @@ fn the_help_states_the_threshold_rule_of_the_constants() {
         "{help}"
     );
     assert!(!help.contains("needs --threshold"), "{help}");
+}
+
+#[test]
+fn a_turntable_sequence_ninety_percent_missing_is_reconstructed() {
+    use orthocheck::sfm::turntable::Turntable;
+    // 36 frames, every point in 4 consecutive ones: 89 % missing, 13 points a frame
+    let t = Turntable {
+        points: 117,
+        frames: 36,
+        window: 4,
+        elevation: 30f64.to_radians(),
+        noise: Some(0.001),
+        seed: 1,
+    };
+    let (scene, obs) = t.generate();
+    let cells = 117 * 36;
+    assert_eq!(obs.count(), 117 * 4);
+    assert!(1.0 - obs.count() as f64 / cells as f64 > 0.88);
+    let per_frame: Vec<usize> = obs
+        .frames
+        .iter()
+        .map(|f| f.iter().flatten().count())
+        .collect();
+    assert!(
+        per_frame.iter().all(|&n| (12..=14).contains(&n)),
+        "{per_frame:?}"
+    );
+    let out = reconstruct(&obs, &Options::default()).unwrap();
+    let method = out.reconstruction.method.join("; ");
+    assert!(method.starts_with("variable projection"), "{method}");
+    assert!(method.contains("metric upgrade") && method.contains("bundle adjustment"));
+    // every point (each in 4 ≥ 2 frames) returned, within 3 % of the body's size
+    assert_eq!(out.reconstruction.points.len(), 117);
+    let e = shape_error(&out.reconstruction, &scene.body.points);
+    assert!(e <= 0.03, "relative shape error {e}");
+    // each coordinate moved by at most 0.1 % of itself: the truth reprojects within
+    // √2 · 0.001 · the largest coordinate, and the fit (the least squares) no worse
+    let big = obs.seen().map(|(_, _, y)| y.amax()).fold(0.0, f64::max);
+    assert!(out.rms <= 2f64.sqrt() * 0.001 * big, "rms {}", out.rms);
+}
+
+#[test]
+fn robust_mode_returns_every_point_from_its_inliers_at_fifteen_percent_outlying_observations() {
+    let (p, k) = (40, 8);
+    let scene = Scene::random(p, k, 21);
+    let clean = scene.tracks();
+    let units = Units::of(&Observations::from_tracks(&clean)).unwrap();
+    let mut g = rng(22);
+    let mut noisy = clean.frames.clone();
+    for y in noisy.iter_mut().flatten() {
+        *y += normal_pair(&mut g) * (0.001 * units.scale);
+    }
+    let good = Tracks::new(clean.names.clone(), noisy.clone()).unwrap();
+    // 15 % of the observations replaced by random points of the image
+    let mut spoiled = noisy;
+    let mut replaced = BTreeSet::new();
+    while replaced.len() < (p * k * 15) / 100 {
+        replaced.insert((g.random_range(0..p), g.random_range(0..k)));
+    }
+    for &(j, f) in &replaced {
+        let r = Vector2::new(g.random_range(-1.0..1.0), g.random_range(-1.0..1.0));
+        spoiled[f][j] = units.centre + r * units.scale;
+    }
+    let bad = Tracks::new(clean.names.clone(), spoiled).unwrap();
+    let robust = Options {
+        robust: Some(RansacOptions::from_data()),
+        ..Options::default()
+    };
+    let free = reconstruct(&Observations::from_tracks(&good), &Options::default()).unwrap();
+    let out = reconstruct(&Observations::from_tracks(&bad), &robust).unwrap();
+    let report = out.robust.as_ref().unwrap();
+    assert_eq!(report.kept.len(), p, "rejected: {:?}", report.rejected);
+    // no replaced observation kept (a random point lies far beyond the threshold)
+    let dropped: BTreeSet<(String, usize)> = report
+        .dropped
+        .iter()
+        .map(|d| (d.point.clone(), d.frame))
+        .collect();
+    for &(j, f) in &replaced {
+        assert!(
+            dropped.contains(&(clean.names[j].clone(), f + 1)),
+            "{j} {f}"
+        );
+    }
+    let (e_free, e) = (
+        shape_error(&free.reconstruction, &scene.body.points),
+        shape_error(&out.reconstruction, &scene.body.points),
+    );
+    assert!(
+        e <= 2.0 * e_free,
+        "error {e} against {e_free} without outliers"
+    );
 }

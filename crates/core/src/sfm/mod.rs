@@ -13,11 +13,13 @@ pub mod factor;
 pub mod gaps;
 pub mod judge;
 pub mod metric;
+pub mod missing;
 mod observations;
 pub mod output;
 pub mod robust;
 pub mod threshold;
 mod tk;
+pub mod turntable;
 
 use nalgebra::{Matrix2x3, Matrix3, Vector2, Vector3};
 
@@ -348,6 +350,34 @@ pub fn reconstruct(obs: &Observations, options: &Options) -> Result<Outcome, Err
     })
 }
 
+/// The start of tracks with gaps. With most entries missing (a turntable), variable
+/// projection from the chained pairs ([`missing::reconstruct`]) first, the largest complete
+/// block grown when it fails; with fewer missing, the other way round. `method` names the
+/// path taken, and why the first failed.
+fn with_gaps(used: &Observations, options: &Options) -> Result<Reconstruction, Error> {
+    let seed = options.robust.map_or(robust::DEFAULT_SEED, |r| r.seed);
+    let cells = used.frames.len() * used.names.len();
+    let mostly_missing = 2 * used.count() < cells;
+    let (first, second): (Result<Reconstruction, Error>, &str) = if mostly_missing {
+        (missing::reconstruct(used, seed), "variable projection")
+    } else {
+        (gaps::initial(used), "largest complete block")
+    };
+    match first {
+        Ok(r) => Ok(r),
+        Err(Error::Unreachable(why)) | Err(Error::Numerical(why)) => {
+            let mut r = if mostly_missing {
+                gaps::initial(used)?
+            } else {
+                missing::reconstruct(used, seed)?
+            };
+            r.method.insert(0, format!("{second}: {why}"));
+            Ok(r)
+        }
+        Err(e) => Err(e),
+    }
+}
+
 /// The fit of observations: Tomasi–Kanade (complete tracks) or the largest complete block
 /// grown (gaps), then bundle adjustment when asked and within its limits (`method` says
 /// when it was skipped); an error on a non-finite coordinate.
@@ -357,7 +387,7 @@ pub(crate) fn fit(
 ) -> Result<(Reconstruction, Option<BundleReport>), Error> {
     let mut rec = match used.complete() {
         Some(t) => tomasi_kanade(&t)?,
-        None => gaps::initial(used)?,
+        None => with_gaps(used, options)?,
     };
     let mut report = None;
     if options.bundle {

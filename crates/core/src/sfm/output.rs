@@ -100,6 +100,20 @@ impl Serialize for DroppedJson<'_> {
     }
 }
 
+/// Each kept point's inlier frames, by name in the tracks' order.
+struct InlierFrames<'a>(&'a super::robust::Report);
+
+impl Serialize for InlierFrames<'_> {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        use serde::ser::SerializeMap as _;
+        let mut m = s.serialize_map(Some(self.0.kept.len()))?;
+        for (name, frames) in self.0.kept.iter().zip(&self.0.inlier_frames) {
+            m.serialize_entry(name, frames)?;
+        }
+        m.end()
+    }
+}
+
 /// The JSON document of an outcome.
 pub struct Json<'a>(pub &'a Outcome);
 
@@ -107,7 +121,7 @@ impl Serialize for Json<'_> {
     fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
         let o = self.0;
         let r = &o.reconstruction;
-        let mut st = s.serialize_struct("Reconstruction", 10)?;
+        let mut st = s.serialize_struct("Reconstruction", 11)?;
         st.serialize_field("points", &Points(r))?;
         st.serialize_field("frames", &frames(r))?;
         st.serialize_field("rms", &o.rms)?;
@@ -117,6 +131,7 @@ impl Serialize for Json<'_> {
             st.serialize_field("inliers", i)?;
         }
         if let Some(rb) = &o.robust {
+            st.serialize_field("inlier_frames", &InlierFrames(rb))?;
             st.serialize_field("rejected", &rb.rejected)?;
             st.serialize_field("threshold", &ThresholdJson(&rb.threshold))?;
             let dropped: Vec<DroppedJson<'_>> = rb.dropped.iter().map(DroppedJson).collect();

@@ -288,6 +288,8 @@ pub struct Report {
     pub observations: usize,
     /// The points kept, in the tracks' order.
     pub kept: Vec<String>,
+    /// Each kept point's inlier frames (counted from 1), in the tracks' order.
+    pub inlier_frames: Vec<Vec<usize>>,
     /// The points rejected (fewer than [`judge::MIN_IMAGES`] images within the threshold, or
     /// not both of two), in the tracks' order.
     pub rejected: Vec<String>,
@@ -463,10 +465,21 @@ fn summary(
             .map(|(n, _)| n.clone())
             .collect()
     };
+    let inlier_frames = judged
+        .kept
+        .iter()
+        .map(|&j| {
+            (0..obs.frames.len())
+                .filter(|&f| judged.inlier[f][j])
+                .map(|f| f + 1)
+                .collect()
+        })
+        .collect();
     Report {
         threshold,
         observations: obs.count(),
         kept: names(true),
+        inlier_frames,
         rejected: names(false),
         dropped: judged
             .dropped

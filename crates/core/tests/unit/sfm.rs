@@ -3,5 +3,6 @@
 mod gaps;
 mod judge;
 mod metric;
+mod missing;
 mod robust;
 mod threshold;
