@@ -41,6 +41,7 @@ fn sfm(c: &mut Criterion) {
     ] {
         let options = BundleOptions {
             max_iterations: iterations,
+            ..BundleOptions::default()
         };
         g.bench_function(name, |b| {
             b.iter(|| bundle_adjust(&obs, std::hint::black_box(&start), &options))

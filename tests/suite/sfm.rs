@@ -676,3 +676,98 @@ fn robust_mode_returns_every_point_from_its_inliers_at_fifteen_percent_outlying_
         "error {e} against {e_free} without outliers"
     );
 }
+
+#[test]
+fn huber_loss_bounds_the_pull_of_an_outlier_in_bundle_adjustment() {
+    let scene = Scene::random(20, 5, 41);
+    let clean = scene.tracks();
+    let mut g = rng(42);
+    let mut frames = clean.frames.clone();
+    for y in frames.iter_mut().flatten() {
+        *y += normal_pair(&mut g) * 0.001;
+    }
+    // one observation moved far: the judgement would drop it; here it stays in
+    frames[2][7] += Vector2::new(0.5, -0.4);
+    let t = Tracks::new(clean.names.clone(), frames).unwrap();
+    let obs = Observations::from_tracks(&t);
+    let start = tomasi_kanade(&t).unwrap();
+    let adjust = |huber| {
+        let o = BundleOptions {
+            huber,
+            ..BundleOptions::default()
+        };
+        bundle_adjust(&obs, &start, &o).unwrap()
+    };
+    let (ls, hub) = (adjust(None), adjust(Some(0.00135)));
+    // reweighting lowers Huber's cost at every accepted step
+    assert!(hub.report.costs.windows(2).all(|w| w[1] < w[0]));
+    assert!(hub
+        .reconstruction
+        .method
+        .last()
+        .unwrap()
+        .contains("huber loss"));
+    let (e_ls, e_hub) = (
+        shape_error(&ls.reconstruction, &scene.body.points),
+        shape_error(&hub.reconstruction, &scene.body.points),
+    );
+    assert!(
+        e_hub < e_ls / 2.0,
+        "huber {e_hub} against least squares {e_ls}"
+    );
+    let bad = BundleOptions {
+        huber: Some(0.0),
+        ..BundleOptions::default()
+    };
+    assert!(matches!(
+        bundle_adjust(&obs, &start, &bad),
+        Err(Error::InvalidOption(_))
+    ));
+}
+
+#[test]
+fn where_three_frames_share_only_three_points_ransac_uses_the_three_point_solver() {
+    // P1–P3 in all 4 frames; every other point in exactly 2 frames (each pair of frames
+    // twice, three times over): any 3 frames share P1–P3 only, so no four-point sample
+    // exists and every hypothesis comes from §3's solver
+    let pairs = [(0, 1), (0, 2), (0, 3), (1, 2), (1, 3), (2, 3)];
+    let p = 3 + 3 * pairs.len();
+    let scene = Scene::random(p, 4, 51);
+    let t = scene.tracks();
+    let mut g = rng(52);
+    let frames = t
+        .frames
+        .iter()
+        .enumerate()
+        .map(|(f, row)| {
+            row.iter()
+                .enumerate()
+                .map(|(j, y)| {
+                    let seen = j < 3 || {
+                        let (a, b) = pairs[(j - 3) % pairs.len()];
+                        f == a || f == b
+                    };
+                    seen.then(|| y + normal_pair(&mut g) * 1e-4)
+                })
+                .collect()
+        })
+        .collect();
+    let obs = Observations {
+        names: t.names.clone(),
+        frames,
+    };
+    // a threshold of 10 σ: two-frame points leave the fit few spare coordinates (96 for
+    // 77 parameters), too few for the data's own scale to be steady; that rule is tested
+    // above, the three-point hypotheses here
+    let options = Options {
+        robust: Some(RansacOptions::new(1e-3)),
+        ..Options::default()
+    };
+    let out = reconstruct(&obs, &options).unwrap();
+    let report = out.robust.as_ref().unwrap();
+    assert!(report.triangles > 0 && report.triangles <= report.samples);
+    assert!(out.reconstruction.method[0].contains("by the three-point solver"));
+    assert_eq!(report.kept.len(), p, "rejected {:?}", report.rejected);
+    let e = shape_error(&out.reconstruction, &scene.body.points);
+    assert!(e < 1e-2, "shape error {e}");
+}

@@ -82,6 +82,10 @@ pub const BUNDLE_WORK: usize = 10_000_000;
 /// about (5k)³/3 multiply-adds per iteration by a blocked Cholesky (k = 200: 3.3 × 10⁸, about
 /// 10 ms); beyond it `reconstruct` skips the adjustment and says so in `method`.
 pub const BUNDLE_FRAMES: usize = 200;
+/// Frames of a variable-projection factorisation (tracks with most entries missing): its
+/// camera system is dense, 8k × 8k, (8k)³/3 multiply-adds per step (k = 100: 1.7 × 10⁸);
+/// beyond it `reconstruct` grows the largest complete block instead, and says why.
+pub const VARPRO_FRAMES: usize = 100;
 /// RANSAC samples at most (each costs one point intersection per point and frame).
 pub const RANSAC_SAMPLES: usize = 10_000;
 /// Observations (points × frames) of `reconstruct --robust`: every sample intersects every

@@ -34,12 +34,17 @@ type Vec5 = SVector<f64, 5>;
 pub struct BundleOptions {
     /// Accepted iterations at most.
     pub max_iterations: usize,
+    /// Huber's loss on each observation's residual norm, with this corner (input units),
+    /// minimised by iteratively reweighted least squares: weight 1 within the corner, k/‖r‖
+    /// beyond it; `None`: least squares.
+    pub huber: Option<f64>,
 }
 
 impl Default for BundleOptions {
     fn default() -> Self {
         BundleOptions {
             max_iterations: MAX_ITERATIONS,
+            huber: None,
         }
     }
 }
@@ -49,6 +54,7 @@ impl BundleOptions {
     pub fn with(o: &super::Options) -> Self {
         BundleOptions {
             max_iterations: o.max_iterations,
+            huber: None,
         }
     }
 }
@@ -133,14 +139,30 @@ impl State {
 /// Observations grouped by point: (frame, image).
 type ByPoint = Vec<Vec<(usize, Vector2<f64>)>>;
 
-fn cost(by_point: &ByPoint, s: &State) -> f64 {
+/// Σ ρ(‖r‖): ρ(s) = s²/2 (least squares), or Huber's s²/2 within the corner k and
+/// k s − k²/2 beyond it.
+fn cost(by_point: &ByPoint, s: &State, huber: Option<f64>) -> f64 {
     let mut c = 0.0;
     for (j, list) in by_point.iter().enumerate() {
         for (f, y) in list {
-            c += s.residual(*f, j, y).norm_squared();
+            let sq = s.residual(*f, j, y).norm_squared();
+            c += match huber {
+                Some(k) if sq > k * k => 2.0 * k * sq.sqrt() - k * k,
+                _ => sq,
+            };
         }
     }
     c / 2.0
+}
+
+/// The weight of a residual of squared norm `sq` in the reweighted normal equations: 1
+/// within Huber's corner, k/‖r‖ beyond it (the weighted quadratic then touches ρ from above
+/// at the current residual, so a step that lowers it lowers ρ).
+fn weight(sq: f64, huber: Option<f64>) -> f64 {
+    match huber {
+        Some(k) if sq > k * k => k / sq.sqrt(),
+        _ => 1.0,
+    }
 }
 
 /// The normal equations JᵀJ, Jᵀr in blocks.
@@ -166,7 +188,7 @@ fn camera_jacobian(c: &Matrix2x3<f64>, x: &Vector3<f64>, fixed: bool) -> SMatrix
     j
 }
 
-fn normal(by_point: &ByPoint, s: &State) -> Normal {
+fn normal(by_point: &ByPoint, s: &State, huber: Option<f64>) -> Normal {
     let k = s.rot.len();
     let mut n = Normal {
         u: vec![Mat5::zeros(); k],
@@ -180,12 +202,13 @@ fn normal(by_point: &ByPoint, s: &State) -> Normal {
         for (f, y) in list {
             let c = s.rows(*f);
             let r = s.residual(*f, j, y);
+            let w = weight(r.norm_squared(), huber);
             let jc = camera_jacobian(&c, &s.pts[j], *f == 0);
-            n.u[*f] += jc.transpose() * jc;
-            n.gc[*f] += jc.transpose() * r;
-            n.v[j] += c.transpose() * c;
-            n.gp[j] += c.transpose() * r;
-            wj.push(jc.transpose() * c);
+            n.u[*f] += jc.transpose() * jc * w;
+            n.gc[*f] += jc.transpose() * r * w;
+            n.v[j] += c.transpose() * c * w;
+            n.gp[j] += c.transpose() * r * w;
+            wj.push(jc.transpose() * c * w);
         }
         n.w.push(wj);
     }
@@ -362,7 +385,13 @@ pub fn bundle_adjust(
         trans: unit_start.frames.iter().map(|f| f.translation).collect(),
         pts: unit_start.points.clone(),
     };
-    let (state, mut report) = levenberg_marquardt(&by_point, state, options.max_iterations)?;
+    let huber = options.huber.map(|k| k / units.scale);
+    if huber.is_some_and(|k| !(k.is_finite() && k > 0.0)) {
+        return Err(Error::InvalidOption(
+            "Huber's corner must be a positive number of image units".into(),
+        ));
+    }
+    let (state, mut report) = levenberg_marquardt(&by_point, state, options.max_iterations, huber)?;
     let s2 = units.scale * units.scale;
     report.costs.iter_mut().for_each(|c| *c *= s2);
     let mut rec = unit_start;
@@ -373,7 +402,11 @@ pub fn bundle_adjust(
     rec.points = state.pts;
     units.back(&mut rec);
     rec.method.push(format!(
-        "bundle adjustment (levenberg-marquardt, schur complement): {} iterations{}",
+        "bundle adjustment (levenberg-marquardt, schur complement{}): {} iterations{}",
+        options.huber.map_or(String::new(), |k| format!(
+            ", huber loss with its corner at {} image units, by reweighting",
+            crate::numfmt::sig(k)
+        )),
         report.iterations,
         if report.converged {
             ""
@@ -402,13 +435,13 @@ fn trial(
     by_point: &ByPoint,
     state: &State,
     c: f64,
-    lambda: &mut f64,
-    nu: &mut f64,
+    (lambda, nu): (&mut f64, &mut f64),
+    huber: Option<f64>,
 ) -> Option<(State, f64, f64)> {
     for _ in 0..MAX_REJECTIONS {
         if let Some((dc, dp)) = solve(n, by_point, *lambda) {
             let next = state.step(&dc, &dp);
-            let nc = cost(by_point, &next);
+            let nc = cost(by_point, &next, huber);
             let pred = predicted(n, &dc, &dp, *lambda);
             let step = (dc.iter().map(|d| d.norm_squared()).sum::<f64>()
                 + dp.iter().map(|d| d.norm_squared()).sum::<f64>())
@@ -434,14 +467,15 @@ fn levenberg_marquardt(
     by_point: &ByPoint,
     mut state: State,
     max_iterations: usize,
+    huber: Option<f64>,
 ) -> Result<(State, BundleReport), Error> {
-    let mut c = cost(by_point, &state);
+    let mut c = cost(by_point, &state, huber);
     let mut report = BundleReport {
         iterations: 0,
         costs: vec![c],
         converged: false,
     };
-    let first = normal(by_point, &state);
+    let first = normal(by_point, &state, huber);
     let diag = first
         .u
         .iter()
@@ -450,8 +484,9 @@ fn levenberg_marquardt(
     let mut lambda = 1e-3 * diag.fold(f64::MIN_POSITIVE, f64::max);
     let mut nu = 2.0;
     while report.iterations < max_iterations && c > 0.0 {
-        let n = normal(by_point, &state);
-        let Some((next, nc, step)) = trial(&n, by_point, &state, c, &mut lambda, &mut nu) else {
+        let n = normal(by_point, &state, huber);
+        let damping = (&mut lambda, &mut nu);
+        let Some((next, nc, step)) = trial(&n, by_point, &state, c, damping, huber) else {
             report.converged = true;
             break;
         };

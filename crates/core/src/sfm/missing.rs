@@ -451,6 +451,19 @@ pub const RANDOM_STARTS: usize = 8;
 /// then the metric upgrade, and every point intersected from its frames' cameras.
 pub fn reconstruct(obs: &Observations, seed: u64) -> Result<Reconstruction, Error> {
     obs.check_counts()?;
+    let k = obs.frames.len();
+    if k > crate::limits::VARPRO_FRAMES {
+        return Err(Error::Unreachable(format!(
+            "variable projection: {k} frames, more than its limit of {} (see docs/limits.md)",
+            crate::limits::VARPRO_FRAMES
+        )));
+    }
+    if super::bundle::work(obs) > crate::limits::BUNDLE_WORK {
+        return Err(Error::Unreachable(format!(
+            "variable projection: its work (Σ frames² per point) exceeds the limit of {} (see docs/limits.md)",
+            crate::limits::BUNDLE_WORK
+        )));
+    }
     let units = Units::of(obs)?;
     let unit = units.to_unit(obs);
     let views = judge::views(&unit);

@@ -335,7 +335,7 @@ pub fn reconstruct(obs: &Observations, options: &Options) -> Result<Outcome, Err
             (f.reconstruction, f.bundle, Some(f.report), rms)
         }
         None => {
-            let (rec, bundle) = fit(obs, options)?;
+            let (rec, bundle) = fit(obs, options, None)?;
             let rms = rec.rms(obs);
             (rec, bundle, None, rms)
         }
@@ -384,6 +384,7 @@ fn with_gaps(used: &Observations, options: &Options) -> Result<Reconstruction, E
 pub(crate) fn fit(
     used: &Observations,
     options: &Options,
+    huber: Option<f64>,
 ) -> Result<(Reconstruction, Option<BundleReport>), Error> {
     let mut rec = match used.complete() {
         Some(t) => tomasi_kanade(&t)?,
@@ -398,7 +399,11 @@ pub(crate) fn fit(
                 crate::limits::BUNDLE_FRAMES
             ));
         } else if bundle::work(used) <= crate::limits::BUNDLE_WORK {
-            let adjusted = bundle_adjust(used, &rec, &bundle::BundleOptions::with(options))?;
+            let bo = bundle::BundleOptions {
+                huber,
+                ..bundle::BundleOptions::with(options)
+            };
+            let adjusted = bundle_adjust(used, &rec, &bo)?;
             rec = adjusted.reconstruction;
             report = Some(adjusted.report);
         } else {

@@ -3,7 +3,10 @@
 //!
 //! Samples of four points in three frames are solved by §4's linear system
 //! (`derivations::p4f3::solve_core`), the body realised from its squared edges, every frame's
-//! camera fitted to the four points, every point intersected from those cameras. With a
+//! camera fitted to the four points, every point intersected from those cameras. Where the
+//! three frames share only three of the four points (tracks with gaps), §3's three-point
+//! solver (`derivations::p3f3`) gives the hypotheses instead: each feasible edge solution's
+//! depth-sign patterns, the other frames resected from the points they place. With a
 //! threshold, the best sample puts the most observations within it of their reprojections;
 //! without one, the best has the least median residual (least median of squares), and the
 //! threshold comes from that median ([`threshold`](super::threshold): the Rayleigh rule on
@@ -23,6 +26,7 @@ use super::gaps::{intersect, resect};
 use super::judge::{self, Images, Judgement};
 use super::threshold::{self, Threshold};
 use super::{BundleReport, Error, Frame, Observations, Reconstruction, Units, MIN_POINTS};
+use crate::derivations::p3f3;
 use crate::derivations::p4f3::{realize, solve_core};
 use crate::model::{rng, squared_lengths};
 use crate::numfmt::sig;
@@ -39,6 +43,11 @@ pub const LMEDS_SHARE: f64 = 0.5;
 /// Judgements from a fit, at most, after the sample's: each refits when the judgement
 /// changed.
 pub const REJUDGE_ROUNDS: usize = 3;
+
+/// Huber's corner in σ of the residual, 1.345 (95 % of least squares' efficiency on normal
+/// errors): the kept observations are adjusted with that loss, so an outlier the judgement
+/// missed pulls with a bounded force; σ is the threshold's (the threshold / 3.035).
+pub const HUBER_CORNER: f64 = 1.345;
 
 /// Options of [`ransac`] and [`run`].
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -110,6 +119,110 @@ fn sample_cameras(
         })
         .collect();
     Some(cams)
+}
+
+/// The sample's points, or, when the three frames do not see all four (tracks with gaps),
+/// four drawn from the points they all see (three and a repeat when they share only three):
+/// complete tracks draw nothing more, so their stream of samples is unchanged.
+fn seen_in_all(
+    obs: &Observations,
+    pts: [usize; 4],
+    frames3: &[usize; 3],
+    g: &mut impl Rng,
+) -> [usize; 4] {
+    let all = |j: usize| frames3.iter().all(|&f| obs.frames[f][j].is_some());
+    if pts.iter().all(|&j| all(j)) {
+        return pts;
+    }
+    let common: Vec<usize> = (0..obs.names.len()).filter(|&j| all(j)).collect();
+    match common.len() {
+        0..=2 => pts,
+        3 => [common[0], common[1], common[2], common[0]],
+        n => distinct::<4>(g, n).map(|i| common[i]),
+    }
+}
+
+/// The camera hypotheses of one sample: the four-point body's ([`sample_cameras`]), or,
+/// where the three frames share only three of the four points, the paper's three-point
+/// solver's ([`triangle_cameras`]).
+fn hypotheses(
+    obs: &Observations,
+    pts: &[usize; 4],
+    frames3: &[usize; 3],
+) -> (Vec<Vec<Option<Frame>>>, bool) {
+    if let Some(cams) = sample_cameras(obs, pts, frames3) {
+        return (vec![cams], false);
+    }
+    let mut shared: Vec<usize> = pts
+        .iter()
+        .copied()
+        .filter(|&j| frames3.iter().all(|&f| obs.frames[f][j].is_some()))
+        .collect();
+    shared.sort_unstable();
+    shared.dedup();
+    match shared[..] {
+        [a, b, c] => (triangle_cameras(obs, &[a, b, c], frames3), true),
+        _ => (Vec::new(), false),
+    }
+}
+
+/// Every camera hypothesis of three points in three frames by §3's solver: each feasible
+/// edge solution's structure-and-motion solutions (a triangle's depth signs flip frame by
+/// frame, 4 patterns in 3 frames up to the mirror), frame `frames3[0]`'s camera the
+/// identity; then the other frames resected from the points those cameras place.
+fn triangle_cameras(
+    obs: &Observations,
+    pts: &[usize; 3],
+    frames3: &[usize; 3],
+) -> Vec<Vec<Option<Frame>>> {
+    let image = |f: usize, j: usize| obs.frames[f][j].unwrap_or_default();
+    let frames: Vec<Vec<Vector2<f64>>> = frames3
+        .iter()
+        .map(|&f| pts.iter().map(|&j| image(f, j)).collect())
+        .collect();
+    let l: [[f64; 3]; 3] = std::array::from_fn(|i| {
+        let sq = squared_lengths(&frames[i].iter().map(|y| [y.x, y.y]).collect::<Vec<_>>());
+        [sq[0], sq[1], sq[2]]
+    });
+    let core = p3f3::solve_core(&l);
+    let names = pts.iter().map(|&j| obs.names[j].clone()).collect();
+    let Ok(tracks) = crate::model::Tracks::new(names, frames) else {
+        return Vec::new();
+    };
+    let mut out = Vec::new();
+    for k in (0..core.count).filter(|&k| core.feasible[k]) {
+        let recs = p3f3::reconstructions(&tracks, &core.squares[k]).unwrap_or_default();
+        for rec in recs {
+            let mut cams: Vec<Option<Frame>> = vec![None; obs.frames.len()];
+            for (i, &f) in frames3.iter().enumerate() {
+                // P is the origin of frame frames3[0]'s camera coordinates: t = P's image
+                cams[f] = Some(Frame {
+                    rotation: rec.rotations[i].into_inner(),
+                    translation: image(f, pts[0]),
+                });
+            }
+            out.push(extend_cameras(obs, cams));
+        }
+    }
+    out
+}
+
+/// The cameras extended to every frame that sees four points they place (each point
+/// intersected from the cameras that see it).
+fn extend_cameras(obs: &Observations, mut cams: Vec<Option<Frame>>) -> Vec<Option<Frame>> {
+    let views = judge::views(obs);
+    let placed: Vec<Option<Vector3<f64>>> = views.iter().map(|v| intersect(&cams, v)).collect();
+    for (f, row) in obs.frames.iter().enumerate() {
+        if cams[f].is_none() {
+            let seen: Vec<(usize, Vector2<f64>)> = row
+                .iter()
+                .enumerate()
+                .filter_map(|(j, y)| y.map(|y| (j, y)))
+                .collect();
+            cams[f] = resect(&placed, &seen);
+        }
+    }
+    cams
 }
 
 /// Samples needed for [`CONFIDENCE`] that one is all inliers, at inlier share `w`.
@@ -190,6 +303,9 @@ pub struct Sample {
     pub threshold: Threshold,
     /// The samples drawn.
     pub samples: usize,
+    /// Of them, those solved by the three-point solver (three frames sharing only three of
+    /// the sample's points).
+    pub triangles: usize,
 }
 
 /// The options' threshold, when given, is a positive number.
@@ -210,6 +326,19 @@ pub fn ransac(obs: &Observations, o: &RansacOptions) -> Result<Sample, Error> {
     best_sample(obs, &judge::views(obs), o)
 }
 
+/// The samples needed once a sample of score `s` and residuals `res` is the best: from the
+/// share of clean points its threshold (given, or from its median) counts.
+fn needed_after(views: &[Images], res: &[f64], s: f64, o: &RansacOptions, floor: f64) -> usize {
+    let (t, cap) = match o.threshold {
+        Some(t) => (t, 1.0),
+        None => (
+            Threshold::from_median(s, res.len(), 1.0, floor).map_or(f64::INFINITY, |t| t.value),
+            LMEDS_SHARE,
+        ),
+    };
+    samples_needed(clean_share(views, res, t).min(cap), o.max_samples)
+}
+
 /// [`ransac`] on the observations' images by point.
 fn best_sample(obs: &Observations, views: &[Images], o: &RansacOptions) -> Result<Sample, Error> {
     let (p, k) = (obs.names.len(), obs.frames.len());
@@ -218,30 +347,24 @@ fn best_sample(obs: &Observations, views: &[Images], o: &RansacOptions) -> Resul
     let mut best: Option<(f64, Vec<Option<Frame>>)> = None;
     let (mut res, mut scratch) = (Vec::with_capacity(obs.count()), Vec::new());
     let mut needed = o.max_samples.max(1);
-    let mut drawn = 0;
+    let (mut drawn, mut triangles) = (0, 0);
     while drawn < needed {
         drawn += 1;
         let pts: [usize; 4] = distinct(&mut g, p);
         let frames3: [usize; 3] = distinct(&mut g, k);
-        let Some(cams) = sample_cameras(obs, &pts, &frames3) else {
-            continue;
-        };
-        sample_residuals(views, &cams, &mut res);
-        let s = score(&res, o.threshold, &mut scratch);
-        let bar = best.as_ref().map_or(f64::INFINITY, |b| b.0);
-        if s.is_nan() || s >= bar {
-            continue;
+        let pts = seen_in_all(obs, pts, &frames3, &mut g);
+        let (hyps, by_three) = hypotheses(obs, &pts, &frames3);
+        triangles += usize::from(by_three && !hyps.is_empty());
+        for cams in hyps {
+            sample_residuals(views, &cams, &mut res);
+            let s = score(&res, o.threshold, &mut scratch);
+            let bar = best.as_ref().map_or(f64::INFINITY, |b| b.0);
+            if s.is_nan() || s >= bar {
+                continue;
+            }
+            needed = needed_after(views, &res, s, o, floor).max(drawn);
+            best = Some((s, cams));
         }
-        let (t, cap) = match o.threshold {
-            Some(t) => (t, 1.0),
-            None => (
-                Threshold::from_median(s, res.len(), 1.0, floor).map_or(f64::INFINITY, |t| t.value),
-                LMEDS_SHARE,
-            ),
-        };
-        let share = clean_share(views, &res, t).min(cap);
-        needed = samples_needed(share, o.max_samples).max(drawn);
-        best = Some((s, cams));
     }
     let Some((s, cameras)) = best else {
         return Err(Error::Unreachable(format!(
@@ -263,6 +386,7 @@ fn best_sample(obs: &Observations, views: &[Images], o: &RansacOptions) -> Resul
         cameras,
         threshold,
         samples: drawn,
+        triangles,
     })
 }
 
@@ -298,6 +422,8 @@ pub struct Report {
     pub dropped: Vec<Dropped>,
     /// RANSAC samples drawn.
     pub samples: usize,
+    /// Of them, those solved by the three-point solver.
+    pub triangles: usize,
     /// Judgements from a fit after the sample's.
     pub rounds: usize,
 }
@@ -336,7 +462,8 @@ fn fit_judged(
         )));
     }
     let used = judged.observations(obs);
-    let (rec, bundle) = super::fit(&used, options)?;
+    let corner = t.value * HUBER_CORNER / threshold::RAYLEIGH_INLIER;
+    let (rec, bundle) = super::fit(&used, options, Some(corner))?;
     Ok((used, rec, bundle))
 }
 
@@ -432,7 +559,13 @@ pub fn run(
             }
         }
     }
-    let report = summary(obs, &judged, threshold, sample.samples, rounds);
+    let report = summary(
+        obs,
+        &judged,
+        threshold,
+        (sample.samples, sample.triangles),
+        rounds,
+    );
     let (used, mut reconstruction, bundle) = fit;
     reconstruction
         .method
@@ -450,7 +583,7 @@ fn summary(
     obs: &Observations,
     judged: &Judgement,
     threshold: Threshold,
-    samples: usize,
+    (samples, triangles): (usize, usize),
     rounds: usize,
 ) -> Report {
     let mut is_kept = vec![false; obs.names.len()];
@@ -491,6 +624,7 @@ fn summary(
             })
             .collect(),
         samples,
+        triangles,
         rounds,
     }
 }
@@ -498,8 +632,16 @@ fn summary(
 /// The `method` line of robust mode.
 fn method_line(r: &Report, given: bool, note: Option<String>) -> String {
     let mut s = format!(
-        "ransac over the four-point solver: {} samples, the best by {}; judged again from the fit {} time(s): {} of {} observations dropped beyond {} image units, {} of {} points kept",
+        "ransac over the four-point solver: {} samples{}, the best by {}; judged again from the fit {} time(s): {} of {} observations dropped beyond {} image units, {} of {} points kept",
         r.samples,
+        if r.triangles > 0 {
+            format!(
+                " ({} of them by the three-point solver: three frames sharing only three points)",
+                r.triangles
+            )
+        } else {
+            String::new()
+        },
         if given {
             "the most observations within the threshold"
         } else {
