@@ -31,7 +31,8 @@ pub struct Args {
     /// median), corrected for the fit's parameters, never below rounding.
     #[arg(long, allow_negative_numbers = true, requires = "robust")]
     threshold: Option<f64>,
-    /// Seed of --robust's sample generator.
+    /// Seed of --robust's sample generator, and of the random starts of variable projection
+    /// (tracks with most entries missing, tried when the chain of frame pairs breaks).
     #[arg(long, allow_negative_numbers = true, default_value_t = DEFAULT_SEED)]
     seed: u64,
     /// Skip the bundle adjustment (Tomasi–Kanade only).
@@ -72,6 +73,7 @@ pub fn run(a: Args) -> Result<(), Error> {
     let options = Options {
         bundle: !a.no_bundle,
         robust,
+        seed: a.seed,
         ..Options::default()
     };
     let outcome = reconstruct(&obs, &options).map_err(|e| in_file(&a.input, e.into()))?;

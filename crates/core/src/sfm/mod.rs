@@ -293,6 +293,9 @@ pub struct Options {
     pub max_iterations: usize,
     /// RANSAC over the four-point solver, when given.
     pub robust: Option<robust::RansacOptions>,
+    /// The seed of variable projection's random starts (tried when the chain of frame pairs
+    /// breaks); RANSAC's samples take theirs from `robust`.
+    pub seed: u64,
 }
 
 impl Default for Options {
@@ -301,6 +304,7 @@ impl Default for Options {
             bundle: true,
             max_iterations: bundle::MAX_ITERATIONS,
             robust: None,
+            seed: robust::DEFAULT_SEED,
         }
     }
 }
@@ -355,7 +359,7 @@ pub fn reconstruct(obs: &Observations, options: &Options) -> Result<Outcome, Err
 /// block grown when it fails; with fewer missing, the other way round. `method` names the
 /// path taken, and why the first failed.
 fn with_gaps(used: &Observations, options: &Options) -> Result<Reconstruction, Error> {
-    let seed = options.robust.map_or(robust::DEFAULT_SEED, |r| r.seed);
+    let seed = options.seed;
     let cells = used.frames.len() * used.names.len();
     let mostly_missing = 2 * used.count() < cells;
     let (first, second): (Result<Reconstruction, Error>, &str) = if mostly_missing {
