@@ -287,7 +287,51 @@ pub fn load_cases<C: Schema>(
         texts.push((p, text));
     }
     known_restated_claims(&cases, &texts)?;
+    inventory_claims(origin, &texts)?;
     Ok(cases)
+}
+
+/// Where the folder has a claim inventory (`claims.md`), every `claim:` a case names must
+/// be one of its ids (or `id/part`): a typo would decide a claim the paper does not make.
+fn inventory_claims(origin: &CaseOrigin, texts: &[(PathBuf, String)]) -> Result<()> {
+    let mut ids = std::collections::BTreeSet::new();
+    for name in super::INVENTORY_FILES {
+        match origin.file(name) {
+            Ok((_, text)) => ids.extend(super::inventory_ids(&text)),
+            Err(Error::Io { .. }) if name != super::INVENTORY_FILES[0] => {}
+            Err(Error::Io { .. }) => return Ok(()),
+            Err(e) => return Err(e),
+        }
+    }
+    for (p, text) in texts {
+        let tree: serde_json::Value = parse_yaml(text, p)?;
+        let mut named = std::collections::BTreeSet::new();
+        collect_claims(&tree, &mut named);
+        if let Some(id) = named
+            .iter()
+            .find(|id| !super::refers_to_inventory(id, &ids))
+        {
+            // the line of this `claim:` itself (plain or quoted)
+            let line = text.lines().position(|l| {
+                let v = l.trim_start().trim_start_matches("- ");
+                v.strip_prefix("claim:")
+                    .is_some_and(|v| v.trim().trim_matches(['"', '\'']) == id.as_str())
+            });
+            return Err(Error::Input {
+                location: InputLocation {
+                    file: p.clone(),
+                    line: line.map(|l| l as u64 + 1),
+                    column: None,
+                    field: Some("claim".into()),
+                },
+                message: format!(
+                    "`{id}` is not a claim of the inventory ({}): a claim the paper makes is listed there first",
+                    super::INVENTORY_FILES.join(", ")
+                ),
+            });
+        }
+    }
+    Ok(())
 }
 
 /// A case file's text, refused beyond the size limit or when it is not UTF-8.

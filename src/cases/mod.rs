@@ -4,6 +4,7 @@
 //! both its exact value and its precision.
 
 mod formula_size;
+mod inventory;
 mod latex;
 mod load;
 mod origin;
@@ -15,6 +16,7 @@ mod validate;
 mod verify;
 
 pub use formula_size::Size as FormulaSize;
+pub use inventory::{inventory_ids, refers_to_inventory, INVENTORY_FILES};
 pub use latex::{sha256_hex, source_path, LatexSource, SourceRecord, PAPER_ENV};
 pub(crate) use load::invalid;
 pub(crate) use load::line_of;

@@ -143,3 +143,40 @@ fn bad_usage_is_exit_2_and_names_the_option() {
     );
     assert_eq!(std::fs::read_to_string(&file).unwrap(), "mine");
 }
+
+#[test]
+fn a_claim_the_inventory_does_not_list_is_refused_at_its_line() {
+    let dir = tempfile::tempdir().unwrap();
+    let src = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("paper_cases");
+    for e in std::fs::read_dir(&src).unwrap() {
+        let p = e.unwrap().path();
+        std::fs::copy(&p, dir.path().join(p.file_name().unwrap())).unwrap();
+    }
+    let file = dir.path().join("ex2_three_frames.yaml");
+    let text = std::fs::read_to_string(&file).unwrap();
+    let line = text
+        .lines()
+        .position(|l| l.trim() == "claim: ex2-figure")
+        .unwrap()
+        + 1;
+    std::fs::write(
+        &file,
+        text.replace("claim: ex2-figure", "claim: no-such-claim"),
+    )
+    .unwrap();
+    let out = orthocheck(&[
+        "report",
+        "--cases",
+        dir.path().to_str().unwrap(),
+        "--out",
+        dir.path().join("out").to_str().unwrap(),
+    ]);
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8(out.stderr).unwrap();
+    assert!(
+        err.contains(&format!("ex2_three_frames.yaml:{line}"))
+            && err.contains("claim")
+            && err.contains("`no-such-claim` is not a claim of the inventory"),
+        "{err}"
+    );
+}

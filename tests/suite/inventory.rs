@@ -1,5 +1,6 @@
 use std::collections::BTreeSet;
 
+use orthocheck::cases::{inventory_ids, refers_to_inventory};
 use orthocheck::check::Verdict;
 
 use crate::common;
@@ -35,34 +36,6 @@ fn inventory_claim_ids() -> BTreeSet<String> {
         ids.len()
     );
     ids
-}
-
-/// The first cell of each row of the table headed `| id | …`, without the header and the
-/// `|---|` rule.
-fn inventory_ids(text: &str) -> BTreeSet<String> {
-    let mut ids = BTreeSet::new();
-    let mut in_table = false;
-    for line in text.lines().map(str::trim) {
-        let Some(row) = line.strip_prefix('|') else {
-            in_table = false;
-            continue;
-        };
-        let first = row.split('|').next().unwrap_or("").trim().trim_matches('`');
-        if first == "id" {
-            in_table = true;
-        } else if in_table && !first.starts_with("---") && !first.is_empty() {
-            ids.insert(first.to_string());
-        }
-    }
-    ids
-}
-
-/// `id` or `id/suffix` with `id` an inventory id.
-fn refers_to_inventory(reference: &str, ids: &BTreeSet<String>) -> bool {
-    ids.contains(reference)
-        || reference
-            .split_once('/')
-            .is_some_and(|(id, _)| ids.contains(id))
 }
 
 /// Every claim id a case file names: the `claim` of each claim reference and each id a
