@@ -25,6 +25,7 @@ mod inventory;
 mod renderers;
 /// Orthographic structure from motion: `reconstruct` and the `sfm` library.
 mod sfm;
+mod sfm_tracks;
 /// Every formula of the paper's cases, typeset: no script swallows a symbol, every symbol
 /// reaches the reader in its order; eq. p3f3sqr reads 2a²b².
 mod typesetting;
