@@ -4,7 +4,7 @@
 //!
 //! Usage: `cargo run --release -p orthocheck-benches --example turntable_starts -- [POINTS]
 //! [WINDOW] [STARTS]` (defaults 117 points, window 4, 20 starts; 36 frames, 30° elevation,
-//! 0.1 % noise, seed 1: the case of `tests/suite/sfm.rs`). A run reaches the optimum when its
+//! 0.1 % noise, seed 1: the case of `tests/suite/sfm_tracks.rs`). A run reaches the optimum when its
 //! cost is within 10⁻⁶ of the best cost found, relative (distinct local optima differ by
 //! orders of magnitude more: the distinct costs are printed).
 
