@@ -166,18 +166,23 @@ fn report_writes_both_files_deterministically() {
     assert_eq!(total as usize, claims.len());
 }
 
+/// `report --cases DIR --out DIR/out`.
+pub(crate) fn report_of_cases(dir: &Path) -> std::process::Output {
+    orthocheck(&[
+        "report",
+        "--cases",
+        dir.to_str().unwrap(),
+        "--out",
+        dir.join("out").to_str().unwrap(),
+    ])
+}
+
 #[test]
 fn a_bad_case_file_exits_2_and_names_file_line_and_field() {
     let dir = tempfile::tempdir().unwrap();
     let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/bad_cases/wrong_type.yaml");
     std::fs::copy(&src, dir.path().join("wrong_type.yaml")).unwrap();
-    let out = orthocheck(&[
-        "report",
-        "--cases",
-        dir.path().to_str().unwrap(),
-        "--out",
-        dir.path().join("out").to_str().unwrap(),
-    ]);
+    let out = report_of_cases(dir.path());
     assert_eq!(out.status.code(), Some(2));
     let err = String::from_utf8_lossy(&out.stderr);
     assert!(

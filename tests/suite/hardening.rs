@@ -164,13 +164,7 @@ fn a_claim_the_inventory_does_not_list_is_refused_at_its_line() {
         text.replace("claim: ex2-figure", "claim: no-such-claim"),
     )
     .unwrap();
-    let out = orthocheck(&[
-        "report",
-        "--cases",
-        dir.path().to_str().unwrap(),
-        "--out",
-        dir.path().join("out").to_str().unwrap(),
-    ]);
+    let out = crate::cli::report_of_cases(dir.path());
     assert_eq!(out.status.code(), Some(2));
     let err = String::from_utf8(out.stderr).unwrap();
     assert!(

@@ -56,8 +56,8 @@ pub struct Factorised {
     pub converged: bool,
 }
 
-/// The point that best fits its images through the cameras; `None` when they do not fix it.
-pub fn eliminate(cams: &[Matrix2x4<f64>], images: &Images) -> Option<Vector3<f64>> {
+/// A point's normal equations H X = b through the cameras: H = Σ M_fᵀM_f, b = Σ M_fᵀ(y − t_f).
+fn point_system(cams: &[Matrix2x4<f64>], images: &Images) -> (Matrix3<f64>, Vector3<f64>) {
     let mut h = Matrix3::zeros();
     let mut b = Vector3::zeros();
     for (f, y) in images {
@@ -65,6 +65,12 @@ pub fn eliminate(cams: &[Matrix2x4<f64>], images: &Images) -> Option<Vector3<f64
         h += m.transpose() * m;
         b += m.transpose() * (y - cams[*f].column(3));
     }
+    (h, b)
+}
+
+/// The point that best fits its images through the cameras; `None` when they do not fix it.
+pub fn eliminate(cams: &[Matrix2x4<f64>], images: &Images) -> Option<Vector3<f64>> {
+    let (h, b) = point_system(cams, images);
     h.cholesky().map(|c| c.solve(&b))
 }
 
@@ -96,13 +102,7 @@ fn normal(cams: &[Matrix2x4<f64>], views: &[Images]) -> Option<(DMatrix<f64>, DV
     let mut n = DMatrix::zeros(8 * k, 8 * k);
     let mut g = DVector::zeros(8 * k);
     for v in views {
-        let mut h = Matrix3::zeros();
-        let mut b = Vector3::zeros();
-        for (f, y) in v {
-            let m = cams[*f].fixed_columns::<3>(0);
-            h += m.transpose() * m;
-            b += m.transpose() * (y - cams[*f].column(3));
-        }
+        let (h, b) = point_system(cams, v);
         let l = h.cholesky()?.unpack();
         let x = l
             .transpose()
