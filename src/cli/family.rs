@@ -27,6 +27,17 @@ pub fn run(a: Args) -> Result<(), Error> {
     orthocheck::limits::count("--samples", a.samples, orthocheck::limits::FAMILY_SAMPLES)
         .map_err(Error::InvalidInput)?;
     let t = two_frames(&a.input, PointOrder::ByName)?;
+    orthocheck::limits::at_most(
+        "the points × --samples of family",
+        t.names.len().saturating_mul(a.samples),
+        orthocheck::limits::FAMILY_POINTS_TIMES_SAMPLES,
+    )
+    .map_err(|m| {
+        in_file(
+            &a.input,
+            Error::InvalidInput(format!("{m}: fewer --samples fit")),
+        )
+    })?;
     let members =
         sample_family(&t.frames[0], &t.frames[1], a.samples).map_err(|e| in_file(&a.input, e))?;
     let view = report::family_view(&t.names, &members);

@@ -64,6 +64,8 @@ impl From<IdentifyMethod> for identity::IdentifyMethod {
 
 /// Rank the assignments of frame 2's points to frame 1's, print the best `top` by name.
 pub fn run(a: Args) -> Result<(), Error> {
+    orthocheck::limits::count("--top", a.top, orthocheck::limits::IDENTIFY_TOP)
+        .map_err(Error::InvalidInput)?;
     let t = two_frames(&a.input, PointOrder::AsListed)?;
     check_size(&a, t.frames[0].len()).map_err(|m| in_file(&a.input, Error::InvalidInput(m)))?;
     let r = identity::identify(&t.frames[0], &t.frames[1], a.method.into(), a.top)

@@ -33,6 +33,12 @@ pub fn run(a: Args) -> Result<(), Error> {
         )));
     }
     let t = two_frames(&a.input, PointOrder::ByName)?;
+    orthocheck::limits::at_most(
+        "the number of points per frame of membership",
+        t.names.len(),
+        orthocheck::limits::MEMBERSHIP_POINTS,
+    )
+    .map_err(|m| in_file(&a.input, Error::InvalidInput(m)))?;
     if let Some(d) = identity::degeneracy(&t.frames[0], &t.frames[1]) {
         return Err(in_file(&a.input, Error::InvalidInput(d.to_string())));
     }

@@ -174,3 +174,50 @@ fn a_claim_the_inventory_does_not_list_is_refused_at_its_line() {
         "{err}"
     );
 }
+
+#[test]
+fn the_two_frame_commands_refuse_work_beyond_their_limits_before_doing_it() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = |n: usize| {
+        let f = dir.path().join(format!("p{n}.yaml"));
+        let s = f.to_str().unwrap().to_string();
+        let out = orthocheck(&[
+            "synth",
+            "--points",
+            &n.to_string(),
+            "--frames",
+            "2",
+            "--seed",
+            "1",
+            "--out",
+            &s,
+        ]);
+        assert!(out.status.success());
+        s
+    };
+    let small = file(600);
+    let cases: [(Vec<&str>, &str); 2] = [
+        (
+            vec!["identify", "--input", &small, "--top", "10001"],
+            "--top is 10001, more than the limit of 10000",
+        ),
+        (
+            vec!["family", "--input", &small, "--samples", "10000"],
+            "the points × --samples of family is 6000000",
+        ),
+    ];
+    for (args, says) in cases {
+        let out = orthocheck(&args);
+        assert_eq!(out.status.code(), Some(2), "{args:?}");
+        let err = String::from_utf8(out.stderr).unwrap();
+        assert!(err.contains(says), "{err}");
+    }
+    let big = file(50_001);
+    let out = orthocheck(&["membership", "--input", &big]);
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8(out.stderr).unwrap();
+    assert!(
+        err.contains("p50001.yaml") && err.contains("more than the limit of 50000"),
+        "{err}"
+    );
+}

@@ -21,6 +21,14 @@ pub const DOF_POINTS_TIMES_FRAMES: usize = 1_000;
 pub const DOF_GRID: usize = 20;
 /// Members of the two-frame family printed by `family --samples`.
 pub const FAMILY_SAMPLES: usize = 10_000;
+/// `family`: points × samples (every sample places every point; about 1.3 µs each, so 5 × 10⁶
+/// is about 7 s, and the output stays within a few hundred MB).
+pub const FAMILY_POINTS_TIMES_SAMPLES: usize = 5_000_000;
+/// `membership`: points per frame (its robust tolerance grows about as n^1.8: 32,000 points
+/// take 3 s, 50,000 about 7 s).
+pub const MEMBERSHIP_POINTS: usize = 50_000;
+/// `identify --top`: assignments listed (each is printed with its full correspondence).
+pub const IDENTIFY_TOP: usize = 10_000;
 /// Points of `synth`.
 pub const SYNTH_POINTS: usize = 100_000;
 /// Frames of `synth`.
