@@ -361,28 +361,12 @@ fn csv_frames(
 
 /// Tracks as YAML, in the format [`load_tracks`] reads (shortest round-trip floats).
 pub fn tracks_to_yaml(t: &Tracks) -> String {
-    let mut s = String::new();
-    let _ = writeln!(s, "points: [{}]", t.names.join(", "));
-    let _ = writeln!(s, "frames:");
-    for f in &t.frames {
-        let pts: Vec<String> = f
-            .iter()
-            .map(|p| format!("[{:?}, {:?}]", p.x, p.y))
-            .collect();
-        let _ = writeln!(s, "  - [{}]", pts.join(", "));
-    }
-    s
+    observations_to_yaml(&crate::sfm::Observations::from_tracks(t))
 }
 
 /// Tracks as CSV with the header `frame,point,x,y` (frames numbered from 1).
 pub fn tracks_to_csv(t: &Tracks) -> String {
-    let mut s = String::from("frame,point,x,y\n");
-    for (i, f) in t.frames.iter().enumerate() {
-        for (n, p) in t.names.iter().zip(f) {
-            let _ = writeln!(s, "{},{n},{:?},{:?}", i + 1, p.x, p.y);
-        }
-    }
-    s
+    observations_to_csv(&crate::sfm::Observations::from_tracks(t))
 }
 
 /// Observations with gaps as CSV (`frame,point,x,y`, a missing point has no row), in the

@@ -82,13 +82,15 @@ pub const FORMULA_TERMS: f64 = 1e6;
 /// its eigen-decomposition costs about side³ (1,000 takes about a second).
 pub const RECONSTRUCT_GRAM: usize = 1_000;
 /// The work of one bundle-adjustment iteration, Σ over points of (frames seeing it)²: the
-/// Schur complement's accumulation costs at most about 37 multiply-adds per unit, in matrix
-/// products for long tracks (docs/limits.md, "Bundle adjustment's cost"); beyond it
+/// Schur complement's accumulation costs about 37.5 scattered multiply-adds per unit, or at
+/// most 4 times that in matrix products for long tracks (docs/limits.md, "Bundle adjustment's
+/// cost"); beyond it
 /// `reconstruct` skips the adjustment and says so in `method`.
 pub const BUNDLE_WORK: usize = 10_000_000;
 /// Frames of a bundle adjustment: the reduced camera system is dense, 5k × 5k, factorised in
-/// about (5k)³/3 multiply-adds per iteration by a blocked Cholesky (k = 200: 3.3 × 10⁸, about
-/// 10 ms); beyond it `reconstruct` skips the adjustment and says so in `method`.
+/// about (5k)³/3 multiply-adds per iteration by a blocked Cholesky (k = 200: 3.3 × 10⁸; a whole
+/// iteration at the limit takes 23.8 ms, docs/limits.md); beyond it `reconstruct` skips the
+/// adjustment and says so in `method`.
 pub const BUNDLE_FRAMES: usize = 200;
 /// Frames of a variable-projection factorisation (tracks with most entries missing): its
 /// camera system is dense, 8k × 8k, (8k)³/3 multiply-adds per step (k = 100: 1.7 × 10⁸);

@@ -1,6 +1,7 @@
 //! Exact and floating algebra: polynomials over ℚ, exact root isolation, float roots, rank.
 
 pub mod cholesky;
+pub mod damping;
 mod diff;
 pub mod float_roots;
 mod gram;

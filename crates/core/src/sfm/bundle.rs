@@ -18,6 +18,7 @@ use nalgebra::{
 
 use super::{Error, Observations, Reconstruction, Units};
 use crate::algebra::cholesky::{cholesky_lower, cholesky_solve};
+use crate::algebra::damping::Damping;
 
 /// Levenberg–Marquardt iterations by default.
 pub const MAX_ITERATIONS: usize = 100;
@@ -221,9 +222,9 @@ const CHUNK: usize = 64;
 /// Rows of the camera system per matrix product when a chunk's points span every frame: the
 /// lower triangle is computed panel by panel, about half the products of the whole square.
 const PANEL: usize = 128;
-/// How much faster a multiply-add runs in a large matrix product than in the 5 × 3 · 3 × 5
-/// block products of the scattered accumulation (about 4 here; the choice only moves time,
-/// never the result beyond rounding).
+/// How much faster a multiply-add is taken to run in a large matrix product than in the
+/// 5 × 3 · 3 × 5 block products of the scattered accumulation: a chosen factor, not a
+/// measured one (it only moves time, never the result beyond rounding).
 const DENSE_GAIN: usize = 4;
 
 /// One point's share of the damped step: M = L⁻¹ for L Lᵀ = V + λI, and per image the
@@ -425,7 +426,8 @@ pub fn bundle_adjust(
     })
 }
 
-/// Damped steps from `state` until one lowers the cost: that step's state, cost and length.
+/// Damped steps from `state` until one lowers the cost (`damping` updated by Nielsen's
+/// rule): that step's state, cost and length.
 /// `None` when none can beyond rounding: a rejected step whose predicted reduction is
 /// within the cost's rounding (4ε·cost) or whose length is within the parameters' (4ε·‖x‖)
 /// ends the search, as does [`MAX_REJECTIONS`] in a row (more damping only shortens the
@@ -435,29 +437,26 @@ fn trial(
     by_point: &ByPoint,
     state: &State,
     c: f64,
-    (lambda, nu): (&mut f64, &mut f64),
+    damping: &mut Damping,
     huber: Option<f64>,
 ) -> Option<(State, f64, f64)> {
     for _ in 0..MAX_REJECTIONS {
-        if let Some((dc, dp)) = solve(n, by_point, *lambda) {
+        if let Some((dc, dp)) = solve(n, by_point, damping.lambda) {
             let next = state.step(&dc, &dp);
             let nc = cost(by_point, &next, huber);
-            let pred = predicted(n, &dc, &dp, *lambda);
+            let pred = predicted(n, &dc, &dp, damping.lambda);
             let step = (dc.iter().map(|d| d.norm_squared()).sum::<f64>()
                 + dp.iter().map(|d| d.norm_squared()).sum::<f64>())
             .sqrt();
             if nc.is_finite() && nc < c && pred > 0.0 {
-                let rho = (c - nc) / pred;
-                *lambda *= (1.0 - (2.0 * rho - 1.0).powi(3)).max(1.0 / 3.0);
-                *nu = 2.0;
+                damping.accepted((c - nc) / pred);
                 return Some((next, nc, step));
             }
             if pred <= 4.0 * f64::EPSILON * c || step <= 4.0 * f64::EPSILON * state.norm() {
                 return None;
             }
         }
-        *lambda *= *nu;
-        *nu *= 2.0;
+        damping.rejected();
     }
     None
 }
@@ -481,12 +480,10 @@ fn levenberg_marquardt(
         .iter()
         .map(|u| u.diagonal().max())
         .chain(first.v.iter().map(|v| v.diagonal().max()));
-    let mut lambda = 1e-3 * diag.fold(f64::MIN_POSITIVE, f64::max);
-    let mut nu = 2.0;
+    let mut damping = Damping::from_diagonal_max(diag.fold(f64::MIN_POSITIVE, f64::max));
     while report.iterations < max_iterations && c > 0.0 {
         let n = normal(by_point, &state, huber);
-        let damping = (&mut lambda, &mut nu);
-        let Some((next, nc, step)) = trial(&n, by_point, &state, c, damping, huber) else {
+        let Some((next, nc, step)) = trial(&n, by_point, &state, c, &mut damping, huber) else {
             report.converged = true;
             break;
         };

@@ -25,6 +25,7 @@ use super::gaps::intersect;
 use super::judge::{self, Images};
 use super::{Error, Frame, Observations, Reconstruction, Units};
 use crate::algebra::cholesky::{cholesky_lower, cholesky_solve};
+use crate::algebra::damping::Damping;
 use crate::algebra::{complete_rotation, orthonormal_rows};
 use crate::model::rng;
 
@@ -183,8 +184,7 @@ pub fn varpro(views: &[Images], start: Cameras, max_iterations: usize) -> Option
     let (mut iterations, mut converged) = (0, false);
     while iterations < max_iterations && c > 0.0 {
         let (n, g) = normal(&cams, views)?;
-        // Marquardt's start: 10⁻³ of the largest diagonal entry
-        let d = damping.get_or_insert((1e-3 * n.diagonal().max().max(f64::MIN_POSITIVE), 2.0));
+        let d = damping.get_or_insert_with(|| Damping::from_diagonal_max(n.diagonal().max()));
         let Some((nx, nc)) = trial(views, &cams, c, &n, &g, d) else {
             converged = true;
             break;
@@ -201,42 +201,38 @@ pub fn varpro(views: &[Images], start: Cameras, max_iterations: usize) -> Option
     Some(finish(cams, views, c, iterations, converged))
 }
 
-/// Damped steps (Nielsen's update of λ, ν in `damping`) until one lowers the cost: its
-/// cameras and cost. `None` when none can beyond rounding (a rejected step's predicted gain
-/// within 4ε of the cost, or [`MAX_REJECTIONS`] in a row).
+/// Damped steps (`damping` updated by Nielsen's rule) until one lowers the cost: its cameras
+/// and cost. `None` when none can beyond rounding (a rejected step's predicted gain within 4ε
+/// of the cost, or [`MAX_REJECTIONS`] in a row).
 fn trial(
     views: &[Images],
     cams: &[Matrix2x4<f64>],
     c: f64,
     n: &DMatrix<f64>,
     g: &DVector<f64>,
-    damping: &mut (f64, f64),
+    damping: &mut Damping,
 ) -> Option<(Cameras, f64)> {
-    let (lambda, nu) = damping;
     for _ in 0..MAX_REJECTIONS {
         let mut damped = n.clone();
         for i in 0..damped.nrows() {
-            damped[(i, i)] += *lambda;
+            damped[(i, i)] += damping.lambda;
         }
         if let Some(d) = cholesky_lower(damped).and_then(|l| cholesky_solve(&l, &-g)) {
-            let pred = 0.5 * d.dot(&(&d * *lambda - g));
+            let pred = 0.5 * d.dot(&(&d * damping.lambda - g));
             let next = normalised(&stepped(cams, &d));
             let nc = next.as_ref().and_then(|nx| cost(nx, views));
             if let (Some(nx), Some(nc)) = (next, nc)
                 && nc < c
                 && pred > 0.0
             {
-                let rho = (c - nc) / pred;
-                *lambda *= (1.0 - (2.0 * rho - 1.0).powi(3)).max(1.0 / 3.0);
-                *nu = 2.0;
+                damping.accepted((c - nc) / pred);
                 return Some((nx, nc));
             }
             if pred <= 4.0 * f64::EPSILON * c {
                 return None;
             }
         }
-        *lambda *= *nu;
-        *nu *= 2.0;
+        damping.rejected();
     }
     None
 }

@@ -362,7 +362,7 @@ fn with_gaps(used: &Observations, options: &Options) -> Result<Reconstruction, E
     let seed = options.seed;
     let cells = used.frames.len() * used.names.len();
     let mostly_missing = 2 * used.count() < cells;
-    let (first, second): (Result<Reconstruction, Error>, &str) = if mostly_missing {
+    let (first, first_name): (Result<Reconstruction, Error>, &str) = if mostly_missing {
         (missing::reconstruct(used, seed), "variable projection")
     } else {
         (gaps::initial(used), "largest complete block")
@@ -375,7 +375,7 @@ fn with_gaps(used: &Observations, options: &Options) -> Result<Reconstruction, E
             } else {
                 missing::reconstruct(used, seed)?
             };
-            r.method.insert(0, format!("{second}: {why}"));
+            r.method.insert(0, format!("{first_name}: {why}"));
             Ok(r)
         }
         Err(e) => Err(e),

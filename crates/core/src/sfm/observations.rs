@@ -17,12 +17,23 @@ pub struct Observations {
 impl Observations {
     /// Complete tracks as observations.
     pub fn from_tracks(t: &Tracks) -> Observations {
+        Observations::seen_where(t, |_, _| true)
+    }
+
+    /// The tracks' images where `seen(frame, point)` holds (indices), gaps elsewhere.
+    pub fn seen_where(t: &Tracks, seen: impl Fn(usize, usize) -> bool) -> Observations {
         Observations {
             names: t.names.clone(),
             frames: t
                 .frames
                 .iter()
-                .map(|f| f.iter().map(|y| Some(*y)).collect())
+                .enumerate()
+                .map(|(f, row)| {
+                    row.iter()
+                        .enumerate()
+                        .map(|(j, y)| seen(f, j).then_some(*y))
+                        .collect()
+                })
                 .collect(),
         }
     }

@@ -147,6 +147,7 @@ fn seen_in_all(
 /// solver's ([`triangle_cameras`]).
 fn hypotheses(
     obs: &Observations,
+    views: &[Images],
     pts: &[usize; 4],
     frames3: &[usize; 3],
 ) -> (Vec<Vec<Option<Frame>>>, bool) {
@@ -161,7 +162,7 @@ fn hypotheses(
     shared.sort_unstable();
     shared.dedup();
     match shared[..] {
-        [a, b, c] => (triangle_cameras(obs, &[a, b, c], frames3), true),
+        [a, b, c] => (triangle_cameras(obs, views, &[a, b, c], frames3), true),
         _ => (Vec::new(), false),
     }
 }
@@ -172,6 +173,7 @@ fn hypotheses(
 /// identity; then the other frames resected from the points those cameras place.
 fn triangle_cameras(
     obs: &Observations,
+    views: &[Images],
     pts: &[usize; 3],
     frames3: &[usize; 3],
 ) -> Vec<Vec<Option<Frame>>> {
@@ -201,7 +203,7 @@ fn triangle_cameras(
                     translation: image(f, pts[0]),
                 });
             }
-            out.push(extend_cameras(obs, cams));
+            out.push(extend_cameras(obs, views, cams));
         }
     }
     out
@@ -209,8 +211,11 @@ fn triangle_cameras(
 
 /// The cameras extended to every frame that sees four points they place (each point
 /// intersected from the cameras that see it).
-fn extend_cameras(obs: &Observations, mut cams: Vec<Option<Frame>>) -> Vec<Option<Frame>> {
-    let views = judge::views(obs);
+fn extend_cameras(
+    obs: &Observations,
+    views: &[Images],
+    mut cams: Vec<Option<Frame>>,
+) -> Vec<Option<Frame>> {
     let placed: Vec<Option<Vector3<f64>>> = views.iter().map(|v| intersect(&cams, v)).collect();
     for (f, row) in obs.frames.iter().enumerate() {
         if cams[f].is_none() {
@@ -353,7 +358,7 @@ fn best_sample(obs: &Observations, views: &[Images], o: &RansacOptions) -> Resul
         let pts: [usize; 4] = distinct(&mut g, p);
         let frames3: [usize; 3] = distinct(&mut g, k);
         let pts = seen_in_all(obs, pts, &frames3, &mut g);
-        let (hyps, by_three) = hypotheses(obs, &pts, &frames3);
+        let (hyps, by_three) = hypotheses(obs, views, &pts, &frames3);
         triangles += usize::from(by_three && !hyps.is_empty());
         for cams in hyps {
             sample_residuals(views, &cams, &mut res);

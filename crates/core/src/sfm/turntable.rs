@@ -69,20 +69,7 @@ impl Turntable {
                 .perturb_tracks(&tracks, &mut rng(self.seed.wrapping_add(1)));
         }
         let seen = |f: usize, j: usize| (f + k - first[j]) % k.max(1) < self.window;
-        let obs = Observations {
-            names: tracks.names.clone(),
-            frames: tracks
-                .frames
-                .iter()
-                .enumerate()
-                .map(|(f, row)| {
-                    row.iter()
-                        .enumerate()
-                        .map(|(j, y)| seen(f, j).then_some(*y))
-                        .collect()
-                })
-                .collect(),
-        };
+        let obs = Observations::seen_where(&tracks, seen);
         (scene, obs)
     }
 }
