@@ -11,10 +11,11 @@
 use std::collections::BTreeMap;
 
 use crate::limits::{
-    FORMULA_CHARS, FORMULA_DEGREE, FORMULA_DEPTH, FORMULA_EXPONENT, FORMULA_TERMS,
+    FORMULA_BITS, FORMULA_CHARS, FORMULA_DEGREE, FORMULA_DEPTH, FORMULA_DIGITS, FORMULA_EXPONENT,
+    FORMULA_TERMS,
 };
 
-/// Upper bounds on a formula's expansion.
+/// Upper bounds on a formula's expansion, as a quotient of two integer polynomials.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Size {
     /// Terms of the numerator.
@@ -23,6 +24,16 @@ pub struct Size {
     den: f64,
     /// Total degree (numerator and denominator together).
     degree: f64,
+    /// Bits of the numerator's largest coefficient.
+    num_bits: f64,
+    /// Bits of the denominator's largest coefficient.
+    den_bits: f64,
+}
+
+/// Bits a coefficient of a product gains from its terms: at most `min(terms)` products
+/// meet in one monomial.
+fn spread(a: f64, b: f64) -> f64 {
+    a.min(b).max(1.0).log2()
 }
 
 impl Size {
@@ -30,18 +41,33 @@ impl Size {
         num: 1.0,
         den: 1.0,
         degree: 0.0,
+        num_bits: 0.0,
+        den_bits: 0.0,
     };
     const VAR: Size = Size {
-        num: 1.0,
-        den: 1.0,
         degree: 1.0,
+        ..Size::ONE
     };
 
+    /// A decimal literal of `digits` digits, `decimals` of them after the point: an integer
+    /// below 10^digits over 10^decimals.
+    fn literal(digits: usize, decimals: usize) -> Size {
+        Size {
+            num_bits: digits as f64 * std::f64::consts::LOG2_10,
+            den_bits: decimals as f64 * std::f64::consts::LOG2_10,
+            ..Size::ONE
+        }
+    }
+
+    /// (n₁d₂ + n₂d₁) / (d₁d₂).
     fn add(self, o: Size) -> Size {
+        let cross = |a: Size, b: Size| a.num_bits + b.den_bits + spread(a.num, b.den);
         Size {
             num: self.num * o.den + o.num * self.den,
             den: self.den * o.den,
             degree: self.degree + o.degree,
+            num_bits: cross(self, o).max(cross(o, self)) + 1.0,
+            den_bits: self.den_bits + o.den_bits + spread(self.den, o.den),
         }
     }
 
@@ -50,24 +76,39 @@ impl Size {
             num: self.num * o.num,
             den: self.den * o.den,
             degree: self.degree + o.degree,
+            num_bits: self.num_bits + o.num_bits + spread(self.num, o.num),
+            den_bits: self.den_bits + o.den_bits + spread(self.den, o.den),
         }
     }
 
     fn div(self, o: Size) -> Size {
+        self.mul(Size {
+            num: o.den,
+            den: o.num,
+            num_bits: o.den_bits,
+            den_bits: o.num_bits,
+            ..o
+        })
+    }
+
+    /// The `e`-th power: `e - 1` products with the base, each adding at most log₂ of the
+    /// base's terms (`P^e` has coefficients below `C^e · t^(e-1)`).
+    fn pow(self, e: u64) -> Size {
+        let k = e as f64;
+        let (n, d) = (self.num, self.den);
+        let e = e as i32;
         Size {
-            num: self.num * o.den,
-            den: self.den * o.num,
-            degree: self.degree + o.degree,
+            num: n.powi(e),
+            den: d.powi(e),
+            degree: self.degree * k,
+            num_bits: self.num_bits * k + (k - 1.0).max(0.0) * n.max(1.0).log2(),
+            den_bits: self.den_bits * k + (k - 1.0).max(0.0) * d.max(1.0).log2(),
         }
     }
 
-    fn pow(self, e: u64) -> Size {
-        let e = e as i32;
-        Size {
-            num: self.num.powi(e),
-            den: self.den.powi(e),
-            degree: self.degree * e as f64,
-        }
+    /// Bits of the largest coefficient, numerator or denominator.
+    pub fn bits(&self) -> f64 {
+        self.num_bits.max(self.den_bits)
     }
 }
 
@@ -93,6 +134,13 @@ pub(super) fn check(text: &str, defs: &BTreeMap<String, Size>) -> Result<Size, S
             size.degree
         ));
     }
+    if size.bits() > FORMULA_BITS {
+        return Err(format!(
+            "the formula's coefficients can reach {:.0} bits, more than the limit of \
+             {FORMULA_BITS} (see docs/limits.md)",
+            size.bits()
+        ));
+    }
     if size.num.max(size.den) > FORMULA_TERMS {
         return Err(format!(
             "the formula can expand to more than {FORMULA_TERMS:e} terms (see docs/limits.md)"
@@ -103,7 +151,8 @@ pub(super) fn check(text: &str, defs: &BTreeMap<String, Size>) -> Result<Size, S
 
 #[derive(Clone, Debug, PartialEq)]
 enum Tok {
-    Num(u64),
+    /// A number: its value as an exponent, its digits, and those after the point.
+    Num(u64, usize, usize),
     Ident(String),
     Op(char),
 }
@@ -122,8 +171,10 @@ fn tokens(text: &str) -> Vec<Tok> {
                 i += 1;
             }
             let s: String = chars[start..i].iter().collect();
+            let digits = s.chars().filter(char::is_ascii_digit).count();
+            let decimals = s.split_once('.').map_or(0, |(_, f)| f.len());
             // an integer exponent's value; a decimal counts as a constant
-            out.push(Tok::Num(s.parse().unwrap_or(u64::MAX)));
+            out.push(Tok::Num(s.parse().unwrap_or(u64::MAX), digits, decimals));
         } else if ch.is_alphabetic() {
             let start = i;
             while i < chars.len() && (chars[i].is_alphanumeric() || chars[i] == '_') {
@@ -189,7 +240,7 @@ impl Scan<'_> {
                     self.pos += 1;
                     acc = acc.div(self.power()?);
                 }
-                Some(Tok::Num(_) | Tok::Ident(_) | Tok::Op('(')) => acc = acc.mul(self.power()?),
+                Some(Tok::Num(..) | Tok::Ident(_) | Tok::Op('(')) => acc = acc.mul(self.power()?),
                 _ => return Ok(acc),
             }
         }
@@ -199,7 +250,7 @@ impl Scan<'_> {
         let base = self.primary()?;
         if let Some(Tok::Op('^')) = self.peek() {
             self.pos += 1;
-            if let Some(&Tok::Num(e)) = self.peek() {
+            if let Some(&Tok::Num(e, ..)) = self.peek() {
                 self.pos += 1;
                 if e > FORMULA_EXPONENT {
                     return Err(format!(
@@ -215,9 +266,15 @@ impl Scan<'_> {
 
     fn primary(&mut self) -> Result<Size, String> {
         match self.peek().cloned() {
-            Some(Tok::Num(_)) => {
+            Some(Tok::Num(_, digits, decimals)) => {
                 self.pos += 1;
-                Ok(Size::ONE)
+                if digits > FORMULA_DIGITS {
+                    return Err(format!(
+                        "a number in the formula has {digits} digits, more than the limit of \
+                         {FORMULA_DIGITS} (see docs/limits.md)"
+                    ));
+                }
+                Ok(Size::literal(digits, decimals))
             }
             Some(Tok::Ident(name)) => {
                 self.pos += 1;
@@ -283,6 +340,23 @@ mod tests {
             .contains("degree"));
         assert!(!ok(&"-".repeat(10_000)));
         assert!(!ok(&"x".repeat(FORMULA_CHARS + 1)));
+    }
+
+    #[test]
+    fn number_size_is_bounded_before_any_arithmetic() {
+        let err = |t: &str| check(t, &BTreeMap::new()).unwrap_err();
+        assert!(err("((((9)^64)^64)^64)^64").contains("bits"));
+        assert!(err(&format!("({})^64", "9".repeat(5000))).contains("5000 digits"));
+        assert!(ok(&"9".repeat(FORMULA_DIGITS)));
+        assert!(!ok(&"9".repeat(FORMULA_DIGITS + 1)));
+        // (10^99 x + 1)^12 stays within the bits (about 4,010), the 13th power not (4,344)
+        let big = format!("1{}", "0".repeat(FORMULA_DIGITS - 1));
+        assert!(ok(&format!("({big}x + 1)^12")));
+        assert!(err(&format!("({big}x + 1)^13")).contains("bits"));
+        // 0.5 + 0.25 over the common denominator is (5·100 + 25·10) / (10·100): the bound
+        // covers the 750
+        let sum = check("0.5 + 0.25", &BTreeMap::new()).unwrap();
+        assert!(sum.bits() >= 750f64.log2());
     }
 
     #[test]

@@ -76,26 +76,35 @@ fn parse_yaml_budget<T: serde::de::DeserializeOwned>(
     let limits = budget.clone();
     let options = serde_saphyr::options! { with_snippet: false, budget: Some(budget) };
     let mut field: Option<String> = None;
-    let parsed = serde_saphyr::with_deserializer_from_str_with_options(text, options, |de| {
-        serde_path_to_error::deserialize(de).map_err(|e| {
-            let p = e.path().to_string();
-            if p != "." && p != "?" {
-                field = Some(p);
-            }
-            e.into_inner()
-        })
-    });
+    let tagged = super::plain_numbers::Tagged::new(text);
+    let parsed =
+        serde_saphyr::with_deserializer_from_str_with_options(&tagged.text, options, |de| {
+            serde_path_to_error::deserialize(de).map_err(|e| {
+                // the path ends in `?` where the deserializer lost its place (a repeated key)
+                let p = e.path().to_string();
+                let p = p.trim_end_matches('?').trim_end_matches('.');
+                if !p.is_empty() && p != "." {
+                    field = Some(p.to_string());
+                }
+                e.into_inner()
+            })
+        });
     parsed.map_err(|e| {
-        let loc = e.location();
+        let loc = e
+            .location()
+            .map(|l| (l.line() as usize, l.column() as usize));
         let message = e.to_string();
+        let refused = loc.and_then(|(l, c)| tagged.refusal(l, c));
         Error::Input {
             location: InputLocation {
                 file: path.to_path_buf(),
-                line: loc.map(|l| l.line()),
-                column: loc.map(|l| l.column()),
+                line: loc.map(|(l, _)| l as u64),
+                column: loc.map(|(l, c)| tagged.original_column(l, c) as u64),
                 field: field.or_else(|| field_of(&message)),
             },
-            message: plain_message(&strip_location(&message), &limits),
+            message: refused
+                .filter(|_| message.starts_with("invalid"))
+                .unwrap_or_else(|| plain_message(&strip_location(&message), &limits)),
         }
     })
 }

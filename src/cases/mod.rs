@@ -9,6 +9,7 @@ mod latex;
 mod load;
 mod origin;
 mod paper;
+mod plain_numbers;
 mod printed;
 mod quote;
 mod source;
@@ -26,7 +27,7 @@ pub use load::{
 };
 pub use origin::CaseOrigin;
 pub use paper::{load_paper, paper_of, parse_paper, Paper, SectionTitle, PAPER_FILE};
-pub use printed::Printed;
+pub use printed::{contradicting_square, Printed};
 pub use quote::{parse_lines, quote_at, quote_within, SourceText};
 pub use source::{ClaimRef, Source};
 pub use validate::Validator;

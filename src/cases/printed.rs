@@ -4,7 +4,7 @@ use std::fmt;
 
 use num_bigint::BigInt;
 use num_rational::BigRational;
-use num_traits::{ToPrimitive, Zero};
+use num_traits::{Signed, ToPrimitive, Zero};
 use serde::de::{self, Deserializer, Visitor};
 use serde::Deserialize;
 
@@ -105,6 +105,38 @@ impl Printed {
     }
 }
 
+/// The first edge whose printed length and printed square cannot both be right: no length
+/// within half a unit of the printed one squares to a value within half a unit of the printed
+/// square (exact arithmetic; both printed values are read at their own precision). With it,
+/// the words that say so.
+pub fn contradicting_square(lengths: &[Printed], squares: &[Printed]) -> Option<(usize, String)> {
+    let i = lengths.iter().zip(squares).position(|(l, s)| {
+        let half = |p: &Printed| BigRational::new(1.into(), 2.into()) * pow10(-p.decimals);
+        let (hl, hs) = (half(l), half(s));
+        let low = (l.value.abs() - &hl).max(BigRational::zero());
+        let high = l.value.abs() + hl;
+        &low * &low > &s.value + &hs || &high * &high < &s.value - hs
+    })?;
+    let (l, s) = (&lengths[i], &squares[i]);
+    Some((
+        i,
+        format!(
+            "the printed square {s} contradicts the printed length {l}: no length within half \
+             a unit of {l} squares to within half a unit of {s}"
+        ),
+    ))
+}
+
+/// 10^e, exactly.
+fn pow10(e: i32) -> BigRational {
+    let p = BigRational::from_integer(BigInt::from(10).pow(e.unsigned_abs()));
+    if e < 0 {
+        p.recip()
+    } else {
+        p
+    }
+}
+
 impl fmt::Display for Printed {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.write_str(&self.text)
@@ -164,5 +196,36 @@ mod range_tests {
         assert!(Printed::parse("1e2000000000").is_none());
         assert!(Printed::parse("-0.0").is_some());
         assert!(decimal_syntax("1e999") && !decimal_syntax("1x8"));
+    }
+
+    #[test]
+    fn a_square_contradicts_its_length_only_beyond_both_roundings() {
+        let p = |v: &[&str]| {
+            v.iter()
+                .map(|t| Printed::parse(t).unwrap())
+                .collect::<Vec<_>>()
+        };
+        let lengths = p(&["2", "3", "3.562"]);
+        assert_eq!(
+            contradicting_square(&lengths, &p(&["4", "9", "12.6878"])),
+            None
+        );
+        assert_eq!(
+            contradicting_square(&lengths, &p(&["4", "9", "99"])).map(|c| c.0),
+            Some(2)
+        );
+        // 3.562 ± 0.0005 squares to [12.68428, 12.69140]: 12.6914 still meets it, 12.692 not
+        assert_eq!(
+            contradicting_square(&lengths, &p(&["4", "9", "12.6914"])),
+            None
+        );
+        assert_eq!(
+            contradicting_square(&lengths, &p(&["4", "9", "12.692"])).map(|c| c.0),
+            Some(2)
+        );
+        assert_eq!(
+            contradicting_square(&lengths, &p(&["4", "9", "12.6838"])).map(|c| c.0),
+            Some(2)
+        );
     }
 }

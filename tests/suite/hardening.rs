@@ -221,3 +221,64 @@ fn the_two_frame_commands_refuse_work_beyond_their_limits_before_doing_it() {
         "{err}"
     );
 }
+
+/// Each case file's work is bounded by what its time grows with, measured at the limit
+/// (`docs/limits.md`): the file is refused at the field before any trial runs, and the
+/// paper's own sizes pass.
+#[test]
+fn case_work_beyond_its_limit_is_refused_at_the_field() {
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("paper_cases");
+    let refused = |file: &str, from: &str, to: &str, says: &str| {
+        let path = root.join(file);
+        let text = std::fs::read_to_string(&path).unwrap();
+        assert!(text.contains(from), "{file}: {from}");
+        orthocheck::cases::parse_case::<orthocheck::claims::Check>(&text, &path)
+            .unwrap_or_else(|e| panic!("{file} as printed: {e}"));
+        let err = orthocheck::cases::parse_case::<orthocheck::claims::Check>(
+            &text.replacen(from, to, 1),
+            &path,
+        )
+        .expect_err(to)
+        .to_string();
+        assert!(err.contains(file) && err.contains(says), "{err}");
+    };
+    let l = orthocheck::limits::CASE_NOISE_WORK;
+    // ex2: 3 levels of 3 frames
+    let over = l / 9 + 1;
+    refused(
+        "ex2_noise.yaml",
+        "trials: 10000",
+        &format!("trials: {over}"),
+        &format!("trials × levels × frames is {}", over * 9),
+    );
+    refused(
+        "linearity_price.yaml",
+        "trials: 200",
+        "trials: 1000",
+        "trials × bodies × levels is 12000",
+    );
+    refused(
+        "p3f4_uniqueness.yaml",
+        "trials: 10000",
+        "trials: 2000000",
+        "trials is 2000000",
+    );
+    refused(
+        "p3f4_uniqueness.yaml",
+        "frames: 4\n    trials: 10000",
+        "frames: 200\n    trials: 30000",
+        "trials × frames is 6000000",
+    );
+    refused(
+        "solution_count.yaml",
+        "instances: 12",
+        "instances: 25",
+        "more than the limit of 24",
+    );
+    refused(
+        "identity_census.yaml",
+        "trials: 200",
+        "trials: 5001",
+        "more than the limit of 5000",
+    );
+}

@@ -44,11 +44,21 @@ pub const NOISE_LEVELS: usize = 100;
 /// The largest noise level ε (relative error up to ε): beyond 1 a coordinate may change
 /// sign, and ε near the largest float overflows the sampler.
 pub const NOISE_LEVEL: f64 = 1.0;
-/// Trials of a census, of a random-scene check and of an identity census (case files).
-pub const CASE_TRIALS: usize = 1_000_000;
+/// Trials of a census and of a random-scene check (case files).
+pub const CASE_TRIALS: usize = 100_000;
+/// The work of a census in a case file: trials × frames (each trial solves one scene).
+pub const CASE_CENSUS_WORK: usize = 5_000_000;
+/// Trials of an identity census (case files): each runs every identity test on a scene.
+pub const IDENTITY_CENSUS_TRIALS: usize = 5_000;
+/// The work of a noise study in a case file: trials × levels × frames (each trial of a level
+/// solves one scene of that many frames under both noise models).
+pub const CASE_NOISE_WORK: usize = 1_500_000;
+/// The work of a price-of-linearity study: trials × bodies × levels (each runs every solver
+/// and a bundle adjustment on one scene).
+pub const LINEARITY_RUNS: usize = 10_000;
 /// Rational instances of an exact solution count (case files): each eliminates a degree-16
-/// polynomial over ℚ, about a fifth of a second.
-pub const COUNT_INSTANCES: usize = 1_000;
+/// polynomial over ℚ and runs the lines-first construction, about a quarter of a second.
+pub const COUNT_INSTANCES: usize = 24;
 /// Monte Carlo samples of a rounding box (case files).
 pub const ROUNDING_TRIALS: usize = 1_000_000;
 /// Random evaluation points of an identity check (case files).
@@ -76,7 +86,12 @@ pub const FORMULA_EXPONENT: u64 = 64;
 pub const FORMULA_DEGREE: f64 = 256.0;
 /// The most terms a formula can expand to (an upper bound read off its text, before any
 /// cancellation: terms of a sum add, of a product multiply, of a power raise).
-pub const FORMULA_TERMS: f64 = 1e6;
+pub const FORMULA_TERMS: f64 = 1e5;
+/// The most digits of a number written in a formula.
+pub const FORMULA_DIGITS: usize = 100;
+/// The most bits a formula's coefficients can reach (an upper bound read off its text, as a
+/// quotient of integer polynomials: the bits of a product add, a power multiplies them).
+pub const FORMULA_BITS: f64 = 4096.0;
 
 /// The side of the Gram matrix `reconstruct` decomposes, min(2k, p) for p points in k frames:
 /// its eigen-decomposition costs about side³ (1,000 takes about a second).

@@ -17,7 +17,12 @@ impl ClaimKind for IdentityCensusCase {
     }
 
     fn validate(&self, v: &Validator) -> Result<()> {
-        v.limit("trials", "trials", self.trials, crate::limits::CASE_TRIALS)?;
+        v.limit(
+            "trials",
+            "trials",
+            self.trials,
+            crate::limits::IDENTITY_CENSUS_TRIALS,
+        )?;
         v.list("c_factors", self.c_factors.len())?;
         case::checks(self, v)
     }

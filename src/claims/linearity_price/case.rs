@@ -64,46 +64,54 @@ pub const MAX_RANDOM_POINTS: usize = 20;
 /// Checks serde cannot express: sizes, names, levels and the deciding subset.
 pub(super) fn validate(c: &LinearityCase, v: &Validator) -> Result<()> {
     v.limit(
-        "check.linearity_price.trials",
+        "trials",
         "trials",
         c.trials,
         crate::limits::NOISE_TRIALS,
     )?;
-    v.list("check.linearity_price.bodies", c.bodies.len())?;
-    v.list("check.linearity_price.levels", c.levels.len())?;
+    v.list("bodies", c.bodies.len())?;
+    v.list("levels", c.levels.len())?;
+    v.limit(
+        "trials",
+        "trials × bodies × levels",
+        c.trials
+            .saturating_mul(c.bodies.len())
+            .saturating_mul(c.levels.len()),
+        crate::limits::LINEARITY_RUNS,
+    )?;
     for (i, l) in c.levels.iter().enumerate() {
         if let Err(m) = crate::limits::noise_level("level", l.to_f64()) {
-            return v.err(&format!("check.linearity_price.levels[{i}]"), m);
+            return v.err(&format!("levels[{i}]"), m);
         }
     }
     if c.deciding_levels.iter().any(|d| !c.levels.contains(d)) {
         return v.err(
-            "check.linearity_price.deciding_levels",
+            "deciding_levels",
             "every deciding level must be one of the levels".into(),
         );
     }
     let alpha = c.alpha.to_f64();
     if !(alpha > 0.0 && alpha < 1.0) {
         return v.err(
-            "check.linearity_price.alpha",
+            "alpha",
             "α must lie strictly between 0 and 1".into(),
         );
     }
     if !c.bodies.iter().any(|b| b.name == c.deciding_body) {
         return v.err(
-            "check.linearity_price.deciding_body",
+            "deciding_body",
             format!("names no body of the study ({})", c.deciding_body),
         );
     }
     let names: Vec<String> = c.bodies.iter().map(|b| b.name.clone()).collect();
-    v.names("check.linearity_price.bodies", &names)?;
+    v.names("bodies", &names)?;
     for (i, b) in c.bodies.iter().enumerate() {
-        body(b, &format!("check.linearity_price.bodies[{i}]"), v)?;
+        body(b, &format!("bodies[{i}]"), v)?;
     }
     for (i, r) in c.printed_runs.iter().enumerate() {
         if r.squares.len() != 6 {
             return v.err(
-                &format!("check.linearity_price.printed_runs[{i}].squares"),
+                &format!("printed_runs[{i}].squares"),
                 "a run of the §4 solver prints six squared edges".into(),
             );
         }
@@ -113,6 +121,9 @@ pub(super) fn validate(c: &LinearityCase, v: &Validator) -> Result<()> {
 
 /// A body is printed edges of three or more points, or random points, not both.
 fn body(b: &LinearityBody, at: &str, v: &Validator) -> Result<()> {
+    if let Some((i, words)) = crate::cases::contradicting_square(&b.lengths, &b.squares) {
+        return v.err(&format!("{at}.squares[{i}]"), words);
+    }
     match (b.lengths.len(), b.random_points) {
         (0, Some(p)) if (3..=MAX_RANDOM_POINTS).contains(&p) => Ok(()),
         (0, Some(p)) => v.err(

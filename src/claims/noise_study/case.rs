@@ -3,8 +3,8 @@
 use serde::Deserialize;
 
 use crate::cases::{ClaimRef, Printed, Validator};
-use crate::claims::shared::levels;
 use crate::claims::shared::NoiseLevel;
+use crate::claims::shared::{levels, noise_work};
 use crate::error::Result;
 use crate::limits;
 
@@ -47,6 +47,7 @@ pub(super) fn sizes(c: &NoiseStudyCase, v: &Validator) -> Result<()> {
     v.limit("trials", "trials", c.trials, limits::NOISE_TRIALS)?;
     v.limit("frames", "frames", c.frames, limits::DOF_FRAMES)?;
     levels(v, "levels", &c.levels)?;
+    noise_work(v, c.trials, c.levels.len(), c.frames)?;
     c.body
         .significant_digits
         .map_or(Ok(()), |d| v.digits("body.significant_digits", d))
@@ -65,6 +66,9 @@ pub(super) fn checks(c: &NoiseStudyCase, v: &Validator) -> Result<()> {
             "body.lengths",
             format!("the solver needs {edges} lengths (and {edges} squares if any)"),
         );
+    }
+    if let Some((i, words)) = crate::cases::contradicting_square(&c.body.lengths, &c.body.squares) {
+        return v.err(&format!("body.squares[{i}]"), words);
     }
     // the body must exist: a triangle (or, for more points, realizable in 3-D), refused here
     // with the field rather than when the study runs

@@ -3,7 +3,7 @@
 use serde::Deserialize;
 
 use crate::cases::{ClaimRef, Printed, Validator};
-use crate::claims::shared::{body_digits, levels};
+use crate::claims::shared::{body_digits, levels, noise_work};
 use crate::claims::shared::{BodyTable, FigureFrames, NoiseLevel, PrintedSolutions};
 use crate::error::Result;
 use crate::limits;
@@ -53,6 +53,7 @@ pub struct PrintedMatrix {
 pub(super) fn sizes(c: &P4f3ExampleCase, v: &Validator) -> Result<()> {
     v.limit("trials", "trials", c.trials, limits::NOISE_TRIALS)?;
     levels(v, "noise", &c.noise)?;
+    noise_work(v, c.trials, c.noise.len(), 3)?;
     v.list("matrix_mutant_half_units", c.matrix_mutant_half_units.len())?;
     v.digits("matrix.significant_digits", c.matrix.significant_digits)?;
     v.digits("solution.significant_digits", c.solution.significant_digits)?;

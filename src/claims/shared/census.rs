@@ -82,7 +82,13 @@ pub(crate) fn p3_census(c: &CensusCase, needed: usize, v: &Validator) -> Result<
 /// The census's sizes within their limits.
 pub(crate) fn sizes(c: &CensusCase, v: &Validator) -> Result<()> {
     v.limit("trials", "trials", c.trials, limits::CASE_TRIALS)?;
-    v.limit("frames", "frames", c.frames, limits::DOF_FRAMES)
+    v.limit("frames", "frames", c.frames, limits::DOF_FRAMES)?;
+    v.limit(
+        "trials",
+        "trials × frames",
+        c.trials.saturating_mul(c.frames),
+        limits::CASE_CENSUS_WORK,
+    )
 }
 
 /// The result id of `claim` in a census case: its suffix from the case, when it has one.

@@ -77,6 +77,17 @@ pub enum StatementSubject {
     TypicalTrial,
 }
 
+/// A case's noise study within [`limits::CASE_NOISE_WORK`]: trials × levels × frames, the
+/// measure its time grows with.
+pub fn noise_work(v: &Validator, trials: usize, levels: usize, frames: usize) -> Result<()> {
+    v.limit(
+        "trials",
+        "trials × levels × frames",
+        trials.saturating_mul(levels).saturating_mul(frames),
+        limits::CASE_NOISE_WORK,
+    )
+}
+
 /// ε of each level in [0, 1] (a negative ε empties the sampler's range).
 pub fn levels(v: &Validator, at: &str, levels: &[NoiseLevel]) -> Result<()> {
     v.list(at, levels.len())?;

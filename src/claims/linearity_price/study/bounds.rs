@@ -3,11 +3,17 @@
 //! probability P(Bin(n, ½) ≥ k), whatever the distribution (failed trials count as errors
 //! larger than every finite one, so they take part as the largest values).
 
-/// ln C(n, k), by the sum of ln((n − i + 1)/i): exact enough for n up to millions and free
-/// of the overflow of the binomial coefficient itself.
-fn ln_choose(n: usize, k: usize) -> f64 {
-    let k = k.min(n - k);
-    (1..=k).map(|i| ((n - k + i) as f64 / i as f64).ln()).sum()
+/// The terms P(Bin(n, ½) = j) for j = 0, 1, …, each from the one before by the factor
+/// (n − j + 1)/j, in logarithms: free of the binomial coefficient's overflow for n up to
+/// millions, and one step per term (the median's ranks need about n/2 of them).
+fn half_pmf(n: usize) -> impl Iterator<Item = f64> {
+    let ln_half_n = n as f64 * 0.5f64.ln();
+    (0..=n).scan(0.0, move |ln_choose, j| {
+        if j > 0 {
+            *ln_choose += ((n - j + 1) as f64 / j as f64).ln();
+        }
+        Some((*ln_choose + ln_half_n).exp())
+    })
 }
 
 /// P(Bin(n, ½) ≤ k).
@@ -15,11 +21,7 @@ pub fn binomial_half_cdf(n: usize, k: usize) -> f64 {
     if k >= n {
         return 1.0;
     }
-    let ln_half_n = n as f64 * 0.5f64.ln();
-    (0..=k)
-        .map(|j| (ln_choose(n, j) + ln_half_n).exp())
-        .sum::<f64>()
-        .min(1.0)
+    half_pmf(n).take(k + 1).sum::<f64>().min(1.0)
 }
 
 /// The 0-based ranks (l, u) of the order statistics that bound the median of n draws from
@@ -31,14 +33,16 @@ pub fn median_ranks(n: usize, alpha: f64) -> Option<(usize, usize)> {
         return None;
     }
     // the largest l with P(Bin ≤ l) ≤ α: then P(at least l + 1 draws ≤ median) ≥ 1 − α
-    let mut l = None;
-    for k in 0..n / 2 + 1 {
-        if binomial_half_cdf(n, k) <= alpha {
-            l = Some(k);
-        } else {
-            break;
-        }
-    }
+    let mut cdf = 0.0;
+    let l = half_pmf(n)
+        .take(n / 2 + 1)
+        .enumerate()
+        .take_while(|&(k, p)| {
+            cdf += p;
+            (if k >= n { 1.0 } else { cdf.min(1.0) }) <= alpha
+        })
+        .last()
+        .map(|(k, _)| k);
     l.map(|l| (l, n - 1 - l))
 }
 
@@ -172,6 +176,10 @@ mod tests {
         // n = 5: P(Bin ≤ 0) = 1/32 > 0.025, no bound at that confidence; at 0.05 the extremes
         assert_eq!(median_ranks(5, 0.025), None);
         assert_eq!(median_ranks(5, 0.05), Some((0, 4)));
+        // one step per term: a million draws are ranked at once; the normal approximation
+        // puts l near n/2 − 1.96·√n/2 = 499,020
+        let (l, u) = median_ranks(1_000_000, 0.025).unwrap();
+        assert!((499_015..=499_025).contains(&l) && u == 999_999 - l);
     }
 
     #[test]
