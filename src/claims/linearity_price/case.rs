@@ -63,12 +63,7 @@ pub const MAX_RANDOM_POINTS: usize = 20;
 
 /// Checks serde cannot express: sizes, names, levels and the deciding subset.
 pub(super) fn validate(c: &LinearityCase, v: &Validator) -> Result<()> {
-    v.limit(
-        "trials",
-        "trials",
-        c.trials,
-        crate::limits::NOISE_TRIALS,
-    )?;
+    v.limit("trials", "trials", c.trials, crate::limits::NOISE_TRIALS)?;
     v.list("bodies", c.bodies.len())?;
     v.list("levels", c.levels.len())?;
     v.limit(
@@ -92,10 +87,7 @@ pub(super) fn validate(c: &LinearityCase, v: &Validator) -> Result<()> {
     }
     let alpha = c.alpha.to_f64();
     if !(alpha > 0.0 && alpha < 1.0) {
-        return v.err(
-            "alpha",
-            "α must lie strictly between 0 and 1".into(),
-        );
+        return v.err("alpha", "α must lie strictly between 0 and 1".into());
     }
     if !c.bodies.iter().any(|b| b.name == c.deciding_body) {
         return v.err(
