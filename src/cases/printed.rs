@@ -205,26 +205,26 @@ mod range_tests {
                 .map(|t| Printed::parse(t).unwrap())
                 .collect::<Vec<_>>()
         };
-        let lengths = p(&["2", "3", "3.562"]);
+        let lengths = p(&["2", "3", "5.371"]);
         assert_eq!(
-            contradicting_square(&lengths, &p(&["4", "9", "12.6878"])),
+            contradicting_square(&lengths, &p(&["4", "9", "28.8476"])),
             None
         );
         assert_eq!(
             contradicting_square(&lengths, &p(&["4", "9", "99"])).map(|c| c.0),
             Some(2)
         );
-        // 3.562 ± 0.0005 squares to [12.68428, 12.69140]: 12.6914 still meets it, 12.692 not
+        // 5.371 ± 0.0005 squares to [28.84227, 28.85302]: 28.853 still meets it, 28.854 not
         assert_eq!(
-            contradicting_square(&lengths, &p(&["4", "9", "12.6914"])),
+            contradicting_square(&lengths, &p(&["4", "9", "28.853"])),
             None
         );
         assert_eq!(
-            contradicting_square(&lengths, &p(&["4", "9", "12.692"])).map(|c| c.0),
+            contradicting_square(&lengths, &p(&["4", "9", "28.854"])).map(|c| c.0),
             Some(2)
         );
         assert_eq!(
-            contradicting_square(&lengths, &p(&["4", "9", "12.6838"])).map(|c| c.0),
+            contradicting_square(&lengths, &p(&["4", "9", "28.8417"])).map(|c| c.0),
             Some(2)
         );
     }
