@@ -106,7 +106,7 @@ pub fn prepare_output_dir(dir: &Path) -> Result<()> {
 
 /// Write every `(name, text)` into `dir` as a set: every temporary file first, then the
 /// renames; a name that is a symbolic link is refused before anything is written.
-pub fn write_all_atomic(dir: &Path, files: &[(&str, String)]) -> Result<()> {
+pub fn write_all_atomic(dir: &Path, files: &[(String, String)]) -> Result<()> {
     let fail = |path: &Path, message: String| Error::Write {
         path: path.to_path_buf(),
         message,

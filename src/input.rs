@@ -12,6 +12,7 @@ use serde::Deserialize;
 use crate::cases::{line_of, parse_yaml_limited};
 use crate::error::{Error, InputLocation, Result};
 use crate::model::{default_names, Tracks};
+use crate::numfmt::round_trip;
 
 mod gaps;
 pub use gaps::{load_observations, parse_observations};
@@ -374,7 +375,8 @@ pub fn tracks_to_csv(t: &Tracks) -> String {
 pub fn observations_to_csv(o: &crate::sfm::Observations) -> String {
     let mut s = String::from("frame,point,x,y\n");
     for (f, j, y) in o.seen() {
-        let _ = writeln!(s, "{},{},{:?},{:?}", f + 1, o.names[j], y.x, y.y);
+        let (x, y) = (round_trip(y.x), round_trip(y.y));
+        let _ = writeln!(s, "{},{},{x},{y}", f + 1, o.names[j]);
     }
     s
 }
@@ -388,7 +390,11 @@ pub fn observations_to_yaml(o: &crate::sfm::Observations) -> String {
     for f in &o.frames {
         let pts: Vec<String> = f
             .iter()
-            .map(|p| p.map_or("null".into(), |p| format!("[{:?}, {:?}]", p.x, p.y)))
+            .map(|p| {
+                p.map_or("null".into(), |p| {
+                    format!("[{}, {}]", round_trip(p.x), round_trip(p.y))
+                })
+            })
             .collect();
         let _ = writeln!(s, "  - [{}]", pts.join(", "));
     }

@@ -128,14 +128,23 @@ fn non_finite(what: &str) -> Error {
     ))
 }
 
+/// The output guard on text: if any formatter turned a non-finite number into text during
+/// this command, nothing is printed or written (exit 1). It counts numbers as they are
+/// formatted, so a point named `inf` or `NaN` passes.
+fn guard_formatted() -> Result<(), Error> {
+    match orthocheck::numfmt::non_finite_formatted() {
+        0 => Ok(()),
+        1 => Err(non_finite("one was formatted")),
+        n => Err(non_finite(&format!("{n} were formatted"))),
+    }
+}
+
 /// Write to standard output through the output guard: a non-finite number in the text is an
 /// error (exit 1) rather than output; a closed pipe ends the command quietly; any other
 /// write failure (a full disk) is an error.
 fn out(text: &str) -> Result<(), Error> {
     use std::io::Write as _;
-    if let Some(bad) = orthocheck::report::values::non_finite_token(text) {
-        return Err(non_finite(&format!("`{bad}`")));
-    }
+    guard_formatted()?;
     let mut stdout = std::io::stdout().lock();
     match stdout
         .write_all(text.as_bytes())
@@ -184,6 +193,7 @@ fn in_file(path: &Path, e: Error) -> Error {
 /// Write a file that must not exist yet: a user's file is never overwritten (an existing
 /// name is refused with [`would_overwrite`], exit 2; a failed write is exit 1).
 fn write_new(path: &Path, text: &str) -> Result<(), Error> {
+    guard_formatted()?;
     orthocheck::files::write_new(path, text, would_overwrite)
 }
 
@@ -195,5 +205,17 @@ fn would_overwrite(path: &Path) -> Error {
             "the file exists and `{} --out` would overwrite it; nothing was written (choose another name, or remove the file first)",
             command_name()
         ),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn the_output_guard_refuses_once_a_non_finite_number_was_formatted() {
+        let before = orthocheck::numfmt::non_finite_formatted();
+        let text = orthocheck::numfmt::sig(f64::NAN);
+        assert!(orthocheck::numfmt::non_finite_formatted() > before);
+        let refused = super::guard_formatted().unwrap_err().to_string();
+        assert!(refused.contains("non-finite"), "{text}: {refused}");
     }
 }

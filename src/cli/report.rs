@@ -1,6 +1,6 @@
 //! `orthocheck report`: reproduce the whole paper and write the report files.
 
-use super::out;
+use super::{guard_formatted, out};
 use std::io::{IsTerminal, Write as _};
 use std::path::PathBuf;
 use std::time::Instant;
@@ -48,7 +48,10 @@ pub fn run(args: Args) -> Result<(), Error> {
     if show() {
         eprintln!();
     }
-    r.write(&args.out)?;
+    let files = r.files()?;
+    // the text guard: a number formatted as `NaN` or `inf` anywhere in the report
+    guard_formatted()?;
+    orthocheck::report::write_all_atomic(&args.out, &files)?;
     let dir = &args.out;
     out(&format!(
         "wrote {}, {} and {} ({} claims), and {} figures as {}\n",

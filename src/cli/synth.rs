@@ -6,6 +6,7 @@ use std::path::PathBuf;
 use clap::ValueEnum;
 use orthocheck::input::{tracks_to_csv, tracks_to_yaml};
 use orthocheck::model::Tracks;
+use orthocheck::numfmt::round_trip;
 use orthocheck::seeds::synthetic;
 use orthocheck::{report, Error};
 use rand::seq::SliceRandom as _;
@@ -189,7 +190,8 @@ fn shuffled_csv(t: &Tracks) -> String {
             } else {
                 format!("X{}", k + 1)
             };
-            let _ = writeln!(s, "{},{name},{:?},{:?}", i + 1, p.x, p.y);
+            let (x, y) = (round_trip(p.x), round_trip(p.y));
+            let _ = writeln!(s, "{},{name},{x},{y}", i + 1);
         }
     }
     s

@@ -105,26 +105,31 @@ impl Report {
         markdown::render(self)
     }
 
-    /// Write `report.md`, `report.json`, `report.html` and every figure as
-    /// `<figure id>.svg` into `dir` (created if missing). Each file is written to a temporary
-    /// name in `dir` first and renamed once all are complete, so a failure leaves the old
-    /// report whole; a name in `dir` that is a symbolic link is refused rather than followed.
-    pub fn write(&self, dir: &Path) -> Result<()> {
-        prepare_output_dir(dir)?;
+    /// Every file of the report, rendered: `report.md`, `report.json`, `report.html` and
+    /// each figure as `<figure id>.svg`, in the order [`Report::write`] writes them.
+    pub fn files(&self) -> Result<Vec<(String, String)>> {
         // serde_json would write a NaN as `null`: refuse before any file is touched
         if let Some(bad) = finite::first_non_finite(self) {
             return Err(crate::error::Error::Numerical(format!(
                 "report: a non-finite number ({bad}) would reach report.json; nothing was written"
             )));
         }
-        let svgs = svg::figure_files(&self.figures)?;
         let mut files = vec![
-            ("report.md", self.to_markdown()),
-            ("report.json", self.to_json()),
-            ("report.html", html::render(self)),
+            ("report.md".to_string(), self.to_markdown()),
+            ("report.json".to_string(), self.to_json()),
+            ("report.html".to_string(), html::render(self)),
         ];
-        files.extend(svgs.iter().map(|(n, t)| (n.as_str(), t.clone())));
-        write_all_atomic(dir, &files)
+        files.extend(svg::figure_files(&self.figures)?);
+        Ok(files)
+    }
+
+    /// Write [`Report::files`] into `dir` (created if missing). Each file is written to a
+    /// temporary name in `dir` first and renamed once all are complete, so a failure leaves
+    /// the old report whole; a name in `dir` that is a symbolic link is refused rather than
+    /// followed.
+    pub fn write(&self, dir: &Path) -> Result<()> {
+        prepare_output_dir(dir)?;
+        write_all_atomic(dir, &self.files()?)
     }
 }
 

@@ -129,7 +129,8 @@ struct Axes {
 }
 
 impl Axes {
-    /// The pixel of a data point; `None` for a point a logarithmic axis cannot show.
+    /// The pixel of a data point; `None` for a point the axes cannot show (non-positive on a
+    /// logarithmic axis, non-finite, or beyond a range that overflows).
     fn px(&self, q: [f64; 2]) -> Option<(f64, f64)> {
         let xv = if self.log_x {
             (q[0] > 0.0).then(|| q[0].log10())?
@@ -141,12 +142,10 @@ impl Axes {
         } else {
             q[1]
         };
-        (xv.is_finite() && yv.is_finite()).then(|| {
-            (
-                self.left + (xv - self.x[0]) / (self.x[1] - self.x[0]) * self.w,
-                self.top + self.h - (yv - self.y[0]) / (self.y[1] - self.y[0]) * self.h,
-            )
-        })
+        let px = self.left + (xv - self.x[0]) / (self.x[1] - self.x[0]) * self.w;
+        let py = self.top + self.h - (yv - self.y[0]) / (self.y[1] - self.y[0]) * self.h;
+        // a range that overflows (values near f64::MAX) has no pixel either
+        (px.is_finite() && py.is_finite()).then_some((px, py))
     }
 }
 

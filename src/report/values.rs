@@ -218,33 +218,9 @@ pub fn computed_text(c: &ClaimResult) -> String {
     quantities_text(&c.computed)
 }
 
-/// The first word of `text` that spells a non-finite float as the formatters print one.
-pub fn non_finite_token(text: &str) -> Option<&str> {
-    text.split(|c: char| !(c.is_ascii_alphanumeric() || c == '-' || c == '.'))
-        .map(|w| w.trim_matches('.'))
-        .find(|w| {
-            matches!(
-                *w,
-                "NaN" | "-NaN" | "nan" | "inf" | "-inf" | "infinity" | "-infinity"
-            )
-        })
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn the_output_guard_finds_non_finite_numbers_only() {
-        assert_eq!(non_finite_token("PQ²=NaN, QR²=4"), Some("NaN"));
-        assert_eq!(non_finite_token("residual -inf."), Some("-inf"));
-        assert_eq!(non_finite_token(r#"{"x": "inf"}"#), Some("inf"));
-        assert_eq!(
-            non_finite_token("information: infeasible; 1e-9; nano"),
-            None
-        );
-        assert_eq!(non_finite_token(&crate::numfmt::sig(f64::NAN)), Some("NaN"));
-    }
 
     #[test]
     fn sampled_digits_follow_the_trial_count() {

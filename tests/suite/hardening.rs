@@ -101,6 +101,37 @@ fn sigterm_stops_the_report_cleanly() {
     );
 }
 
+/// The output guard counts numbers as they are formatted, not words: points named `inf`,
+/// `NaN`, `nan` and `-inf` (legal names) reach both the text and the JSON output.
+#[test]
+fn points_named_like_non_finite_numbers_pass_the_output_guard() {
+    let dir = tempfile::tempdir().unwrap();
+    let tracks = orthocheck(&["synth", "--points", "4", "--frames", "3", "--seed", "1"]);
+    let yaml = String::from_utf8(tracks.stdout)
+        .unwrap()
+        .replace("points: [P, Q, R, T]", "points: [inf, NaN, nan, \"-inf\"]");
+    let file = dir.path().join("names.yaml");
+    std::fs::write(&file, yaml).unwrap();
+    for json in [false, true] {
+        let mut args = vec!["solve", "--input", file.to_str().unwrap()];
+        if json {
+            args.push("--json");
+        }
+        let out = orthocheck(&args);
+        let text = String::from_utf8_lossy(&out.stdout);
+        assert_eq!(
+            out.status.code(),
+            Some(0),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        assert!(
+            text.contains("infNaN") && text.contains("-infnan"),
+            "{text}"
+        );
+    }
+}
+
 /// Bad usage is exit 2 and names what is wrong: a negative count or seed names its option
 /// (it is not taken for an unknown flag), an output folder that is a file or cannot be
 /// written is refused before any work, and an empty `dof` table is refused.

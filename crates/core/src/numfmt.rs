@@ -1,7 +1,36 @@
 //! Number formatting, in one place, so reports and snapshots never drift across machines.
 
+use std::sync::atomic::{AtomicUsize, Ordering};
+
 /// Significant digits used for every floating value shown to a reader or snapshotted.
 pub const SIGNIFICANT: usize = 6;
+
+/// Non-finite values formatted so far in this process, by any formatter here. An output
+/// guard reads it ([`non_finite_formatted`]): it counts numbers as they become text, so a
+/// name that happens to read `inf` is never mistaken for one.
+static NON_FINITE: AtomicUsize = AtomicUsize::new(0);
+
+/// How many non-finite values the formatters here have turned into text in this process.
+/// Zero means no `NaN` or `inf` from a number can be in any text they made.
+pub fn non_finite_formatted() -> usize {
+    NON_FINITE.load(Ordering::Relaxed)
+}
+
+/// Count `x` if it is not finite; true when it is.
+fn counted(x: f64) -> bool {
+    if x.is_finite() {
+        return true;
+    }
+    NON_FINITE.fetch_add(1, Ordering::Relaxed);
+    false
+}
+
+/// The shortest text that reads back as exactly `x` (Rust's `{:?}`), for data files that
+/// must round-trip; a non-finite value is counted ([`non_finite_formatted`]).
+pub fn round_trip(x: f64) -> String {
+    counted(x);
+    format!("{x:?}")
+}
 
 /// Format with [`SIGNIFICANT`] significant digits: plain notation for magnitudes in
 /// [1e-4, 1e6), scientific otherwise; trailing zeros trimmed; `-0` printed as `0`.
@@ -13,13 +42,11 @@ pub const SIGNIFICANT: usize = 6;
 /// assert_eq!(sig(2.5e-9), "2.5e-9");
 /// assert_eq!(sig(-0.0), "0");
 /// assert_eq!(sig(f64::INFINITY), "inf");
+/// assert!(orthocheck_core::numfmt::non_finite_formatted() > 0);
 /// ```
 pub fn sig(x: f64) -> String {
-    if x.is_nan() {
-        return "NaN".into();
-    }
-    if x.is_infinite() {
-        return if x > 0.0 { "inf".into() } else { "-inf".into() };
+    if !counted(x) {
+        return non_finite_text(x);
     }
     if x == 0.0 {
         return "0".into();
@@ -28,6 +55,14 @@ pub fn sig(x: f64) -> String {
     match s.split_once('e') {
         Some((m, e)) => format!("{}e{}", trim_zeros(m), e),
         None => trim_zeros(&s),
+    }
+}
+
+fn non_finite_text(x: f64) -> String {
+    match x {
+        f64::INFINITY => "inf".into(),
+        f64::NEG_INFINITY => "-inf".into(),
+        _ => "NaN".into(),
     }
 }
 
@@ -110,4 +145,20 @@ pub fn below(x: f64) -> String {
     }
     let e = x.abs().log10().floor() as i32 + 1;
     format!("< 1e{e}")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_formatter_counts_the_non_finite_values_it_formats() {
+        // other tests may format non-finite values at the same time: the count only grows
+        for f in [sig, |x| sig_digits(x, 3), below, round_trip] {
+            let before = non_finite_formatted();
+            assert_eq!(f(f64::NAN), "NaN");
+            assert!(non_finite_formatted() > before);
+        }
+        assert_eq!(round_trip(0.1), "0.1");
+    }
 }

@@ -192,8 +192,9 @@ fn five(f1: &[Vector2<f64>], f2: &[Vector2<f64>], s: f64, shift: f64, out: &mut 
 /// by the epipolar residual; the true assignment's distances with their rounding bound.
 #[derive(Clone, Debug)]
 pub struct ExampleRanking {
-    /// (assignment, paper's distance), best first; infinite when no c is admissible.
-    pub by_paper: Vec<([usize; 4], f64)>,
+    /// (assignment, paper's distance), best first; `None` when no c is admissible: that
+    /// assignment has no real line, so no distance (not an infinite one), and ranks last.
+    pub by_paper: Vec<([usize; 4], Option<f64>)>,
     /// (assignment, equal-scale epipolar residual), best first.
     pub by_epipolar: Vec<([usize; 4], f64)>,
     /// The true assignment's distances, one per variant (signs of b and of frame 2's depths).
@@ -213,15 +214,18 @@ pub fn rank_example(ex: &Example, truth: &[usize; 4], factor: f64) -> ExampleRan
     let mut by_epipolar = Vec::new();
     for asg in permutations4() {
         let g2 = ex.frame2_recentred(&asg);
-        let d = smallest_c(&g1, &g2)
-            .map_or(f64::INFINITY, |c| paper_distance(&g1, &g2, c * factor, 1.0));
+        let d = smallest_c(&g1, &g2).map(|c| paper_distance(&g1, &g2, c * factor, 1.0));
         by_paper.push((asg, d));
         let e = epipolar_with_rounding(&g1, &g2, ex.coord_half)
             .scale_residual
             .abs();
         by_epipolar.push((asg, e));
     }
-    by_paper.sort_by(|a, b| a.1.total_cmp(&b.1));
+    // no line ranks after every distance, as an infinite one did
+    by_paper.sort_by(|a, b| match (a.1, b.1) {
+        (Some(x), Some(y)) => x.total_cmp(&y),
+        (x, y) => x.is_none().cmp(&y.is_none()),
+    });
     by_epipolar.sort_by(|a, b| a.1.total_cmp(&b.1));
     let g2 = ex.frame2_recentred(truth);
     let (mut true_distances, mut true_bound) = (Vec::new(), 0.0_f64);

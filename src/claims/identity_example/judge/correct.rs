@@ -36,11 +36,26 @@ fn tolerance(r: &ExampleRanking) -> Tolerance {
     )
 }
 
-fn runner_up(r: &ExampleRanking, truth: &[usize; 4]) -> f64 {
+/// The best wrong assignment's distance; `None` when no wrong assignment has a line, so
+/// none can pass the distance test.
+fn runner_up(r: &ExampleRanking, truth: &[usize; 4]) -> Option<f64> {
     r.by_paper
         .iter()
-        .find(|x| x.0 != *truth)
-        .map_or(f64::INFINITY, |x| x.1)
+        .filter(|x| x.0 != *truth)
+        .find_map(|x| x.1)
+}
+
+/// Is the best wrong assignment rejected by the true assignment's bound?
+fn rejected(runner: Option<f64>, bound: f64) -> bool {
+    runner.is_none_or(|d| d > bound)
+}
+
+/// The runner-up as a detail: its distance, or that no wrong assignment has a line.
+fn runner_value(runner: Option<f64>) -> Value {
+    runner.map_or_else(
+        || Value::label("no wrong assignment has a real line"),
+        Value::real,
+    )
 }
 
 fn first_result(
@@ -64,9 +79,9 @@ fn first_result(
         .computed("distances of T₂ from its line, true assignment", Value::reals(&r.true_distances))
         .computed("generic scenes where both signs of b pass under the program's conventions (see ex5-correct/generic)", Value::count_of(generic.both, generic.scenes))
         .tolerance(tolerance(r))
-        .power(Power::mutant(runner > r.true_bound, "the best wrong assignment, through the same distance test, is rejected"))
+        .power(Power::mutant(rejected(runner, r.true_bound), "the best wrong assignment, through the same distance test, is rejected"))
         .method("the procedure at c = census_c_factor × the smallest admissible c for the true assignment, both signs of b; true of the example, which owes it to its planar body (ex5-correct/cause): in generic scenes exactly one sign passes (ex5-correct/generic)")
-        .detail("best wrong assignment's distance", Value::real(runner))
+        .detail("best wrong assignment's distance", runner_value(runner))
         .verdict(Verdict::holds(first_two && on_line))
 }
 
@@ -80,27 +95,21 @@ fn ranking_result(
     let within: Vec<[usize; 4]> = r
         .by_paper
         .iter()
-        .filter(|x| x.1 <= r.true_bound)
+        .filter(|x| x.1.is_some_and(|d| d <= r.true_bound))
         .map(|x| x.0)
         .collect();
     let epi_first = r.by_epipolar.first().map(|x| x.0);
-    // an assignment without an admissible c has no line, so no distance (not an infinite one)
-    let finite_distances: Vec<f64> = r
-        .by_paper
-        .iter()
-        .map(|x| x.1)
-        .filter(|d| d.is_finite())
-        .collect();
-    let no_line = r.by_paper.len() - finite_distances.len();
+    let distances: Vec<f64> = r.by_paper.iter().filter_map(|x| x.1).collect();
+    let no_line = r.by_paper.len() - distances.len();
     b.claim(&case.correct)
         .suffix("ranking")
         .printed("the assignment that puts T₂ on its line", Value::label(format!("{truth:?}")))
         .computed("assignments within the bound by the paper's distance", Value::label(format!("{within:?}")))
         .computed("first by the equal-scale epipolar residual", Value::label(format!("{:?}", epi_first.unwrap_or([0; 4]))))
         .tolerance(tolerance(r))
-        .power(Power::mutant(runner > r.true_bound, "every wrong assignment is rejected by the same bound"))
+        .power(Power::mutant(rejected(runner, r.true_bound), "every wrong assignment is rejected by the same bound"))
         .method("every assignment of frame 2 (re-centred at its R) through the paper's procedure at census_c_factor × its smallest admissible c, and through the affine epipolar constraint with the coordinates' rounding (the body is planar: equal scale is met inside a two-dimensional null space)")
-        .detail("by the paper's distance", Value::reals(&finite_distances))
+        .detail("by the paper's distance", Value::reals(&distances))
         .cell("assignments with no real line (no admissible c", "the paper's distance does not exist)", Value::count_of(no_line, r.by_paper.len()))
         .detail("by the epipolar residual", Value::reals(&r.by_epipolar.iter().map(|x| x.1).collect::<Vec<_>>()))
         .verdict(if within == [*truth] && epi_first == Some(*truth) { Verdict::Reproduced } else { Verdict::Contradicted })
