@@ -15,6 +15,17 @@ use crate::error::{Error, Result};
 /// The temporary files alive now, for the signal handler.
 static LIVE: Mutex<Vec<PathBuf>> = Mutex::new(Vec::new());
 
+/// Held while temporaries reach their names: the signal handler waits for it, so a set of
+/// files is renamed whole or not at all, never half of it.
+static COMMIT: Mutex<()> = Mutex::new(());
+
+/// The mode a file the user asked for is created with: read and write for all, less the
+/// umask (as any new file), not the owner-only mode of a temporary file.
+fn user_file_mode() -> std::fs::Permissions {
+    use std::os::unix::fs::PermissionsExt as _;
+    std::fs::Permissions::from_mode(0o666)
+}
+
 /// A temporary file in the folder of its target, registered while it lives (`file` is taken
 /// when it reaches its name).
 struct Temporary {
@@ -33,12 +44,16 @@ impl Temporary {
             .file_name()
             .map(|n| n.to_string_lossy().into_owned())
             .unwrap_or_default();
+        // registered under the lock it is created in, so the signal handler sees every one
+        let mut live = lock();
         let file = tempfile::Builder::new()
             .prefix(&format!(".{name}."))
             .suffix(".tmp")
+            .permissions(user_file_mode())
             .tempfile_in(dir)?;
         let path = file.path().to_path_buf();
-        lock().push(path.clone());
+        live.push(path.clone());
+        drop(live);
         let mut t = Temporary {
             path,
             file: Some(file),
@@ -76,6 +91,12 @@ fn lock() -> std::sync::MutexGuard<'static, Vec<PathBuf>> {
         .unwrap_or_else(std::sync::PoisonError::into_inner)
 }
 
+fn commit() -> std::sync::MutexGuard<'static, ()> {
+    COMMIT
+        .lock()
+        .unwrap_or_else(std::sync::PoisonError::into_inner)
+}
+
 fn forget(path: &Path) {
     lock().retain(|p| p != path);
 }
@@ -83,6 +104,7 @@ fn forget(path: &Path) {
 /// Remove every temporary file still alive (the signal handler's clean-up; the process ends
 /// right after, so no drop runs).
 pub fn remove_temporaries() {
+    let _commit = commit();
     for p in lock().drain(..) {
         let _ = std::fs::remove_file(p);
     }
@@ -128,6 +150,7 @@ pub fn write_all_atomic(dir: &Path, files: &[(String, String)]) -> Result<()> {
             target,
         ));
     }
+    let _commit = commit();
     for (t, target) in written {
         t.persist(&target, true)
             .map_err(|e| fail(&target, e.to_string()))?;
@@ -148,6 +171,7 @@ pub fn write_new(path: &Path, text: &str, exists: impl Fn(&Path) -> Error) -> Re
         return Err(exists(path));
     }
     let t = Temporary::with(path, text).map_err(failed)?;
+    let _commit = commit();
     t.persist(path, false).map_err(|e| match e.kind() {
         // the name appeared while the file was being written
         std::io::ErrorKind::AlreadyExists => exists(path),

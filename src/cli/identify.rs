@@ -68,8 +68,12 @@ pub fn run(a: Args) -> Result<(), Error> {
         .map_err(Error::InvalidInput)?;
     let t = two_frames(&a.input, PointOrder::AsListed)?;
     check_size(&a, t.frames[0].len()).map_err(|m| in_file(&a.input, Error::InvalidInput(m)))?;
-    let r = identity::identify(&t.frames[0], &t.frames[1], a.method.into(), a.top)
+    // a bar on a terminal: at the point limits the ranking takes seconds
+    let bar = super::progress::bar(t.frames[1].len() as u64, "first points tried");
+    let tick = || bar.inc(1);
+    let r = identity::identify_reporting(&t.frames[0], &t.frames[1], a.method.into(), a.top, &tick)
         .map_err(|e| in_file(&a.input, e))?;
+    bar.finish_and_clear();
     let (frame2, named) = frame2_labels(&a.input, t.frames[1].len())?;
     let matches = r.full.as_ref().map_or_else(Vec::new, |f| {
         pairs(&t.names, &frame2, &f.frame2_indices)

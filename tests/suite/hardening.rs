@@ -9,7 +9,8 @@ use crate::cli::orthocheck;
 
 /// Temporary and probe files are created exclusively under unpredictable names: links planted
 /// under the names they once had (`.report.md.PID.tmp`, `.orthocheck-probe-PID`) are neither
-/// followed nor removed, the file they point to keeps its bytes, and no temporary is left.
+/// followed nor removed, the file they point to keeps its bytes, and no temporary is left;
+/// the report's files have the mode of any new file.
 #[test]
 fn planted_links_under_temporary_names_are_not_followed() {
     let dir = tempfile::tempdir().unwrap();
@@ -38,6 +39,19 @@ fn planted_links_under_temporary_names_are_not_followed() {
     assert!(std::fs::read_to_string(out.join("report.md"))
         .unwrap()
         .contains("Reproducibility"));
+    // a new file's mode, as any program makes one: 0666 less the umask, not a temporary's 0600
+    use std::os::unix::fs::PermissionsExt as _;
+    let status = std::fs::read_to_string("/proc/self/status").unwrap();
+    let umask = status
+        .lines()
+        .find_map(|l| l.strip_prefix("Umask:"))
+        .map(|m| u32::from_str_radix(m.trim(), 8).unwrap())
+        .unwrap();
+    let mode = std::fs::metadata(out.join("report.md"))
+        .unwrap()
+        .permissions()
+        .mode();
+    assert_eq!(mode & 0o777, 0o666 & !umask);
 }
 
 /// A file-size limit (`ulimit -f`) makes the write fail with a message naming the file, exit
@@ -99,6 +113,139 @@ fn sigterm_stops_the_report_cleanly() {
         0,
         "nothing left in the folder"
     );
+}
+
+/// Run the binary with `args`, send `signal` after `delay`, and wait for it.
+fn signalled(args: &[&str], delay_ms: u64, signal: &str) -> std::process::Output {
+    let child = Command::new(env!("CARGO_BIN_EXE_orthocheck"))
+        .args(args)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .expect("the binary runs");
+    std::thread::sleep(std::time::Duration::from_millis(delay_ms));
+    // the process may have ended already: then the signal finds nobody, which is a moment too
+    let _ = Command::new("kill")
+        .args([&format!("-{signal}"), &child.id().to_string()])
+        .status();
+    child.wait_with_output().unwrap()
+}
+
+/// The names in `dir`, sorted.
+fn names_in(dir: &std::path::Path) -> Vec<String> {
+    let mut names: Vec<String> = std::fs::read_dir(dir)
+        .map(|r| {
+            r.map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+                .collect()
+        })
+        .unwrap_or_default();
+    names.sort();
+    names
+}
+
+/// What a signalled run may leave: exit 0 and the whole output, or exit 130 and the output
+/// either absent or whole; byte for byte the uninterrupted run's, and no temporary beside it.
+/// A signal that lands before the handler is installed ends the process by itself, which is
+/// allowed only while nothing has been written.
+fn absent_or_whole(
+    out: &std::process::Output,
+    dir: &std::path::Path,
+    whole: &[(String, Vec<u8>)],
+    at: &str,
+) {
+    use std::os::unix::process::ExitStatusExt as _;
+    let err = String::from_utf8_lossy(&out.stderr);
+    let code = out.status.code();
+    let before_handler = out.status.signal().is_some();
+    assert!(
+        before_handler || code == Some(0) || code == Some(130),
+        "{at}: {:?} {err}",
+        out.status
+    );
+    let names = names_in(dir);
+    let expected: Vec<String> = whole.iter().map(|(n, _)| n.clone()).collect();
+    assert!(
+        names.is_empty() && code != Some(0) || names == expected && !before_handler,
+        "{at}: {:?} left {names:?}",
+        out.status
+    );
+    for (name, bytes) in whole.iter().filter(|_| !names.is_empty()) {
+        assert!(
+            std::fs::read(dir.join(name)).unwrap() == *bytes,
+            "{at}: {name} differs"
+        );
+    }
+}
+
+/// `synth --out` stopped by SIGINT or SIGTERM at moments spread over its run (10 MB of
+/// tracks): the file is absent or whole, never cut, and no temporary survives.
+#[test]
+fn signals_at_any_moment_leave_synth_output_absent_or_whole() {
+    let args = [
+        "synth", "--points", "1000", "--frames", "300", "--seed", "5",
+    ];
+    let whole = crate::cli::orthocheck(&args).stdout;
+    for (i, delay) in [0, 10, 30, 60, 100, 140, 180, 250].into_iter().enumerate() {
+        let dir = tempfile::tempdir().unwrap();
+        let file = dir.path().join("s.yaml");
+        let mut with_out = args.to_vec();
+        with_out.extend(["--out", file.to_str().unwrap()]);
+        let signal = ["INT", "TERM"][i % 2];
+        let out = signalled(&with_out, delay, signal);
+        let at = format!("SIG{signal} at {delay} ms");
+        absent_or_whole(&out, dir.path(), &[("s.yaml".into(), whole.clone())], &at);
+    }
+}
+
+/// `report --out` on one case with figures, stopped at moments spread over loading, the
+/// case run and the writes: the report is absent or whole (every file the uninterrupted
+/// run's bytes), never a mix, and no temporary survives.
+#[test]
+fn signals_at_any_moment_leave_the_report_absent_or_whole() {
+    let cases = tempfile::tempdir().unwrap();
+    for name in ["paper.yml", "ex2_three_frames.yaml"] {
+        let from = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("paper_cases")
+            .join(name);
+        std::fs::copy(from, cases.path().join(name)).unwrap();
+    }
+    let run = |out: &std::path::Path| {
+        vec![
+            "report".to_string(),
+            "--cases".into(),
+            cases.path().display().to_string(),
+            "--out".into(),
+            out.display().to_string(),
+        ]
+    };
+    let reference = tempfile::tempdir().unwrap();
+    let args = run(reference.path());
+    let done = crate::cli::orthocheck(&args.iter().map(String::as_str).collect::<Vec<_>>());
+    assert!(
+        done.status.success(),
+        "{}",
+        String::from_utf8_lossy(&done.stderr)
+    );
+    let whole: Vec<(String, Vec<u8>)> = names_in(reference.path())
+        .into_iter()
+        .map(|n| (n.clone(), std::fs::read(reference.path().join(&n)).unwrap()))
+        .collect();
+    for (i, delay) in [0, 5, 40, 150, 300, 450, 600, 750, 900]
+        .into_iter()
+        .enumerate()
+    {
+        let parent = tempfile::tempdir().unwrap();
+        let dir = parent.path().join("out");
+        let args = run(&dir);
+        let signal = ["TERM", "INT"][i % 2];
+        let out = signalled(
+            &args.iter().map(String::as_str).collect::<Vec<_>>(),
+            delay,
+            signal,
+        );
+        absent_or_whole(&out, &dir, &whole, &format!("SIG{signal} at {delay} ms"));
+    }
 }
 
 /// The output guard counts numbers as they are formatted, not words: points named `inf`,

@@ -291,6 +291,18 @@ pub fn rank_quadruples_top(
     residual: impl Fn(&[Vector2<f64>; 4], &[Vector2<f64>; 4]) -> f64 + Sync,
     top: usize,
 ) -> (Vec<Assignment>, usize) {
+    rank_quadruples_reporting(f1, f2, residual, top, &|| {})
+}
+
+/// [`rank_quadruples_top`], calling `done` as each choice of the first frame-2 point is
+/// finished (n calls in all, from any thread): the progress of a long ranking.
+fn rank_quadruples_reporting(
+    f1: &[Vector2<f64>],
+    f2: &[Vector2<f64>],
+    residual: impl Fn(&[Vector2<f64>; 4], &[Vector2<f64>; 4]) -> f64 + Sync,
+    top: usize,
+    done: &(dyn Fn() + Sync),
+) -> (Vec<Assignment>, usize) {
     use rayon::prelude::*;
     let n = f2.len();
     if f1.len() < 4 || n < 4 {
@@ -312,6 +324,7 @@ pub fn rank_quadruples_top(
                     }
                 }
             }
+            done();
             acc
         })
         .reduce(TopN::default, |x, y| x.merge(y, top))
@@ -429,6 +442,18 @@ pub fn identify(
     method: IdentifyMethod,
     top: usize,
 ) -> crate::error::Result<Identified> {
+    identify_reporting(f1, f2, method, top, &|| {})
+}
+
+/// [`identify`], calling `done` once for each frame-2 point the ranking has tried as the
+/// first of its choices: `f2.len()` calls in all, from any thread (a progress bar's ticks).
+pub fn identify_reporting(
+    f1: &[Vector2<f64>],
+    f2: &[Vector2<f64>],
+    method: IdentifyMethod,
+    top: usize,
+    done: &(dyn Fn() + Sync),
+) -> crate::error::Result<Identified> {
     let need = if method == IdentifyMethod::Five { 5 } else { 4 };
     if f1.len() < need || f2.len() != f1.len() {
         return Err(crate::error::Error::InvalidInput(format!(
@@ -459,9 +484,9 @@ pub fn identify(
         .fold(f64::MIN_POSITIVE, f64::max);
     let (ranked, tried) = match method {
         IdentifyMethod::Epipolar => {
-            rank_quadruples_top(f1, f2, |a, b| epipolar_residual(a, b), top)
+            rank_quadruples_reporting(f1, f2, |a, b| epipolar_residual(a, b), top, done)
         }
-        IdentifyMethod::Four => rank_quadruples_top(
+        IdentifyMethod::Four => rank_quadruples_reporting(
             f1,
             f2,
             |a, b| {
@@ -473,8 +498,9 @@ pub fn identify(
                 })
             },
             top,
+            done,
         ),
-        IdentifyMethod::Five => rank_quintuples(f1, f2, top),
+        IdentifyMethod::Five => rank_quintuples(f1, f2, top, done),
     };
     // the epipolar ranking already found the four points the full correspondence starts from
     let full = match (method, ranked.first()) {
@@ -496,11 +522,12 @@ pub fn identify(
 
 /// The `top` best ordered choices of five frame-2 points for frame-1 points 0‥4, by the
 /// five-point line distance (relative to the image size), and how many were tried; memory
-/// O(top) per thread.
+/// O(top) per thread; `done` as in [`identify_reporting`].
 fn rank_quintuples(
     f1: &[Vector2<f64>],
     f2: &[Vector2<f64>],
     top: usize,
+    done: &(dyn Fn() + Sync),
 ) -> (Vec<Assignment>, usize) {
     use rayon::prelude::*;
     let n = f2.len();
@@ -535,6 +562,7 @@ fn rank_quintuples(
                 };
                 acc = acc.take().map(|t| t.push(x, top));
             });
+            done();
             acc.unwrap_or_default()
         })
         .reduce(TopN::default, |x, y| x.merge(y, top))
