@@ -61,14 +61,17 @@ impl Tagged {
         let mut out = String::with_capacity(text.len() + TAG.len() * inserts.len());
         let mut marked = Vec::with_capacity(inserts.len());
         let mut done = 0;
+        // lines counted as the text is copied: once over the text, however many marks
+        let mut line = 1;
         for &(start, end, quoted) in inserts {
             if start < done || end > text.len() || !text.is_char_boundary(start) {
                 continue;
             }
+            line += text[done..start].matches('\n').count();
             out.push_str(&text[done..start]);
             let line_start = out.rfind('\n').map_or(0, |i| i + 1);
             marked.push(Marked {
-                line: text[..start].matches('\n').count() + 1,
+                line,
                 column: out[line_start..].chars().count() + 1,
                 written: text.get(start..end).unwrap_or_default().to_string(),
                 quoted,
