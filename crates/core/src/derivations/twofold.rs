@@ -5,6 +5,8 @@
 //! Here the squaring is carried out symbolically, with √A, √B, √C as variables reduced by
 //! (√X)² = X, so the printed polynomial is compared with a derivation, not a hand expansion.
 
+use std::sync::Mutex;
+
 use nalgebra::Vector3;
 use num_rational::BigRational;
 use rand::Rng;
@@ -81,6 +83,23 @@ pub fn twofold_squared(signs: [i64; 3]) -> Poly {
 /// assert!(f.variables().contains(&"g_2".to_string()));
 /// ```
 pub fn frame_equation(edges: [&str; 3], frame: &str) -> Poly {
+    // derived once per naming: the audit asks for the same few many times
+    static DERIVED: Mutex<Vec<([String; 4], Poly)>> = Mutex::new(Vec::new());
+    let key = [edges[0], edges[1], edges[2], frame].map(String::from);
+    let cache = || {
+        DERIVED
+            .lock()
+            .unwrap_or_else(std::sync::PoisonError::into_inner)
+    };
+    if let Some((_, p)) = cache().iter().find(|(k, _)| *k == key) {
+        return p.clone();
+    }
+    let p = derive_frame_equation(edges, frame);
+    cache().push((key, p.clone()));
+    p
+}
+
+fn derive_frame_equation(edges: [&str; 3], frame: &str) -> Poly {
     let p = relation_squared(edges, [1, 1, -1]);
     if frame == "i" {
         return p;

@@ -3,7 +3,9 @@
 
 use std::collections::BTreeMap;
 
+use num_bigint::BigInt;
 use num_rational::BigRational;
+use num_traits::Zero;
 use rand::Rng;
 
 use crate::algebra::RatFn;
@@ -65,6 +67,27 @@ impl PointCheck {
     }
 }
 
+/// Whether `left = ratio · right` at `values`; `None` where a side is undefined (its
+/// denominator vanishes). Exact, by cross-multiplying the sides' unreduced fractions: the same
+/// answer as comparing [`RatFn::eval`]s, without the gcds that dominate it.
+fn agree_at(
+    left: &RatFn,
+    right: &RatFn,
+    ratio: &BigRational,
+    values: &BTreeMap<String, BigRational>,
+) -> Option<bool> {
+    // p/q with p = n₁/d₁ and q = n₂/d₂: (n₁ d₂) / (d₁ n₂), undefined when n₂ = 0
+    let side = |f: &RatFn| -> Option<(BigInt, BigInt)> {
+        let (n1, d1) = f.num.eval_unreduced(values)?;
+        let (n2, d2) = f.den.eval_unreduced(values)?;
+        (!n2.is_zero()).then(|| (n1 * d2, d1 * n2))
+    };
+    let (ln, ld) = side(left)?;
+    let (rn, rd) = side(right)?;
+    // ln/ld = (a/b)(rn/rd) ⇔ ln · rd · b = a · rn · ld (ld, rd, b non-zero)
+    Some(ln * &rd * ratio.denom() == ratio.numer() * rn * ld)
+}
+
 /// Evaluate `left` and `ratio · right` at `points` seeded random rational points.
 ///
 /// # Example
@@ -97,9 +120,7 @@ pub fn agree_at_points(
                 (v.clone(), BigRational::new(n.into(), d.into()))
             })
             .collect();
-        if let (Some(l), Some(r)) = (left.eval(&values), right.eval(&values))
-            && l == r * ratio
-        {
+        if agree_at(left, right, ratio, &values) == Some(true) {
             agreeing += 1;
         }
     }
@@ -110,5 +131,40 @@ pub fn agree_at_points(
         seed,
         agreeing,
         degree,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::algebra::rat;
+
+    /// The cross-multiplied comparison answers as comparing the reduced values does: equal,
+    /// different, and undefined where a denominator vanishes (signs of every kind).
+    #[test]
+    fn cross_multiplying_answers_as_the_reduced_values_do() {
+        let l = RatFn::parse("(a^2 - b^2) / (3 a - 6 b)").unwrap();
+        // l = −r/6 wherever both are defined; (6, 7) makes both denominators vanish
+        let r = RatFn::parse("(a^2 - b^2) / (b - a/2)").unwrap();
+        let mut seen = Vec::new();
+        for (a, b) in [(5, 7), (-4, 3), (2, 1), (1, -9), (0, 2), (6, 7)] {
+            let values: BTreeMap<String, BigRational> =
+                [("a".to_string(), rat(a, 3)), ("b".to_string(), rat(b, 7))].into();
+            for ratio in [rat(-1, 6), rat(1, 6), rat(2, 1)] {
+                let reduced = match (l.eval(&values), r.eval(&values)) {
+                    (Some(x), Some(y)) => Some(x == y * &ratio),
+                    _ => None,
+                };
+                assert_eq!(
+                    agree_at(&l, &r, &ratio, &values),
+                    reduced,
+                    "{a}, {b}, {ratio}"
+                );
+                seen.push(reduced);
+            }
+        }
+        for outcome in [Some(true), Some(false), None] {
+            assert!(seen.contains(&outcome), "{outcome:?} is tried");
+        }
     }
 }
