@@ -175,6 +175,11 @@ enum Piece {
     Sup(String),
 }
 
+/// `s` written in Unicode superscripts (`−132` → `⁻¹³²`), if every character has one.
+pub fn superscript_text(s: &str) -> Option<String> {
+    s.chars().map(superscript).collect()
+}
+
 fn superscript(c: char) -> Option<char> {
     let digits = "⁰¹²³⁴⁵⁶⁷⁸⁹";
     match c {

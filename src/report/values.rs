@@ -44,7 +44,7 @@ pub fn quantities_text(qs: &[Quantity]) -> String {
 pub fn tolerance_text(t: &Tolerance) -> String {
     if let ToleranceSource::FalsePass { log10 } = &t.source {
         return format!(
-            "exact: a false identity would pass this check with probability below 10^{} ({})",
+            "exact: a false identity would pass this check with probability below 10{} ({})",
             false_pass_exponent(log10.0),
             t.how
         );
@@ -72,8 +72,11 @@ pub fn tolerance_text(t: &Tolerance) -> String {
 
 /// The exponent of a false-pass bound 10^x, rounded up (a weaker bound than the one derived,
 /// never a stronger): e.g. −307.
+/// The exponent of a false-pass bound, as a superscript (`⁻¹³²`; `^−132` if it had a
+/// character without one).
 fn false_pass_exponent(log10: f64) -> String {
-    sig(log10.ceil()).replace('-', "−")
+    let e = sig(log10.ceil()).replace('-', "−");
+    super::math::superscript_text(&e).unwrap_or(format!("^{e}"))
 }
 
 /// A verdict's power in one short phrase.
@@ -221,6 +224,12 @@ pub fn computed_text(c: &ClaimResult) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_false_pass_bound_reads_as_a_power_of_ten() {
+        assert_eq!(false_pass_exponent(-131.2), "⁻¹³¹");
+        assert_eq!(false_pass_exponent(-0.5), "⁰");
+    }
 
     #[test]
     fn sampled_digits_follow_the_trial_count() {
