@@ -175,12 +175,8 @@ enum Piece {
     Sup(String),
 }
 
-/// `s` written in Unicode superscripts (`−132` → `⁻¹³²`), if every character has one.
-pub fn superscript_text(s: &str) -> Option<String> {
-    s.chars().map(superscript).collect()
-}
-
-fn superscript(c: char) -> Option<char> {
+/// The Unicode superscript of `c`, if it has one.
+pub(crate) fn superscript(c: char) -> Option<char> {
     let digits = "⁰¹²³⁴⁵⁶⁷⁸⁹";
     match c {
         '0'..='9' => digits.chars().nth(c as usize - '0' as usize),

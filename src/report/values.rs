@@ -76,7 +76,10 @@ pub fn tolerance_text(t: &Tolerance) -> String {
 /// character without one).
 fn false_pass_exponent(log10: f64) -> String {
     let e = sig(log10.ceil()).replace('-', "−");
-    super::math::superscript_text(&e).unwrap_or(format!("^{e}"))
+    e.chars()
+        .map(super::math::superscript)
+        .collect::<Option<String>>()
+        .unwrap_or(format!("^{e}"))
 }
 
 /// A verdict's power in one short phrase.

@@ -11,6 +11,15 @@ pub(crate) fn orthocheck(args: &[&str]) -> Output {
         .expect("the binary runs")
 }
 
+/// `solve --input file` as text, then with `--json`.
+pub(crate) fn solve_text_and_json(file: &Path) -> [Output; 2] {
+    let input = file.to_str().unwrap();
+    [
+        orthocheck(&["solve", "--input", input]),
+        orthocheck(&["solve", "--input", input, "--json"]),
+    ]
+}
+
 fn json(out: &Output) -> serde_json::Value {
     serde_json::from_slice(&out.stdout).expect("stdout is JSON")
 }
@@ -476,12 +485,7 @@ fn collinear_input_is_one_degenerate_error() {
     ] {
         let file = dir.path().join(name);
         std::fs::write(&file, format!("frames:\n{frames}")).unwrap();
-        for as_json in [false, true] {
-            let mut args = vec!["solve", "--input", file.to_str().unwrap()];
-            if as_json {
-                args.push("--json");
-            }
-            let out = orthocheck(&args);
+        for out in solve_text_and_json(&file) {
             let err = String::from_utf8_lossy(&out.stderr);
             assert_eq!(out.status.code(), Some(2), "{name}: {err}");
             assert!(out.stdout.is_empty(), "{name}: nothing is printed");

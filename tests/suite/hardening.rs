@@ -259,12 +259,7 @@ fn points_named_like_non_finite_numbers_pass_the_output_guard() {
         .replace("points: [P, Q, R, T]", "points: [inf, NaN, nan, \"-inf\"]");
     let file = dir.path().join("names.yaml");
     std::fs::write(&file, yaml).unwrap();
-    for json in [false, true] {
-        let mut args = vec!["solve", "--input", file.to_str().unwrap()];
-        if json {
-            args.push("--json");
-        }
-        let out = orthocheck(&args);
+    for out in crate::cli::solve_text_and_json(&file) {
         let text = String::from_utf8_lossy(&out.stdout);
         assert_eq!(
             out.status.code(),
