@@ -1,10 +1,13 @@
-//! Sparse polynomial products: Fateman's p · (p + 1), p = (1 + x + y + z + t)^10, by the
-//! method the shape picks (the dense array) and by the heap.
+//! Sparse polynomial products: Fateman's p · (p + 1), p = (1 + x + y + z + t)^n. For n = 10
+//! by the method the shape picks (the dense array) and by the heap; for n = 20 (sums within
+//! an i128) and n = 30 (sums beyond it) by the array, the sizes `scripts/fateman.py` runs
+//! in python-flint.
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use orthocheck::algebra::mpoly::{mul_with, Coef, MPoly, MulMethod, Ring};
 
-fn fateman(c: &mut Criterion) {
+/// p and p + 1.
+fn operands(n: u32) -> (MPoly, MPoly) {
     let r = Ring::new(&["x", "y", "z", "t"]);
     let one = MPoly::constant(r.nvars(), Coef::Small(1));
     let s = r
@@ -12,12 +15,26 @@ fn fateman(c: &mut Criterion) {
         .iter()
         .filter_map(|v| r.var(v))
         .fold(one.clone(), |acc, v| &acc + &v);
-    let p = s.pow(10);
+    let p = s.pow(n);
     let q = &p + &one;
+    (p, q)
+}
+
+fn fateman(c: &mut Criterion) {
+    let (p, q) = operands(10);
     let mut g = c.benchmark_group("fateman10");
     g.sample_size(20);
     g.bench_function("auto", |b| b.iter(|| mul_with(&p, &q, MulMethod::Auto)));
     g.bench_function("heap", |b| b.iter(|| mul_with(&p, &q, MulMethod::Heap)));
+    g.finish();
+    let mut g = c.benchmark_group("fateman");
+    g.sample_size(10);
+    for n in [20, 30] {
+        let (p, q) = operands(n);
+        g.bench_function(format!("n{n}"), |b| {
+            b.iter(|| mul_with(&p, &q, MulMethod::Auto))
+        });
+    }
     g.finish();
 }
 

@@ -9,6 +9,7 @@
 //! [`crate::algebra::Poly`] (over ℚ, with named variables) is a rational content times one
 //! of these primitive integer polynomials.
 
+mod array;
 pub mod coeff;
 mod div;
 pub mod eval;

@@ -91,3 +91,80 @@ fn substitution_and_evaluation() {
     assert_eq!(q.eval(&at), num_bigint::BigInt::from(8 * 8 * 8 + 7));
     assert_eq!(r.display(&q), "y^3 + 3*y^2 + 4*y + 1");
 }
+
+mod array_against_heap {
+    use super::*;
+    use num_bigint::BigInt;
+    use proptest::prelude::*;
+
+    /// `len` terms (repeated exponents add up in `from_terms`) in `nvars` variables,
+    /// exponents below `e`, signed coefficients of up to `bits` bits.
+    fn terms(nvars: usize, len: std::ops::Range<usize>, e: u32, bits: u32) -> BoxedStrategy<MPoly> {
+        let c = (1i64 << (bits - 1)) - 1;
+        prop::collection::vec((prop::collection::vec(0..e, nvars), -c..=c), len)
+            .prop_map(move |t| {
+                let t = t.into_iter().map(|(x, c)| (x, Coef::Small(c))).collect();
+                MPoly::from_terms(nvars, t)
+            })
+            .boxed()
+    }
+
+    /// The array applies (the shapes below are dense enough) and gives the heap's product.
+    fn agree(a: &MPoly, b: &MPoly) -> Result<(), TestCaseError> {
+        let p = mul_array(a, b);
+        prop_assert!(p.is_some());
+        prop_assert_eq!(p, Some(mul_heap(a, b)));
+        Ok(())
+    }
+
+    fn pair(nvars: usize) -> BoxedStrategy<(MPoly, MPoly)> {
+        let e = if nvars == 1 { 1100 } else { 6 };
+        (terms(nvars, 55..60, e, 20), terms(nvars, 55..60, e, 20)).boxed()
+    }
+
+    /// Every exponent below `e` in two variables, each with coefficient `c`.
+    fn square(e: u32, c: i64) -> MPoly {
+        let t = (0..e * e)
+            .map(|k| (vec![k / e, k % e], Coef::Small(c)))
+            .collect();
+        MPoly::from_terms(2, t)
+    }
+
+    // sums of up to 400 products near 2¹²⁶ wrap an i128 many times, upwards and downwards
+    #[test]
+    fn sums_beyond_an_i128_are_exact() -> Result<(), TestCaseError> {
+        let (top, bottom) = (square(20, i64::MAX), square(20, -i64::MAX));
+        agree(&top, &top)?;
+        agree(&bottom, &top)?;
+        let p = mul_array(&top, &top).ok_or_else(|| TestCaseError::fail("no array"))?;
+        let central = (0..p.len()).find(|&t| p.exponents(t) == [19, 19]);
+        let expected = Coef::from_big(BigInt::from(i64::MAX).pow(2) * 400);
+        prop_assert_eq!(central.map(|t| p.coef(t).clone()), Some(expected));
+        Ok(())
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig { cases: 48, rng_seed: proptest::test_runner::RngSeed::Fixed(5), ..ProptestConfig::default() })]
+
+        // the whole box in one chunk, or one variable alone beyond a chunk
+        #[test]
+        fn one_chunk((a, b) in (1usize..4).prop_flat_map(pair)) {
+            agree(&a, &b)?;
+        }
+
+        // chunks indexed by one leading variable (three variables) and by two (four), with
+        // coefficients whose products need the upper word
+        #[test]
+        fn chunks(a in terms(3, 300..400, 16, 40), b in terms(3, 300..400, 16, 40),
+                  c in terms(4, 500..700, 11, 50), d in terms(4, 500..700, 11, 50)) {
+            agree(&a, &b)?;
+            agree(&c, &d)?;
+        }
+
+        // word-sized coefficients: the slots that count their overflows
+        #[test]
+        fn wide_slots(a in terms(3, 300..400, 16, 62), b in terms(3, 300..400, 16, 62)) {
+            agree(&a, &b)?;
+        }
+    }
+}

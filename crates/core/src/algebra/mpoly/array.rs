@@ -1,0 +1,308 @@
+//! The dense array product (FLINT's `mul_array`), accumulated in cache-sized chunks.
+//!
+//! Exponents index a box over the product's degree bounds (Kronecker substitution). The
+//! leading variables cut the box into chunks of at most [`CHUNK_BYTES`] of accumulators,
+//! which stay in the inner caches: each operand's terms are grouped by their leading
+//! exponents, and a chunk of the product sums the pairs of groups whose leading exponents
+//! add up to its own. One slot per point of the whole box instead touches a new cache line
+//! with nearly every product, and its memory grows with the box. Chunks are drained in
+//! descending lexicographic order, so one stable pass by total degree puts the product in
+//! the ring's graded order, with no sort.
+//!
+//! Coefficients are machine words, so every product fits an i128. A slot is an i128 when
+//! the sums provably fit it (max|a| · max|b| · min(m, n) < 2¹²⁶), else an i128 and a count
+//! of its overflows (FLINT's three-limb accumulator): the count is at most the number of
+//! products, so that slot is exact for any operands of word-sized coefficients.
+
+use num_bigint::BigInt;
+
+use super::coeff::Coef;
+use super::monomial::Packing;
+use super::MPoly;
+
+/// Bytes of accumulators in one chunk (within a core's second-level cache).
+const CHUNK_BYTES: usize = 128 << 10;
+
+/// Largest chunk or group index (entries): 128 MiB of i128 slots.
+const MAX_ENTRIES: usize = 1 << 23;
+
+/// A chunk's accumulator.
+trait Slot: Copy + Default {
+    /// Add a product of two words.
+    fn add(&mut self, p: i128);
+    /// The sum, `None` for zero.
+    fn coef(self) -> Option<Coef>;
+}
+
+impl Slot for i128 {
+    #[inline(always)]
+    fn add(&mut self, p: i128) {
+        *self += p;
+    }
+    fn coef(self) -> Option<Coef> {
+        (self != 0).then(|| Coef::from_i128(self))
+    }
+}
+
+/// `lo + 2¹²⁸ · wraps`.
+#[derive(Clone, Copy, Default)]
+struct Wide {
+    lo: i128,
+    wraps: i64,
+}
+
+impl Slot for Wide {
+    #[inline(always)]
+    fn add(&mut self, p: i128) {
+        let (s, over) = self.lo.overflowing_add(p);
+        self.lo = s;
+        // an overflow wraps by 2¹²⁸ in the direction of p's sign
+        self.wraps += i64::from(over) * ((p >> 127) as i64 | 1);
+    }
+    fn coef(self) -> Option<Coef> {
+        if self.wraps == 0 {
+            return Slot::coef(self.lo);
+        }
+        Some(Coef::from_big(
+            (BigInt::from(self.wraps) << 128u32) + BigInt::from(self.lo),
+        ))
+    }
+}
+
+/// The box, and the number of leading variables that index chunks, when the array method
+/// applies: every coefficient a word, the box no larger than the number of term products
+/// (so scanning it costs less than the products), a chunk and the index of groups within
+/// [`MAX_ENTRIES`]. The split is the fewest leading variables that leave a chunk within
+/// [`CHUNK_BYTES`] and one variable inside it; none when finding the pairs of groups
+/// (chunks × groups of `a`) could cost more than the products.
+fn plan(a: &MPoly, b: &MPoly, slot: usize) -> Option<(Vec<usize>, usize)> {
+    if !a.coefs.iter().chain(&b.coefs).all(|c| c.small().is_some()) {
+        return None;
+    }
+    let dims: Vec<usize> = (0..a.nvars())
+        .map(|i| (a.degree_in(i) + b.degree_in(i) + 1) as usize)
+        .collect();
+    let size = dims.iter().try_fold(1usize, |s, d| s.checked_mul(*d))?;
+    let products = a.len().checked_mul(b.len())?;
+    if size > products {
+        return None;
+    }
+    let max = dims.len().saturating_sub(1);
+    let mut split = (0..=max)
+        .find(|&s| dims[s..].iter().product::<usize>() * slot <= CHUNK_BYTES)
+        .unwrap_or(max);
+    let outer: usize = dims[..split].iter().product();
+    if outer.saturating_mul(outer) > products {
+        split = 0;
+    }
+    let (outer, inner) = dims.split_at(split);
+    let entries = |d: &[usize]| d.iter().product::<usize>();
+    (entries(outer) <= MAX_ENTRIES && entries(inner) <= MAX_ENTRIES).then_some((dims, split))
+}
+
+/// Whether the sums of `a · b` provably fit an i128.
+fn fits_i128(a: &MPoly, b: &MPoly) -> bool {
+    let max_bits = |p: &MPoly| p.coefs.iter().map(Coef::bits).max().unwrap_or(0);
+    let shorter = a.len().min(b.len()) as u64;
+    max_bits(a) + max_bits(b) + u64::from(64 - shorter.leading_zeros()) <= 126
+}
+
+/// `a · b` by the array method, or `None` when it does not apply (see [`plan`]).
+pub(super) fn product(a: &MPoly, b: &MPoly) -> Option<MPoly> {
+    let pack = Packing::for_degree(a.nvars(), a.degree() + b.degree());
+    if fits_i128(a, b) {
+        let (dims, split) = plan(a, b, size_of::<i128>())?;
+        Some(product_in::<i128>(a, b, &dims, split, pack))
+    } else {
+        let (dims, split) = plan(a, b, size_of::<Wide>())?;
+        Some(product_in::<Wide>(a, b, &dims, split, pack))
+    }
+}
+
+/// Strides of a lexicographic index over `dims` (the first dimension most significant).
+fn strides(dims: &[usize]) -> Vec<usize> {
+    let mut s = vec![1usize; dims.len()];
+    for i in (0..dims.len().saturating_sub(1)).rev() {
+        s[i] = s[i + 1] * dims[i + 1];
+    }
+    s
+}
+
+/// The exponents of index `k` into `out`.
+fn decode(k: usize, stride: &[usize], dims: &[usize], out: &mut [u32]) {
+    for ((x, s), d) in out.iter_mut().zip(stride).zip(dims) {
+        *x = ((k / s) % d) as u32;
+    }
+}
+
+/// One operand's terms, grouped by their leading (outer) exponents: the terms of outer index
+/// `o` are `start[o]..start[o + 1]`, each its index in a chunk and its coefficient.
+struct Groups {
+    start: Vec<u32>,
+    terms: Vec<(usize, i64)>,
+}
+
+impl Groups {
+    fn new(p: &MPoly, dims: &[usize], split: usize) -> Groups {
+        let (outer, inner) = dims.split_at(split);
+        let (so, si) = (strides(outer), strides(inner));
+        let index = |m: &[u64], vars: std::ops::Range<usize>, stride: &[usize]| -> usize {
+            vars.zip(stride)
+                .map(|(i, s)| p.pack.exponent(m, i) as usize * s)
+                .sum()
+        };
+        let mut keyed: Vec<(usize, (usize, i64))> = (0..p.len())
+            .map(|t| {
+                let m = p.packed(t);
+                let o = index(m, 0..split, &so);
+                let i = index(m, split..dims.len(), &si);
+                (o, (i, p.coefs[t].small().unwrap_or(0)))
+            })
+            .collect();
+        keyed.sort_unstable_by_key(|t| (t.0, t.1 .0));
+        let mut start = vec![0u32; outer.iter().product::<usize>() + 1];
+        for t in &keyed {
+            start[t.0 + 1] += 1;
+        }
+        for o in 1..start.len() {
+            start[o] += start[o - 1];
+        }
+        Groups {
+            start,
+            terms: keyed.into_iter().map(|t| t.1).collect(),
+        }
+    }
+
+    fn terms(&self, o: usize) -> &[(usize, i64)] {
+        &self.terms[self.start[o] as usize..self.start[o + 1] as usize]
+    }
+
+    /// The non-empty outer indices, ascending.
+    fn occupied(&self) -> impl Iterator<Item = usize> + '_ {
+        (0..self.start.len() - 1).filter(|&o| self.start[o] < self.start[o + 1])
+    }
+}
+
+/// `chunk[ia + ib] += ca · cb` over every pair of terms; `chunk.len()` is a power of two
+/// above every index, so the mask changes no index and spares the bounds check. Two terms
+/// of `a` share each pass over `b`: its loads and the loop's count are paid once for two.
+#[inline]
+fn accumulate<S: Slot>(chunk: &mut [S], a: &[(usize, i64)], b: &[(usize, i64)]) {
+    let mask = chunk.len().wrapping_sub(1);
+    if !chunk.len().is_power_of_two() {
+        return;
+    }
+    let mut pairs = a.chunks_exact(2);
+    for two in &mut pairs {
+        let ((i0, c0), (i1, c1)) = (two[0], two[1]);
+        let (c0, c1) = (i128::from(c0), i128::from(c1));
+        for &(ib, cb) in b {
+            // both factors are sign-extended words: one widening multiplication each
+            let cb = i128::from(cb);
+            chunk[(i0 + ib) & mask].add(c0 * cb);
+            chunk[(i1 + ib) & mask].add(c1 * cb);
+        }
+    }
+    for &(ia, ca) in pairs.remainder() {
+        let ca = i128::from(ca);
+        for &(ib, cb) in b {
+            chunk[(ia + ib) & mask].add(ca * i128::from(cb));
+        }
+    }
+}
+
+/// The product's terms as drained, chunk after chunk (descending lexicographic order).
+struct Drained {
+    pack: Packing,
+    degree: Vec<u32>,
+    exps: Vec<u64>,
+    coefs: Vec<Coef>,
+}
+
+impl Drained {
+    /// Move the non-zero slots of `chunk` (outer exponents in `e[..split]`) out, zeroing it.
+    fn drain<S: Slot>(&mut self, chunk: &mut [S], e: &mut [u32], split: usize, inner: &[usize]) {
+        let stride = strides(inner);
+        let mut w = vec![0u64; self.pack.words];
+        let size: usize = inner.iter().product();
+        for k in (0..size).rev() {
+            let Some(c) = std::mem::take(&mut chunk[k]).coef() else {
+                continue;
+            };
+            decode(k, &stride, inner, &mut e[split..]);
+            self.pack.pack_into(e, &mut w);
+            self.degree.push(self.pack.degree(&w) as u32);
+            self.exps.extend_from_slice(&w);
+            self.coefs.push(c);
+        }
+    }
+
+    /// The terms in graded order: a stable counting pass by descending total degree.
+    fn into_poly(self, max_degree: usize) -> MPoly {
+        let words = self.pack.words;
+        let mut first = vec![0usize; max_degree + 2];
+        for &d in &self.degree {
+            first[max_degree - d as usize + 1] += 1;
+        }
+        for i in 1..first.len() {
+            first[i] += first[i - 1];
+        }
+        let mut exps = vec![0u64; self.exps.len()];
+        let mut coefs = vec![Coef::Small(0); self.coefs.len()];
+        for (t, (&d, c)) in self.degree.iter().zip(self.coefs).enumerate() {
+            let slot = &mut first[max_degree - d as usize];
+            exps[*slot * words..(*slot + 1) * words]
+                .copy_from_slice(&self.exps[t * words..(t + 1) * words]);
+            coefs[*slot] = c;
+            *slot += 1;
+        }
+        MPoly {
+            pack: self.pack,
+            exps,
+            coefs,
+        }
+    }
+}
+
+/// `a · b` over the box `dims` in chunks of the variables after `split`, accumulated in
+/// `S`; `pack` holds the product's degree.
+fn product_in<S: Slot>(a: &MPoly, b: &MPoly, dims: &[usize], split: usize, pack: Packing) -> MPoly {
+    let (outer, inner) = dims.split_at(split);
+    let so = strides(outer);
+    let (ga, gb) = (Groups::new(a, dims, split), Groups::new(b, dims, split));
+    let a_groups: Vec<(usize, Vec<u32>)> = ga
+        .occupied()
+        .map(|o| {
+            let mut v = vec![0u32; split];
+            decode(o, &so, outer, &mut v);
+            (o, v)
+        })
+        .collect();
+    let mut chunk = vec![S::default(); inner.iter().product::<usize>().next_power_of_two()];
+    let mut out = Drained {
+        pack,
+        degree: Vec::new(),
+        exps: Vec::new(),
+        coefs: Vec::new(),
+    };
+    let mut e = vec![0u32; dims.len()];
+    for o in (0..outer.iter().product::<usize>()).rev() {
+        decode(o, &so, outer, &mut e[..split]);
+        let mut touched = false;
+        for (pa, va) in a_groups.iter().take_while(|g| g.0 <= o) {
+            // the leading exponents of b's group are o's less a's, when none is negative
+            if va.iter().zip(&e[..split]).any(|(x, y)| x > y) {
+                continue;
+            }
+            let tb = gb.terms(o - pa);
+            if !tb.is_empty() {
+                accumulate(&mut chunk, ga.terms(*pa), tb);
+                touched = true;
+            }
+        }
+        if touched {
+            out.drain(&mut chunk, &mut e, split, inner);
+        }
+    }
+    out.into_poly((a.degree() + b.degree()) as usize)
+}
