@@ -1,7 +1,8 @@
 //! Sparse polynomial products: Fateman's p · (p + 1), p = (1 + x + y + z + t)^n. For n = 10
 //! by the method the shape picks (the dense array) and by the heap; for n = 20 (sums within
 //! an i128) and n = 30 (sums beyond it) by the array, the sizes `scripts/fateman.py` runs
-//! in python-flint.
+//! in python-flint. And the Schwartz–Zippel screen modulo word primes: (1 + x + y + z + t)^8
+//! against its expansion at 64 points, as the audit runs it.
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use orthocheck::algebra::mpoly::{mul_with, Coef, MPoly, MulMethod, Ring};
@@ -38,5 +39,15 @@ fn fateman(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, fateman);
+fn screen(c: &mut Criterion) {
+    use orthocheck::algebra::{modp::agree_mod_p, rat, RatFn};
+    let power = RatFn::parse("(1 + x + y + z + t)^8").expect("a formula");
+    let expanded = RatFn::from(power.num.clone());
+    let one = rat(1, 1);
+    c.bench_function("screen_mod_p/64_points", |b| {
+        b.iter(|| agree_mod_p(&power, &expanded, &one, 64, 1))
+    });
+}
+
+criterion_group!(benches, fateman, screen);
 criterion_main!(benches);

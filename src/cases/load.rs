@@ -295,14 +295,23 @@ pub fn load_cases<C: Schema>(
         cases.push(case);
         texts.push((p, text));
     }
-    known_restated_claims(&cases, &texts)?;
-    inventory_claims(origin, &texts)?;
+    // the `claim:` names of each file, read once for both checks
+    let named = texts
+        .iter()
+        .map(|(p, text)| Ok(parse_yaml::<Claims>(text, p)?.named))
+        .collect::<Result<Vec<_>>>()?;
+    known_restated_claims(&cases, &texts, &named)?;
+    inventory_claims(origin, &texts, &named)?;
     Ok(cases)
 }
 
 /// Where the folder has a claim inventory (`claims.md`), every `claim:` a case names must
 /// be one of its ids (or `id/part`): a typo would decide a claim the paper does not make.
-fn inventory_claims(origin: &CaseOrigin, texts: &[(PathBuf, String)]) -> Result<()> {
+fn inventory_claims(
+    origin: &CaseOrigin,
+    texts: &[(PathBuf, String)],
+    named: &[std::collections::BTreeSet<String>],
+) -> Result<()> {
     let mut ids = std::collections::BTreeSet::new();
     for name in super::INVENTORY_FILES {
         match origin.file(name) {
@@ -312,10 +321,7 @@ fn inventory_claims(origin: &CaseOrigin, texts: &[(PathBuf, String)]) -> Result<
             Err(e) => return Err(e),
         }
     }
-    for (p, text) in texts {
-        let tree: serde_json::Value = parse_yaml(text, p)?;
-        let mut named = std::collections::BTreeSet::new();
-        collect_claims(&tree, &mut named);
+    for ((p, text), named) in texts.iter().zip(named) {
         if let Some(id) = named
             .iter()
             .find(|id| !super::refers_to_inventory(id, &ids))
@@ -359,12 +365,13 @@ fn whole_file(path: &Path, message: String) -> Error {
 
 /// Every id a restatement restates must be a claim some case of the folder refers to
 /// (a `claim:` field anywhere in a case), or the restatement could never be decided.
-fn known_restated_claims<C: Schema>(cases: &[Case<C>], texts: &[(PathBuf, String)]) -> Result<()> {
-    let mut known = std::collections::BTreeSet::new();
-    for (p, text) in texts {
-        let tree: serde_json::Value = parse_yaml(text, p)?;
-        collect_claims(&tree, &mut known);
-    }
+fn known_restated_claims<C: Schema>(
+    cases: &[Case<C>],
+    texts: &[(PathBuf, String)],
+    named: &[std::collections::BTreeSet<String>],
+) -> Result<()> {
+    let known: std::collections::BTreeSet<&str> =
+        named.iter().flatten().map(String::as_str).collect();
     for (case, (p, text)) in cases.iter().zip(texts) {
         if let Some((id, field)) = case
             .check
@@ -383,21 +390,77 @@ fn known_restated_claims<C: Schema>(cases: &[Case<C>], texts: &[(PathBuf, String
     Ok(())
 }
 
-/// The string values of every `claim` key in a parsed case.
-fn collect_claims(v: &serde_json::Value, out: &mut std::collections::BTreeSet<String>) {
-    match v {
-        serde_json::Value::Object(m) => {
-            for (k, x) in m {
-                match (k.as_str(), x) {
-                    ("claim", serde_json::Value::String(id)) => {
-                        out.insert(id.clone());
-                    }
-                    _ => collect_claims(x, out),
+/// The string values of every `claim` key anywhere in a YAML tree (aliases resolved by the
+/// parser), nothing else kept: a case file's claims without building its whole tree.
+#[derive(Default)]
+struct Claims {
+    named: std::collections::BTreeSet<String>,
+    /// The node itself when it is a string (a `claim:` value is one).
+    text: Option<String>,
+}
+
+impl<'de> serde::Deserialize<'de> for Claims {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> std::result::Result<Self, D::Error> {
+        d.deserialize_any(ClaimsVisitor)
+    }
+}
+
+struct ClaimsVisitor;
+
+impl<'de> serde::de::Visitor<'de> for ClaimsVisitor {
+    type Value = Claims;
+
+    fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+        f.write_str("any YAML value")
+    }
+    fn visit_str<E>(self, v: &str) -> std::result::Result<Claims, E> {
+        Ok(Claims {
+            text: Some(v.to_string()),
+            ..Claims::default()
+        })
+    }
+    fn visit_bool<E>(self, _: bool) -> std::result::Result<Claims, E> {
+        Ok(Claims::default())
+    }
+    fn visit_i64<E>(self, _: i64) -> std::result::Result<Claims, E> {
+        Ok(Claims::default())
+    }
+    fn visit_u64<E>(self, _: u64) -> std::result::Result<Claims, E> {
+        Ok(Claims::default())
+    }
+    fn visit_f64<E>(self, _: f64) -> std::result::Result<Claims, E> {
+        Ok(Claims::default())
+    }
+    fn visit_unit<E>(self) -> std::result::Result<Claims, E> {
+        Ok(Claims::default())
+    }
+    fn visit_none<E>(self) -> std::result::Result<Claims, E> {
+        Ok(Claims::default())
+    }
+    fn visit_seq<A: serde::de::SeqAccess<'de>>(
+        self,
+        mut seq: A,
+    ) -> std::result::Result<Claims, A::Error> {
+        let mut out = Claims::default();
+        while let Some(x) = seq.next_element::<Claims>()? {
+            out.named.extend(x.named);
+        }
+        Ok(out)
+    }
+    fn visit_map<A: serde::de::MapAccess<'de>>(
+        self,
+        mut map: A,
+    ) -> std::result::Result<Claims, A::Error> {
+        let mut out = Claims::default();
+        while let Some((k, v)) = map.next_entry::<Claims, Claims>()? {
+            match (k.text.as_deref(), v.text) {
+                (Some("claim"), Some(id)) => {
+                    out.named.insert(id);
                 }
+                _ => out.named.extend(v.named),
             }
         }
-        serde_json::Value::Array(a) => a.iter().for_each(|x| collect_claims(x, out)),
-        _ => {}
+        Ok(out)
     }
 }
 

@@ -1,4 +1,5 @@
-//! The shared judge of an identity decided at random rational points (Schwartz–Zippel).
+//! The shared judge of an identity decided at random points modulo word primes
+//! (Schwartz–Zippel).
 
 use super::{ClaimBuilder, Tolerance, ToleranceSource, Value};
 use crate::studies::points::PointCheck;
@@ -9,9 +10,9 @@ pub fn points_tolerance(p: &PointCheck) -> Tolerance {
     Tolerance {
         bound: None,
         source: ToleranceSource::FalsePass {
-            log10: crate::check::Real(p.log10_failure_bound()),
+            log10: crate::check::Real(p.log10_false_pass()),
         },
-        how: "Schwartz–Zippel: a false identity passes with probability at most (degree of the difference / size of the sample set) per point, to the power of the number of points".into(),
+        how: "Schwartz–Zippel modulo primes enough for the difference's height (one of them keeps it non-zero): a false identity passes with probability at most (degree of the difference / smallest prime) per point, to the power of the number of points".into(),
     }
 }
 
@@ -19,9 +20,14 @@ pub fn points_tolerance(p: &PointCheck) -> Tolerance {
 pub fn points_details<'b>(r: ClaimBuilder<'b>, p: &PointCheck) -> ClaimBuilder<'b> {
     r.detail("seed of the points", p.seed)
         .detail("degree of the difference", p.degree as usize)
-        .detail("sample set size per coordinate", PointCheck::sample_size())
+        .detail("primes", p.primes.len())
+        .detail("smallest prime", p.smallest_prime())
+        .detail(
+            "height bound of the difference (bits)",
+            p.height_bits as usize,
+        )
         .detail(
             "log10 of the failure bound",
-            Value::real(p.log10_failure_bound()),
+            Value::real(p.log10_false_pass()),
         )
 }

@@ -175,7 +175,7 @@ fn twofold_text(a: &TwofoldAudit) -> String {
          derived / printed per sign pattern: {ratios}\n\
          product over the four sign classes / printed: {prod}\n\
          quadratic in a², b², c²: {quad}\n\
-         random rational points: {agree}/{n} agree (seed {seed})\n\
+         random points (modulo primes): {agree}/{n} agree (seed {seed})\n\
          verdict:  {verdict}\n",
         transcription = a.transcription,
         printed = a.printed,

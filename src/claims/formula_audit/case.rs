@@ -13,7 +13,7 @@ use crate::error::Result;
 #[derive(Clone, Debug, Deserialize, PartialEq)]
 #[serde(deny_unknown_fields)]
 pub struct FormulaAuditCase {
-    /// Random rational points for the second, independent check of every identity.
+    /// Random points (modulo word primes) for the second, independent check of every identity.
     pub evaluation_points: usize,
     /// Seed of those points.
     pub seed: u64,

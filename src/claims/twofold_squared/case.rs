@@ -14,7 +14,7 @@ pub struct TwofoldCase {
     pub relations: RelationsClaim,
     /// The printed polynomial.
     pub polynomial: PolynomialClaim,
-    /// Random rational points for the independent evaluation check.
+    /// Random points (modulo word primes) for the independent evaluation check.
     pub evaluation_points: usize,
     /// Seed of those points.
     pub seed: u64,

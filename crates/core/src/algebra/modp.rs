@@ -1,37 +1,60 @@
-//! Random-point screens modulo a 61-bit prime (Schwartz–Zippel over 𝔽ₚ).
+//! Random-point screens modulo several 61-bit primes (Schwartz–Zippel over 𝔽ₚ).
 //!
-//! A non-zero polynomial of total degree d vanishes at a uniformly random point of 𝔽ₚⁿ with
-//! probability at most d/p. Comparing two rational functions through the cross-multiplied
-//! polynomial `l.num · r.den − k · r.num · l.den` needs no division, so a point where a
-//! denominator vanishes is as good as any other. With p = 2⁶¹ − 1 every evaluation is a few
-//! word multiplications: a fast screen beside the exact comparison, never instead of it.
+//! Two rational functions are compared through the cross-multiplied polynomial
+//! D = `l.num · r.den − k · r.num · l.den`, which needs no division, so a point where a
+//! denominator vanishes is as good as any other. A non-zero D of total degree d vanishes at
+//! a uniformly random point of 𝔽ₚⁿ with probability at most d/p, provided D is non-zero
+//! modulo p: p must not divide every coefficient of D. A height bound H on D's coefficients
+//! (from the operands' 1-norms) settles that: distinct primes above 2⁶⁰ dividing one non-zero
+//! coefficient number fewer than log₂H / 60, so with m primes, 60·m ≥ log₂H, D stays non-zero
+//! modulo one of them. Every point is drawn afresh for each prime, and agrees only where all
+//! primes agree; a false identity then passes `n` points with probability at most (d/p)ⁿ,
+//! p the smallest prime. Each evaluation is a few word multiplications: a fast screen beside
+//! the exact comparison, or the second check after it.
 
 use num_bigint::BigInt;
 use num_integer::Integer;
 use num_rational::BigRational;
-use num_traits::ToPrimitive;
+use num_traits::{Signed, ToPrimitive};
 use rand::Rng;
 
 use super::mpoly::{Coef, Scalar};
 use super::{Poly, RatFn};
 
-/// The Mersenne prime 2⁶¹ − 1.
+/// The primes are 2⁶¹ − c for these c, the sixteen largest primes below 2⁶¹: a reduction
+/// folds the high bits of a product onto the low ones, times c.
+pub const OFFSETS: [u64; 16] = [
+    1, 31, 45, 229, 259, 283, 339, 391, 403, 465, 531, 579, 675, 759, 799, 819,
+];
+
+/// The Mersenne prime 2⁶¹ − 1, the first of the primes.
 pub const PRIME: u64 = (1 << 61) - 1;
 
-/// An element of 𝔽ₚ, p = [`PRIME`].
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct Fp(pub u64);
+/// The j-th prime, 2⁶¹ − `OFFSETS[j]`.
+pub const fn prime(j: usize) -> u64 {
+    (1 << 61) - OFFSETS[j]
+}
 
-impl Fp {
+/// An element of 𝔽ₚ, p = 2⁶¹ − C.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Residue<const C: u64>(pub u64);
+
+/// An element of 𝔽ₚ, p = [`PRIME`].
+pub type Fp = Residue<1>;
+
+impl<const C: u64> Residue<C> {
+    /// The modulus.
+    pub const P: u64 = (1 << 61) - C;
+
     /// The residue of an integer.
-    pub fn from_big(v: &BigInt) -> Fp {
-        let r = v.mod_floor(&BigInt::from(PRIME));
-        Fp(r.to_u64().unwrap_or(0))
+    pub fn from_big(v: &BigInt) -> Self {
+        let r = v.mod_floor(&BigInt::from(Self::P));
+        Residue(r.to_u64().unwrap_or(0))
     }
 
     /// `self^e`.
-    pub fn pow(self, mut e: u64) -> Fp {
-        let (mut r, mut b) = (Fp(1), self);
+    pub fn pow(self, mut e: u64) -> Self {
+        let (mut r, mut b) = (Residue(1), self);
         while e > 0 {
             if e & 1 == 1 {
                 r = r.mul(&b);
@@ -43,78 +66,102 @@ impl Fp {
     }
 
     /// The inverse (Fermat), `None` for zero.
-    pub fn inv(self) -> Option<Fp> {
-        (self.0 != 0).then(|| self.pow(PRIME - 2))
+    pub fn inv(self) -> Option<Self> {
+        (self.0 != 0).then(|| self.pow(Self::P - 2))
     }
 
     /// The residue of a rational, `None` when p divides its denominator.
-    pub fn from_rational(q: &BigRational) -> Option<Fp> {
-        Some(Fp::from_big(q.numer()).mul(&Fp::from_big(q.denom()).inv()?))
+    pub fn from_rational(q: &BigRational) -> Option<Self> {
+        Some(Self::from_big(q.numer()).mul(&Self::from_big(q.denom()).inv()?))
     }
 
     /// `self − o`.
-    pub fn sub(&self, o: &Fp) -> Fp {
-        Fp::add(self, &Fp(PRIME - o.0))
+    pub fn sub(&self, o: &Self) -> Self {
+        Scalar::add(self, &Residue(Self::P - o.0))
     }
 }
 
-impl Scalar for Fp {
+impl<const C: u64> Scalar for Residue<C> {
     fn zero() -> Self {
-        Fp(0)
+        Residue(0)
     }
     fn one() -> Self {
-        Fp(1)
+        Residue(1)
     }
     fn from_coef(c: &Coef) -> Self {
         match c {
-            Coef::Small(s) => Fp(s.rem_euclid(PRIME as i64) as u64),
-            Coef::Big(b) => Fp::from_big(b),
+            Coef::Small(s) => Residue(s.rem_euclid(Self::P as i64) as u64),
+            Coef::Big(b) => Self::from_big(b),
         }
     }
     #[inline]
     fn add(&self, o: &Self) -> Self {
         let s = self.0 + o.0; // < 2⁶², no overflow
-        Fp(if s >= PRIME { s - PRIME } else { s })
+        Residue(if s >= Self::P { s - Self::P } else { s })
     }
     #[inline]
     fn mul(&self, o: &Self) -> Self {
-        // 2⁶¹ ≡ 1: fold the high bits of the 122-bit product onto the low ones
+        // 2⁶¹ ≡ C: fold the high bits twice (122 bits → 72 → 62), then one subtraction
+        const MASK: u128 = (1 << 61) - 1;
         let t = u128::from(self.0) * u128::from(o.0);
-        let s = (t as u64 & PRIME) + (t >> 61) as u64;
-        Fp(if s >= PRIME { s - PRIME } else { s })
+        let x = (t >> 61) * u128::from(C) + (t & MASK);
+        let s = ((x >> 61) * u128::from(C) + (x & MASK)) as u64;
+        Residue(if s >= Self::P { s - Self::P } else { s })
     }
 }
 
 /// The value of `p` at `at` (one residue per variable of `p`'s ring), `None` when p divides
 /// the denominator of its content.
-pub fn eval_poly(p: &Poly, at: &[Fp]) -> Option<Fp> {
+pub fn eval_poly<const C: u64>(p: &Poly, at: &[Residue<C>]) -> Option<Residue<C>> {
     let (content, prim) = p.primitive();
     if p.is_zero() {
-        return Some(Fp(0));
+        return Some(Residue(0));
     }
-    Some(Fp::from_rational(content)?.mul(&prim.eval(at)))
+    Some(Residue::from_rational(content)?.mul(&prim.eval(at)))
 }
 
-/// Outcome of [`agree_mod_p`].
+/// Outcome of [`agree_mod_p`] and [`proportional_mod_p`].
 #[derive(Clone, Debug, PartialEq, serde::Serialize)]
 pub struct ModPAgreement {
-    /// Points tried.
+    /// Points tried (each drawn afresh for every prime).
     pub points: usize,
     /// Seed of the points.
     pub seed: u64,
-    /// Points where `l.num · r.den = k · r.num · l.den` held in 𝔽ₚ.
+    /// Points where `l.num · r.den = k · r.num · l.den` held modulo every prime.
     pub agreeing: usize,
-    /// The prime.
-    pub prime: u64,
+    /// The primes, as many as the height bound asks.
+    pub primes: Vec<u64>,
+    /// Bits of the height bound of the difference's integer coefficients.
+    pub height_bits: u64,
     /// Total degree bound d of the cross-multiplied difference.
     pub degree: u32,
-    /// d/p: the chance that one point agrees although the two differ (all points agreeing:
-    /// this to the power `points`).
+    /// Points that cannot fail: one for an unknown ratio, which the first point fixes.
+    pub free_points: usize,
+    /// d/p, p the smallest prime: the chance that one point agrees although the two differ
+    /// (all points agreeing: this to the power `points − free_points`); 1 where the primes
+    /// cannot cover the height bound.
     pub failure_bound: f64,
 }
 
-/// Schwartz–Zippel screen of `left = ratio · right` at `points` seeded uniform points of
-/// 𝔽ₚⁿ, p = 2⁶¹ − 1.
+impl ModPAgreement {
+    /// Whether every point agreed.
+    pub fn all_agree(&self) -> bool {
+        self.agreeing == self.points
+    }
+
+    /// The smallest prime, which the per-point bound divides by.
+    pub fn smallest_prime(&self) -> u64 {
+        self.primes.iter().copied().min().unwrap_or(PRIME)
+    }
+
+    /// log₁₀ of the chance that a false identity agrees at every point.
+    pub fn log10_false_pass(&self) -> f64 {
+        let n = self.points.saturating_sub(self.free_points) as f64;
+        (n * self.failure_bound.log10()).min(0.0)
+    }
+}
+
+/// Schwartz–Zippel screen of `left = ratio · right` at `points` seeded uniform points.
 ///
 /// # Example
 /// ```
@@ -122,8 +169,8 @@ pub struct ModPAgreement {
 /// let l = RatFn::parse("(a + b)^2 / (a - b)").unwrap();
 /// let r = RatFn::parse("(a^2 + 2a b + b^2) / (a - b)").unwrap();
 /// let s = agree_mod_p(&l, &r, &rat(1, 1), 8, 1);
-/// assert_eq!(s.agreeing, 8);
-/// assert!(s.failure_bound < 1e-17);
+/// assert_eq!((s.agreeing, s.primes.len()), (8, 1));
+/// assert!(s.log10_false_pass() < -17.0 * 8.0);
 /// assert_eq!(agree_mod_p(&l, &r, &rat(2, 1), 8, 1).agreeing, 0);
 /// ```
 pub fn agree_mod_p(
@@ -133,18 +180,29 @@ pub fn agree_mod_p(
     points: usize,
     seed: u64,
 ) -> ModPAgreement {
-    let k = Fp::from_rational(ratio);
-    let values = cross_values(left, right, points, seed);
-    let agreeing = values
-        .iter()
-        .filter(|v| matches!((v, k), (Some((l, r)), Some(k)) if *l == k.mul(r)))
-        .count();
-    agreement(left, right, points, seed, agreeing)
+    let sides = Sides::new(left, right);
+    // k = a/b: the integer difference is b·L̃ − a·R̃
+    let (a, b) = (ratio.numer(), ratio.denom());
+    let height = (b.abs() * &sides.norms.0 + a.abs() * &sides.norms.1).bits();
+    let primes = primes_for(height);
+    let mut g = crate::model::rng(seed);
+    let mut agree = vec![true; points];
+    for &j in &primes {
+        let p = prime(j);
+        let k = big_mod(b, p)
+            .and_then(|d| inv_mod(d, p))
+            .map(|d| mul_mod(big_mod(a, p).unwrap_or(0), d, p));
+        for (ok, v) in agree.iter_mut().zip(cross_in(j, &sides, points, &mut g)) {
+            *ok &= matches!((v, k), (Some((l, r)), Some(k)) if l == mul_mod(k, r, p));
+        }
+    }
+    finish(&sides, points, seed, agree, primes, height, 0)
 }
 
 /// The same screen for `left = k · right` with an unknown non-zero constant k (an equation
-/// `= 0` printed with another sign or scale): k is read off the first point where the right
-/// side does not vanish, every point (that one included) must then agree with it.
+/// `= 0` printed with another sign or scale): modulo each prime, k is read off the first point
+/// where the right side does not vanish, and every point (that one included) must agree
+/// with it: the test of the 2 × 2 minors `L(x₀)·R(x) − L(x)·R(x₀)`.
 ///
 /// # Example
 /// ```
@@ -156,66 +214,193 @@ pub fn agree_mod_p(
 /// assert_eq!(proportional_mod_p(&l, &m, 8, 1).agreeing, 1);
 /// ```
 pub fn proportional_mod_p(left: &RatFn, right: &RatFn, points: usize, seed: u64) -> ModPAgreement {
-    let values = cross_values(left, right, points, seed);
-    let k = values
-        .iter()
-        .flatten()
-        .find(|(_, r)| r.0 != 0)
-        .and_then(|(l, r)| Some(l.mul(&r.inv()?)))
-        .filter(|k| k.0 != 0);
-    let agreeing = values
-        .iter()
-        .filter(|v| matches!((v, k), (Some((l, r)), Some(k)) if *l == k.mul(r)))
-        .count();
-    agreement(left, right, points, seed, agreeing)
+    let sides = Sides::new(left, right);
+    // the minors' coefficients are at most 2·‖L̃‖₁·‖R̃‖₁
+    let height = (BigInt::from(2) * &sides.norms.0 * &sides.norms.1).bits();
+    let primes = primes_for(height);
+    let mut g = crate::model::rng(seed);
+    let mut agree = vec![true; points];
+    for &j in &primes {
+        let p = prime(j);
+        let values = cross_in(j, &sides, points, &mut g);
+        let k = values
+            .iter()
+            .flatten()
+            .find(|(_, r)| *r != 0)
+            .and_then(|&(l, r)| Some(mul_mod(l, inv_mod(r, p)?, p)))
+            .filter(|k| *k != 0);
+        for (ok, v) in agree.iter_mut().zip(&values) {
+            *ok &= matches!((v, k), (Some((l, r)), Some(k)) if *l == mul_mod(k, *r, p));
+        }
+    }
+    finish(&sides, points, seed, agree, primes, height, 1)
 }
 
-/// At each seeded point: (`left.num · right.den`, `right.num · left.den`) in 𝔽ₚ, `None`
-/// where p divides the denominator of a content.
-fn cross_values(left: &RatFn, right: &RatFn, points: usize, seed: u64) -> Vec<Option<(Fp, Fp)>> {
-    // the same portable stream as every seeded study (ChaCha8)
-    let mut g = <rand_chacha::ChaCha8Rng as rand::SeedableRng>::seed_from_u64(seed);
-    let mut vars = left.variables();
-    vars.extend(right.variables());
-    vars.sort();
-    vars.dedup();
-    (0..points)
-        .map(|_| {
-            let values: Vec<(String, Fp)> = vars
+/// The four polynomials of a comparison, `L = l.num · r.den` and `R = r.num · l.den`, with
+/// the variables they share and the height bounds of L̃ and R̃ (their contents cleared
+/// crosswise, so that both have integer coefficients).
+struct Sides<'a> {
+    /// l.num, r.den, r.num, l.den.
+    polys: [&'a Poly; 4],
+    /// The variables of both sides, sorted: a point gives one value to each.
+    vars: Vec<String>,
+    /// Per polynomial, the index in `vars` of each variable of its ring.
+    maps: [Vec<usize>; 4],
+    /// ‖L̃‖₁ and ‖R̃‖₁, bounds of their products' 1-norms.
+    norms: (BigInt, BigInt),
+    /// Total degree bound of L − k·R.
+    degree: u32,
+}
+
+impl<'a> Sides<'a> {
+    fn new(left: &'a RatFn, right: &'a RatFn) -> Sides<'a> {
+        let polys = [&left.num, &right.den, &right.num, &left.den];
+        let mut vars = left.variables();
+        vars.extend(right.variables());
+        vars.sort();
+        vars.dedup();
+        let maps = polys.map(|p| {
+            p.ring()
+                .names()
                 .iter()
-                .map(|v| (v.clone(), Fp(g.random_range(0..PRIME))))
-                .collect();
-            let at = |p: &Poly| -> Option<Fp> {
-                let point: Vec<Fp> = p
-                    .ring()
-                    .names()
-                    .iter()
-                    .map(|n| values.iter().find(|(v, _)| **v == **n).map(|(_, x)| *x))
-                    .collect::<Option<_>>()?;
-                eval_poly(p, &point)
+                .map(|n| vars.iter().position(|v| **v == **n).unwrap_or(0))
+                .collect()
+        });
+        // a content n/d enters as n on its side and d on the other
+        let l1 = |p: &Poly| p.primitive().1.l1_norm();
+        let num = |p: &Poly| p.primitive().0.numer().abs();
+        let den = |p: &Poly| p.primitive().0.denom().abs();
+        let [a, b, c, d] = polys;
+        let norms = (
+            l1(a) * l1(b) * num(a) * num(b) * den(c) * den(d),
+            l1(c) * l1(d) * num(c) * num(d) * den(a) * den(b),
+        );
+        let degree = (a.degree() + b.degree()).max(c.degree() + d.degree());
+        Sides {
+            polys,
+            vars,
+            maps,
+            norms,
+            degree,
+        }
+    }
+}
+
+/// The primes a height of `bits` asks for (indices into [`OFFSETS`]): each prime exceeds
+/// 2⁶⁰, so ⌈bits / 60⌉ of them have a product above the height; at most all of them.
+fn primes_for(bits: u64) -> Vec<usize> {
+    let m = usize::try_from(bits.div_ceil(60)).unwrap_or(usize::MAX);
+    (0..m.clamp(1, OFFSETS.len())).collect()
+}
+
+fn finish(
+    s: &Sides,
+    points: usize,
+    seed: u64,
+    agree: Vec<bool>,
+    primes: Vec<usize>,
+    height_bits: u64,
+    free_points: usize,
+) -> ModPAgreement {
+    let covered = height_bits.div_ceil(60) <= OFFSETS.len() as u64;
+    let smallest = prime(primes.last().copied().unwrap_or(0));
+    let failure_bound = match covered {
+        true => (f64::from(s.degree) / smallest as f64).min(1.0),
+        false => 1.0,
+    };
+    ModPAgreement {
+        points,
+        seed,
+        agreeing: agree.iter().filter(|a| **a).count(),
+        primes: primes.into_iter().map(prime).collect(),
+        height_bits,
+        degree: s.degree,
+        free_points,
+        failure_bound,
+    }
+}
+
+/// At each of `points` fresh points modulo prime j: (L, R), `None` where the prime divides
+/// the denominator of a content.
+fn cross_in(
+    j: usize,
+    s: &Sides,
+    points: usize,
+    g: &mut rand_chacha::ChaCha8Rng,
+) -> Vec<Option<(u64, u64)>> {
+    macro_rules! dispatch {
+        ($($i:literal),*) => {
+            match j {
+                $($i => cross::<{ OFFSETS[$i] }>(s, points, g),)*
+                _ => unreachable!("prime index beyond OFFSETS"),
+            }
+        };
+    }
+    dispatch!(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15)
+}
+
+fn cross<const C: u64>(
+    s: &Sides,
+    points: usize,
+    g: &mut rand_chacha::ChaCha8Rng,
+) -> Vec<Option<(u64, u64)>> {
+    let draws: Vec<Vec<Residue<C>>> = (0..points)
+        .map(|_| {
+            s.vars
+                .iter()
+                .map(|_| Residue(g.random_range(0..Residue::<C>::P)))
+                .collect()
+        })
+        .collect();
+    let values: Vec<Vec<Option<Residue<C>>>> = s
+        .polys
+        .iter()
+        .zip(&s.maps)
+        .map(|(p, map)| {
+            let (content, prim) = p.primitive();
+            let Some(c) = Residue::<C>::from_rational(content).filter(|_| !p.is_zero()) else {
+                return vec![(p.is_zero()).then_some(Residue(0)); points];
             };
-            let l = at(&left.num)?.mul(&at(&right.den)?);
-            let r = at(&right.num)?.mul(&at(&left.den)?);
-            Some((l, r))
+            let local: Vec<Vec<Residue<C>>> = draws
+                .iter()
+                .map(|d| map.iter().map(|&i| d[i]).collect())
+                .collect();
+            let images = prim.coef_images();
+            prim.eval_points(&images, &local)
+                .into_iter()
+                .map(|v| Some(c.mul(&v)))
+                .collect()
+        })
+        .collect();
+    (0..points)
+        .map(|i| {
+            let [a, b, c, d] = [0, 1, 2, 3].map(|k| values[k][i]);
+            Some((a?.mul(&b?).0, c?.mul(&d?).0))
         })
         .collect()
 }
 
-fn agreement(
-    left: &RatFn,
-    right: &RatFn,
-    points: usize,
-    seed: u64,
-    agreeing: usize,
-) -> ModPAgreement {
-    let degree =
-        (left.num.degree() + right.den.degree()).max(right.num.degree() + left.den.degree());
-    ModPAgreement {
-        points,
-        seed,
-        agreeing,
-        prime: PRIME,
-        degree,
-        failure_bound: f64::from(degree) / PRIME as f64,
+fn mul_mod(a: u64, b: u64, p: u64) -> u64 {
+    (u128::from(a) * u128::from(b) % u128::from(p)) as u64
+}
+
+/// The inverse modulo p (Fermat), `None` for zero.
+fn inv_mod(a: u64, p: u64) -> Option<u64> {
+    if a.is_multiple_of(p) {
+        return None;
     }
+    let (mut r, mut b, mut e) = (1, a % p, p - 2);
+    while e > 0 {
+        if e & 1 == 1 {
+            r = mul_mod(r, b, p);
+        }
+        b = mul_mod(b, b, p);
+        e >>= 1;
+    }
+    Some(r)
+}
+
+/// `v mod p`, `None` when it is zero.
+fn big_mod(v: &BigInt, p: u64) -> Option<u64> {
+    v.mod_floor(&BigInt::from(p)).to_u64().filter(|r| *r != 0)
 }

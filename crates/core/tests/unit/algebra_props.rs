@@ -119,7 +119,7 @@ mod oracles {
     use num_bigint::BigInt;
     use num_rational::BigRational;
     use num_traits::{One, Zero};
-    use orthocheck_core::algebra::modp::{eval_poly, Fp, PRIME};
+    use orthocheck_core::algebra::modp::{eval_poly, Fp, Residue, PRIME};
     use orthocheck_core::algebra::mpoly::Scalar;
     use orthocheck_core::algebra::{Poly, RatFn};
     use proptest::prelude::*;
@@ -201,7 +201,7 @@ mod oracles {
                 p: VARS
                     .iter()
                     .zip(p)
-                    .map(|(v, r)| (v.to_string(), Fp(r)))
+                    .map(|(v, r)| (v.to_string(), Residue(r)))
                     .collect(),
             });
         prop::collection::vec(one, 2)
@@ -222,7 +222,7 @@ mod oracles {
     /// powers of 2⁶³ + 1, never a multiple of p).
     fn modp(p: &Poly, at: &BTreeMap<String, Fp>) -> Fp {
         let xs: Vec<Fp> = p.variables().iter().map(|v| at[v]).collect();
-        eval_poly(p, &xs).unwrap_or(Fp(0))
+        eval_poly(p, &xs).unwrap_or(Residue(0))
     }
 
     fn pow_q(x: &BigRational, e: u32) -> BigRational {

@@ -108,7 +108,12 @@ pub(super) fn expanded_result(
     }
     if let Some(s) = x.printed.as_ref().or(x.corrected.as_ref()) {
         r = r
-            .detail("prime p", s.screen.prime)
+            .detail("primes", s.screen.primes.len())
+            .detail("smallest prime p", s.screen.smallest_prime())
+            .detail(
+                "height bound of the difference (bits)",
+                s.screen.height_bits as usize,
+            )
             .detail("seed of the points", s.screen.seed)
             .detail(
                 "degree of the cross-multiplied difference",
@@ -127,7 +132,7 @@ pub(super) fn expanded_result(
         );
     }
     r = r
-        .method("every macro of the formula and every symbol of its derivation expanded into the projected squares aᵢ², bᵢ², cᵢ² and the true squares a², b², c²; screened at seeded random points modulo p = 2⁶¹ − 1 (Schwartz–Zippel; a disagreement proves the forms differ), then compared exactly over ℚ by cross-multiplication, which decides; a mutant of the accepted form through the same checks")
+        .method("every macro of the formula and every symbol of its derivation expanded into the projected squares aᵢ², bᵢ², cᵢ² and the true squares a², b², c²; screened at seeded random points modulo 61-bit primes, as many as the height of the difference asks (Schwartz–Zippel; a disagreement proves the forms differ), then compared exactly over ℚ by cross-multiplication, which decides; a mutant of the accepted form through the same checks")
         .tolerance(Tolerance::exact("exact comparison over ℚ of the expanded forms"))
         .detail("where", f.place.to_string())
         .detail("variables after the expansion", x.variables.len())
@@ -158,8 +163,10 @@ mod tests {
                 points: 4,
                 seed: 1,
                 agreeing,
-                prime: 7,
+                primes: vec![7],
+                height_bits: 3,
                 degree: 2,
+                free_points: 0,
                 failure_bound: 2.0 / 7.0,
             },
             exact_run: agreeing == 4,

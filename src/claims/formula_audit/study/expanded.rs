@@ -1,7 +1,7 @@
 //! The audit expanded to the end: every macro of a formula (faca1 …, d_a1 …, A_c …, f_cb …)
 //! and every free symbol of its derivation replaced by its expansion in the projected
 //! squares a_i², b_i², c_i² and the true squares a², b², c². Each form is screened modulo
-//! the prime 2⁶¹ − 1 first (a disagreement there already proves the two differ); only a form
+//! 61-bit primes first (a disagreement there already proves the two differ); only a form
 //! that passes the screen is compared exactly, and the exact comparison decides.
 
 use std::collections::BTreeMap;

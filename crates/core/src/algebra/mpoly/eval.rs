@@ -95,6 +95,43 @@ impl MPoly {
         sum
     }
 
+    /// The values at several points, the coefficients' images given (`coefs[t]` the image
+    /// of term t's coefficient, so that each is reduced once, not once per point): each term's
+    /// exponents are decoded once for all points.
+    pub fn eval_points<T: Scalar>(&self, coefs: &[T], points: &[Vec<T>]) -> Vec<T> {
+        let tables: Vec<Vec<Vec<T>>> = points.iter().map(|at| power_table(self, at)).collect();
+        let mut sums = vec![T::zero(); points.len()];
+        let mut factors: Vec<(usize, usize)> = Vec::with_capacity(self.nvars());
+        for (t, c) in coefs.iter().enumerate().take(self.len()) {
+            let m = self.packed(t);
+            factors.clear();
+            factors.extend((0..self.nvars()).filter_map(|i| {
+                let e = self.pack.exponent(m, i) as usize;
+                (e > 0).then_some((i, e))
+            }));
+            for (sum, pw) in sums.iter_mut().zip(&tables) {
+                let v = factors
+                    .iter()
+                    .fold(c.clone(), |v, &(i, e)| v.mul(&pw[i][e]));
+                *sum = sum.add(&v);
+            }
+        }
+        sums
+    }
+
+    /// The image of every coefficient, in term order (for [`MPoly::eval_points`]).
+    pub fn coef_images<T: Scalar>(&self) -> Vec<T> {
+        self.coefs.iter().map(T::from_coef).collect()
+    }
+
+    /// The 1-norm, the sum of the coefficients' magnitudes.
+    pub fn l1_norm(&self) -> BigInt {
+        self.coefs
+            .iter()
+            .map(|c| num_traits::Signed::abs(&c.to_big()))
+            .sum()
+    }
+
     /// The value at the rational point `nums[i] / dens[i]` as `(numerator, denominator)`,
     /// by integer arithmetic only: with dᵢ raised to the degree kᵢ of the polynomial in
     /// variable i, `Π dᵢ^kᵢ · p(n/d) = Σ c · Π nᵢ^eᵢ · dᵢ^(kᵢ−eᵢ)`, so no gcd is taken

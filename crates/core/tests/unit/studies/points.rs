@@ -1,5 +1,6 @@
 //! Tests of `orthocheck_core::studies::points`.
 
+use orthocheck_core::algebra::modp::prime;
 use orthocheck_core::algebra::rat;
 use orthocheck_core::algebra::RatFn;
 use orthocheck_core::studies::points::*;
@@ -10,6 +11,6 @@ fn a_false_identity_fails_and_the_bound_is_small() {
     let r = RatFn::parse("x^2 - y").unwrap();
     let c = agree_at_points(&l, &r, &rat(1, 1), 8, 1);
     assert_eq!(c.agreeing, 0);
-    assert!(c.failure_bound() < 1e-40);
-    assert!((c.log10_failure_bound() - 8.0 * (2.0 / 2_000_001.0_f64).log10()).abs() < 1e-9);
+    assert_eq!(c.primes, vec![prime(0)]);
+    assert!((c.log10_false_pass() - 8.0 * (2.0 / prime(0) as f64).log10()).abs() < 1e-9);
 }
