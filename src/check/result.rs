@@ -534,6 +534,12 @@ impl Power {
         }
     }
 
+    /// A monomial as a reader writes it (`a²·aᵢ²`), for a mutant's changed term.
+    pub fn term_text(term: &crate::algebra::Monomial) -> String {
+        let ascii = crate::algebra::Poly::from_monomial(term.clone()).to_string();
+        crate::report::math::math_text(&ascii, &Default::default(), false)
+    }
+
     /// A mutant: `rejected` says whether the same check rejected it.
     pub fn mutant(rejected: bool, detail: &str) -> Power {
         Power {

@@ -5,7 +5,7 @@
 use num_rational::BigRational;
 use num_traits::One;
 
-use crate::algebra::{Poly, RatFn};
+use crate::algebra::RatFn;
 use crate::check::Role;
 use crate::check::{
     points_details, points_tolerance, ClaimBuilder, ClaimResult, Power, ResultBuilder, Tolerance,
@@ -63,7 +63,7 @@ fn formula_power(f: &FormulaFinding) -> Power {
         m.rejected(),
         &format!(
             "{which} with the sign of its term {} flipped: the exact comparison rejects it and the random points disagree",
-            Poly::from_monomial(m.term.clone())
+            Power::term_text(&m.term)
         ),
     )
 }

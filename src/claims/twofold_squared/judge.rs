@@ -129,11 +129,7 @@ pub(super) fn audit_item(b: &ResultBuilder, case: &TwofoldCase) -> Result<(Claim
 /// The claim result of eq. p3f3sqr.
 fn polynomial(b: &ResultBuilder, case: &TwofoldCase, s: &TwofoldStudy) -> ClaimResult {
     let (rejected, term, mutant_agree) = match &s.mutant {
-        Some(m) => (
-            m.rejected(),
-            crate::algebra::Poly::from_monomial(m.term.clone()).to_string(),
-            m.points.agreeing,
-        ),
+        Some(m) => (m.rejected(), Power::term_text(&m.term), m.points.agreeing),
         None => (false, String::new(), 0),
     };
     let mut r = b

@@ -2,7 +2,6 @@
 //! expanded into the projected and the true squares, judged like the macro-level item.
 
 use super::{ClaimBuilder, ClaimResult, Power, ResultBuilder, Tolerance, Value, Verdict};
-use crate::algebra::Poly;
 use crate::check::Role;
 use crate::claims::audit::Shown;
 use crate::claims::formula_audit::study::{ExpandedFinding, Form, Screened};
@@ -35,7 +34,7 @@ fn expanded_power(x: &ExpandedFinding) -> Power {
         !m.holds(),
         &format!(
             "{which} with the sign of its term {} flipped: the screen modulo p (and, if it passed, the exact comparison) rejects it",
-            Poly::from_monomial(term.clone())
+            Power::term_text(term)
         ),
     )
 }
