@@ -43,12 +43,24 @@ pub fn parse_case<C: Schema>(text: &str, path: &Path) -> Result<Case<C>> {
 /// budget is [`crate::limits::CASE_YAML_VALUES`] values and
 /// [`crate::limits::CASE_YAML_ALIASES`] aliases: an alias bomb is refused within milliseconds.
 pub fn parse_yaml<T: serde::de::DeserializeOwned>(text: &str, path: &Path) -> Result<T> {
-    parse_yaml_budget(
-        text,
-        path,
+    parse_yaml_budget(text, path, &case_budget(), true)
+}
+
+/// The budget of a case file: [`crate::limits::CASE_YAML_VALUES`] values and
+/// [`crate::limits::CASE_YAML_ALIASES`] aliases.
+fn case_budget() -> serde_saphyr::Budget {
+    budget_of(
         crate::limits::CASE_YAML_VALUES,
         crate::limits::CASE_YAML_ALIASES,
     )
+}
+
+fn budget_of(max_nodes: usize, max_aliases: usize) -> serde_saphyr::Budget {
+    let mut budget = serde_saphyr::Budget::default();
+    budget.max_nodes = max_nodes;
+    budget.max_aliases = max_aliases;
+    budget.max_events = max_nodes.saturating_mul(2).max(budget.max_events);
+    budget
 }
 
 /// [`parse_yaml`] allowing up to `max_nodes` YAML values (sequences, maps and scalars), for
@@ -59,24 +71,24 @@ pub fn parse_yaml_limited<T: serde::de::DeserializeOwned>(
     max_nodes: usize,
 ) -> Result<T> {
     let aliases = serde_saphyr::Budget::default().max_aliases;
-    parse_yaml_budget(text, path, max_nodes, aliases)
+    parse_yaml_budget(text, path, &budget_of(max_nodes, aliases), true)
 }
 
-/// [`parse_yaml`] with the parser's budget of values and aliases.
+/// [`parse_yaml`] with the parser's budget of values and aliases; `tag`: lenient numbers
+/// tagged first (not needed by a reading of text only, such as the claims' names).
 fn parse_yaml_budget<T: serde::de::DeserializeOwned>(
     text: &str,
     path: &Path,
-    max_nodes: usize,
-    max_aliases: usize,
+    budget: &serde_saphyr::Budget,
+    tag: bool,
 ) -> Result<T> {
-    let mut budget = serde_saphyr::Budget::default();
-    budget.max_nodes = max_nodes;
-    budget.max_aliases = max_aliases;
-    budget.max_events = max_nodes.saturating_mul(2).max(budget.max_events);
     let limits = budget.clone();
-    let options = serde_saphyr::options! { with_snippet: false, budget: Some(budget) };
+    let options = serde_saphyr::options! { with_snippet: false, budget: Some(budget.clone()) };
     let mut field: Option<String> = None;
-    let tagged = super::plain_numbers::Tagged::new(text);
+    let tagged = match tag {
+        true => super::plain_numbers::Tagged::new(text),
+        false => super::plain_numbers::Tagged::untouched(text),
+    };
     let parsed =
         serde_saphyr::with_deserializer_from_str_with_options(&tagged.text, options, |de| {
             serde_path_to_error::deserialize(de).map_err(|e| {
@@ -298,7 +310,7 @@ pub fn load_cases<C: Schema>(
     // the `claim:` names of each file, read once for both checks
     let named = texts
         .iter()
-        .map(|(p, text)| Ok(parse_yaml::<Claims>(text, p)?.named))
+        .map(|(p, text)| Ok(parse_yaml_budget::<Claims>(text, p, &case_budget(), false)?.named))
         .collect::<Result<Vec<_>>>()?;
     known_restated_claims(&cases, &texts, &named)?;
     inventory_claims(origin, &texts, &named)?;

@@ -61,10 +61,15 @@ impl Scalar for BigInt {
 
 /// `x^0 … x^d` for each variable.
 fn power_table<T: Scalar>(p: &MPoly, at: &[T]) -> Vec<Vec<T>> {
+    let degrees: Vec<usize> = (0..at.len()).map(|i| p.degree_in(i) as usize).collect();
+    powers(&degrees, at)
+}
+
+/// `x^0 … x^dᵢ` for each variable i, the degrees given.
+fn powers<T: Scalar>(degrees: &[usize], at: &[T]) -> Vec<Vec<T>> {
     at.iter()
-        .enumerate()
-        .map(|(i, x)| {
-            let d = p.degree_in(i) as usize;
+        .zip(degrees)
+        .map(|(x, &d)| {
             let mut pw = Vec::with_capacity(d + 1);
             pw.push(T::one());
             for k in 0..d {
@@ -99,7 +104,11 @@ impl MPoly {
     /// of term t's coefficient, so that each is reduced once, not once per point): each term's
     /// exponents are decoded once for all points.
     pub fn eval_points<T: Scalar>(&self, coefs: &[T], points: &[Vec<T>]) -> Vec<T> {
-        let tables: Vec<Vec<Vec<T>>> = points.iter().map(|at| power_table(self, at)).collect();
+        // each degree found once (a pass over the terms), not once per point
+        let degrees: Vec<usize> = (0..self.nvars())
+            .map(|i| self.degree_in(i) as usize)
+            .collect();
+        let tables: Vec<Vec<Vec<T>>> = points.iter().map(|at| powers(&degrees, at)).collect();
         let mut sums = vec![T::zero(); points.len()];
         let mut factors: Vec<(usize, usize)> = Vec::with_capacity(self.nvars());
         for (t, c) in coefs.iter().enumerate().take(self.len()) {
