@@ -153,7 +153,7 @@ fn discriminant_result(
         .computed("two real roots at every sampled exact view rounding to the figure", Value::flag(holds))
         .computed("smallest discriminant over the sampled exact views", r.discriminant_spread.0)
         .computed("discriminant over the sampled exact views: 5 / 50 / 95 %", Value::reals(&r.discriminant_spread.1))
-        .tolerance(Tolerance::bound(0.0, ToleranceSource::Propagated, "Δ > 0 at every exact view of the printed body whose coordinates round to the figure"))
+        .tolerance(Tolerance::bound(0.0, ToleranceSource::Propagated, &format!("Δ > 0 at each of {} seeded exact views of the printed body whose coordinates round to the figure: a sample of the views, not a bound over all of them", r.samples)))
         .power(Power::mutant(n > 0, &format!("the same count over the unrestricted rounding box (projections no rigid body need produce) finds data with no real root: {n} of {of} samples")))
         .method("β² − 4αγ of the paper's quadratic α c⁴ + β c² + γ (F₃ with a², b² from Cramer's rule); its change and the roots' over the figure's rounding to first order (Σₖ |∂/∂cₖ|·hₖ); its distribution over seeded exact views of the printed body");
     if let Some(d) = &r.discriminant {
