@@ -204,8 +204,8 @@ def by_points(item, points=64, seed=1):
         at = {n: Mod(g.randrange(PRIME)) for n in item[4]}
         try:
             l, k, r = evaluate(compiled, at, mod_const)
-        except ValueError:  # a denominator vanished at this point
-            continue
+        except ValueError:  # a denominator vanished at this point: no verdict, counted as a failure
+            return False
         if l.v != (k * r).v:
             return False
     return True

@@ -281,16 +281,32 @@ pub fn load_all<C: Schema>(dir: &Path) -> Result<Vec<Case<C>>> {
     load_cases(&CaseOrigin::Folder(dir.to_path_buf()), None)
 }
 
+/// The `claim:` names of one case file.
+type Names = std::collections::BTreeSet<String>;
+
 /// Load every case: each file valid on its own, no id twice, and every claim a restatement
 /// restates checked by some case. With `latex`, the errata's quotes are verified against it.
 pub fn load_cases<C: Schema>(
     origin: &CaseOrigin,
     latex: Option<&LatexSource>,
 ) -> Result<Vec<Case<C>>> {
+    use rayon::prelude::*;
+    let read = origin.case_texts()?;
+    // the files parse independently, on every core; their errors are then taken in file
+    // order, so that the first bad file is the one named, whatever finished first
+    let parsed: Vec<(Result<Case<C>>, Result<Names>)> = read
+        .par_iter()
+        .map(|(p, text)| {
+            let named = parse_yaml_budget::<Claims>(text, p, &case_budget(), false);
+            (case_from_text(text, p, latex), named.map(|c| c.named))
+        })
+        .collect();
     let mut cases = Vec::new();
     let mut texts = Vec::new();
-    for (p, text) in origin.case_texts()? {
-        let case: Case<C> = case_from_text(&text, &p, latex)?;
+    let mut named = Vec::new();
+    for ((p, text), (case, claims)) in read.into_iter().zip(parsed) {
+        let case: Case<C> = case?;
+        named.push(claims?);
         if let Some(first) = cases.iter().position(|c: &Case<C>| c.id == case.id) {
             let other = cases[first].file.as_deref().unwrap_or(Path::new("?"));
             return Err(invalid(
@@ -307,11 +323,6 @@ pub fn load_cases<C: Schema>(
         cases.push(case);
         texts.push((p, text));
     }
-    // the `claim:` names of each file, read once for both checks
-    let named = texts
-        .iter()
-        .map(|(p, text)| Ok(parse_yaml_budget::<Claims>(text, p, &case_budget(), false)?.named))
-        .collect::<Result<Vec<_>>>()?;
     known_restated_claims(&cases, &texts, &named)?;
     inventory_claims(origin, &texts, &named)?;
     Ok(cases)

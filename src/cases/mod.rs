@@ -57,7 +57,7 @@ pub struct Case<C> {
 
 /// What the loader asks of a case's check: the checks serde cannot express, and the two
 /// things only the whole folder or the source can tell.
-pub trait Schema: serde::de::DeserializeOwned {
+pub trait Schema: serde::de::DeserializeOwned + Send {
     /// Counts, limits, formulas that parse; `v` names fields from the case's top level.
     fn validate(&self, v: &Validator) -> crate::error::Result<()>;
 

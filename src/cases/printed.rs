@@ -44,16 +44,16 @@ impl Printed {
         if exponent.unsigned_abs() > MAX_EXPONENT {
             return None;
         }
-        parse_decimal(mantissa)?;
-        let mut value = parse_decimal(mantissa)?;
-        let ten = BigRational::from_integer(BigInt::from(10));
-        for _ in 0..exponent.unsigned_abs() {
-            value = if exponent > 0 {
-                &value * &ten
-            } else {
-                &value / &ten
-            };
-        }
+        let mantissa_value = parse_decimal(mantissa)?;
+        let scale = BigRational::from_integer(num_traits::pow(
+            BigInt::from(10),
+            exponent.unsigned_abs() as usize,
+        ));
+        let value = if exponent >= 0 {
+            mantissa_value * scale
+        } else {
+            mantissa_value / scale
+        };
         let decimals = mantissa.split_once('.').map_or(0, |(_, f)| f.len() as i32) - exponent;
         // an exact value f64 cannot hold (overflow, or a non-zero number underflowing to 0)
         let f = value.to_f64().unwrap_or(f64::NAN);

@@ -57,14 +57,22 @@ impl RatFn {
         super::parse::parse_rational(text, defs)
     }
 
-    /// Whether the two are the same rational function: n₁d₂ = n₂d₁ exactly.
+    /// Whether the two are the same rational function: n₁d₂ = n₂d₁ exactly. Where the
+    /// denominators are proportional, d₂ = c·d₁, that is c·n₁ = n₂: no product is formed.
     pub fn equals(&self, other: &RatFn) -> bool {
-        &self.num * &other.den == &other.num * &self.den
+        match other.den.ratio_to(&self.den) {
+            Some(c) => self.num.scale(&c) == other.num,
+            None => &self.num * &other.den == &other.num * &self.den,
+        }
     }
 
-    /// If `self = k · other` for a non-zero rational `k`, return `k`.
+    /// If `self = k · other` for a non-zero rational `k`, return `k`; with d₂ = c·d₁,
+    /// k = c · (n₁ / n₂).
     pub fn ratio_to(&self, other: &RatFn) -> Option<BigRational> {
-        (&self.num * &other.den).ratio_to(&(&other.num * &self.den))
+        match other.den.ratio_to(&self.den) {
+            Some(c) => self.num.ratio_to(&other.num).map(|k| k * c),
+            None => (&self.num * &other.den).ratio_to(&(&other.num * &self.den)),
+        }
     }
 
     /// Whether this is zero.
