@@ -43,7 +43,7 @@ pub fn parse_case<C: Schema>(text: &str, path: &Path) -> Result<Case<C>> {
 /// budget is [`crate::limits::CASE_YAML_VALUES`] values and
 /// [`crate::limits::CASE_YAML_ALIASES`] aliases: an alias bomb is refused within milliseconds.
 pub fn parse_yaml<T: serde::de::DeserializeOwned>(text: &str, path: &Path) -> Result<T> {
-    parse_yaml_budget(text, path, &case_budget(), true)
+    parse_yaml_budget(text, path, &case_budget())
 }
 
 /// The budget of a case file: [`crate::limits::CASE_YAML_VALUES`] values and
@@ -71,24 +71,19 @@ pub fn parse_yaml_limited<T: serde::de::DeserializeOwned>(
     max_nodes: usize,
 ) -> Result<T> {
     let aliases = serde_saphyr::Budget::default().max_aliases;
-    parse_yaml_budget(text, path, &budget_of(max_nodes, aliases), true)
+    parse_yaml_budget(text, path, &budget_of(max_nodes, aliases))
 }
 
-/// [`parse_yaml`] with the parser's budget of values and aliases; `tag`: lenient numbers
-/// tagged first (not needed by a reading of text only, such as the claims' names).
+/// [`parse_yaml`] with the parser's budget of values and aliases.
 fn parse_yaml_budget<T: serde::de::DeserializeOwned>(
     text: &str,
     path: &Path,
     budget: &serde_saphyr::Budget,
-    tag: bool,
 ) -> Result<T> {
     let limits = budget.clone();
     let options = serde_saphyr::options! { with_snippet: false, budget: Some(budget.clone()) };
     let mut field: Option<String> = None;
-    let tagged = match tag {
-        true => super::plain_numbers::Tagged::new(text),
-        false => super::plain_numbers::Tagged::untouched(text),
-    };
+    let tagged = super::plain_numbers::Tagged::new(text);
     let parsed =
         serde_saphyr::with_deserializer_from_str_with_options(&tagged.text, options, |de| {
             serde_path_to_error::deserialize(de).map_err(|e| {
@@ -297,7 +292,7 @@ pub fn load_cases<C: Schema>(
     let parsed: Vec<(Result<Case<C>>, Result<Names>)> = read
         .par_iter()
         .map(|(p, text)| {
-            let named = parse_yaml_budget::<Claims>(text, p, &case_budget(), false);
+            let named = parse_yaml_budget::<Claims>(text, p, &case_budget());
             (case_from_text(text, p, latex), named.map(|c| c.named))
         })
         .collect();
@@ -333,7 +328,7 @@ pub fn load_cases<C: Schema>(
 fn inventory_claims(
     origin: &CaseOrigin,
     texts: &[(PathBuf, String)],
-    named: &[std::collections::BTreeSet<String>],
+    named: &[Names],
 ) -> Result<()> {
     let mut ids = std::collections::BTreeSet::new();
     for name in super::INVENTORY_FILES {
@@ -391,7 +386,7 @@ fn whole_file(path: &Path, message: String) -> Error {
 fn known_restated_claims<C: Schema>(
     cases: &[Case<C>],
     texts: &[(PathBuf, String)],
-    named: &[std::collections::BTreeSet<String>],
+    named: &[Names],
 ) -> Result<()> {
     let known: std::collections::BTreeSet<&str> =
         named.iter().flatten().map(String::as_str).collect();

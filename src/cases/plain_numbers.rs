@@ -57,11 +57,6 @@ impl Tagged {
         Tagged::rewrite(text, &inserts)
     }
 
-    /// The text as it is, nothing marked.
-    pub fn untouched(text: &str) -> Tagged {
-        Tagged::rewrite(text, &[])
-    }
-
     fn rewrite(text: &str, inserts: &[(usize, usize, bool)]) -> Tagged {
         let mut out = String::with_capacity(text.len() + TAG.len() * inserts.len());
         let mut marked = Vec::with_capacity(inserts.len());

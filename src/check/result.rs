@@ -536,8 +536,12 @@ impl Power {
 
     /// A monomial as a reader writes it (`a²·aᵢ²`), for a mutant's changed term.
     pub fn term_text(term: &crate::algebra::Monomial) -> String {
-        let ascii = crate::algebra::Poly::from_monomial(term.clone()).to_string();
-        crate::report::math::math_text(&ascii, &Default::default(), false)
+        let factors: Vec<(&str, u32)> = term
+            .factors()
+            .iter()
+            .map(|(v, e)| (v.as_str(), *e))
+            .collect();
+        crate::numfmt::monomial(&factors)
     }
 
     /// A mutant: `rejected` says whether the same check rejected it.

@@ -14,6 +14,8 @@
 
 use std::collections::BTreeMap;
 
+use crate::numfmt::{subscript, superscript};
+
 /// Expansion depth limit: the paper's macros nest three deep; a definition that calls itself
 /// stops here instead of looping.
 const MAX_DEPTH: usize = 12;
@@ -173,53 +175,6 @@ enum Piece {
     Text(String),
     Sub(String),
     Sup(String),
-}
-
-/// The Unicode superscript of `c`, if it has one.
-pub(crate) fn superscript(c: char) -> Option<char> {
-    let digits = "⁰¹²³⁴⁵⁶⁷⁸⁹";
-    match c {
-        '0'..='9' => digits.chars().nth(c as usize - '0' as usize),
-        '+' => Some('⁺'),
-        '-' | '−' => Some('⁻'),
-        '=' => Some('⁼'),
-        '(' => Some('⁽'),
-        ')' => Some('⁾'),
-        'n' => Some('ⁿ'),
-        'i' => Some('ⁱ'),
-        _ => None,
-    }
-}
-
-fn subscript(c: char) -> Option<char> {
-    let digits = "₀₁₂₃₄₅₆₇₈₉";
-    match c {
-        '0'..='9' => digits.chars().nth(c as usize - '0' as usize),
-        '+' => Some('₊'),
-        '-' | '−' => Some('₋'),
-        '=' => Some('₌'),
-        '(' => Some('₍'),
-        ')' => Some('₎'),
-        ',' => Some(','),
-        'a' => Some('ₐ'),
-        'e' => Some('ₑ'),
-        'o' => Some('ₒ'),
-        'x' => Some('ₓ'),
-        'h' => Some('ₕ'),
-        'k' => Some('ₖ'),
-        'l' => Some('ₗ'),
-        'm' => Some('ₘ'),
-        'n' => Some('ₙ'),
-        'p' => Some('ₚ'),
-        's' => Some('ₛ'),
-        't' => Some('ₜ'),
-        'i' => Some('ᵢ'),
-        'j' => Some('ⱼ'),
-        'r' => Some('ᵣ'),
-        'u' => Some('ᵤ'),
-        'v' => Some('ᵥ'),
-        _ => None,
-    }
 }
 
 /// A LaTeX command without arguments (or one whose argument is shown as is) as text.

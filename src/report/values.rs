@@ -77,7 +77,7 @@ pub fn tolerance_text(t: &Tolerance) -> String {
 fn false_pass_exponent(log10: f64) -> String {
     let e = sig(log10.ceil()).replace('-', "−");
     e.chars()
-        .map(super::math::superscript)
+        .map(crate::numfmt::superscript)
         .collect::<Option<String>>()
         .unwrap_or(format!("^{e}"))
 }

@@ -147,6 +147,80 @@ pub fn below(x: f64) -> String {
     format!("< 1e{e}")
 }
 
+/// The Unicode superscript of `c`, if it has one.
+pub fn superscript(c: char) -> Option<char> {
+    let digits = "⁰¹²³⁴⁵⁶⁷⁸⁹";
+    match c {
+        '0'..='9' => digits.chars().nth(c as usize - '0' as usize),
+        '+' => Some('⁺'),
+        '-' | '−' => Some('⁻'),
+        '=' => Some('⁼'),
+        '(' => Some('⁽'),
+        ')' => Some('⁾'),
+        'n' => Some('ⁿ'),
+        'i' => Some('ⁱ'),
+        _ => None,
+    }
+}
+
+/// The Unicode subscript of `c`, if it has one.
+pub fn subscript(c: char) -> Option<char> {
+    let digits = "₀₁₂₃₄₅₆₇₈₉";
+    match c {
+        '0'..='9' => digits.chars().nth(c as usize - '0' as usize),
+        '+' => Some('₊'),
+        '-' | '−' => Some('₋'),
+        '=' => Some('₌'),
+        '(' => Some('₍'),
+        ')' => Some('₎'),
+        ',' => Some(','),
+        'a' => Some('ₐ'),
+        'e' => Some('ₑ'),
+        'o' => Some('ₒ'),
+        'x' => Some('ₓ'),
+        'h' => Some('ₕ'),
+        'k' => Some('ₖ'),
+        'l' => Some('ₗ'),
+        'm' => Some('ₘ'),
+        'n' => Some('ₙ'),
+        'p' => Some('ₚ'),
+        's' => Some('ₛ'),
+        't' => Some('ₜ'),
+        'i' => Some('ᵢ'),
+        'j' => Some('ⱼ'),
+        'r' => Some('ᵣ'),
+        'u' => Some('ᵤ'),
+        'v' => Some('ᵥ'),
+        _ => None,
+    }
+}
+
+/// A monomial as a reader writes it, `a²·aᵢ²` for `[("a", 2), ("a_i", 2)]`: a name's `_x`
+/// as a subscript and its exponent as a superscript where Unicode has the glyphs, as written
+/// otherwise.
+pub fn monomial(factors: &[(&str, u32)]) -> String {
+    if factors.is_empty() {
+        return "1".into();
+    }
+    let script =
+        |t: &str, map: fn(char) -> Option<char>| t.chars().map(map).collect::<Option<String>>();
+    let factor = |(name, e): &(&str, u32)| {
+        let mut out = match name.split_once('_') {
+            Some((base, sub)) => match script(sub, subscript) {
+                Some(s) => format!("{base}{s}"),
+                None => name.to_string(),
+            },
+            None => name.to_string(),
+        };
+        if *e > 1 {
+            let e = e.to_string();
+            out.push_str(&script(&e, superscript).unwrap_or(format!("^{e}")));
+        }
+        out
+    };
+    factors.iter().map(factor).collect::<Vec<_>>().join("·")
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -336,7 +336,7 @@ mod tests {
             height_bits: 3,
             degree: 2,
             free_points: 0,
-            failure_bound: 2.0 / 7.0,
+            per_point_bound: 2.0 / 7.0,
         }
     }
 

@@ -42,9 +42,22 @@ pub struct Residue<const C: u64>(pub u64);
 /// An element of 𝔽ₚ, p = [`PRIME`].
 pub type Fp = Residue<1>;
 
+/// 2⁶¹ − c for an offset of [`OFFSETS`]; any other c stops the build (the reduction is proven
+/// for these, and the inverse needs a prime).
+const fn modulus(c: u64) -> u64 {
+    let mut i = 0;
+    while i < OFFSETS.len() {
+        if OFFSETS[i] == c {
+            return (1 << 61) - c;
+        }
+        i += 1;
+    }
+    panic!("a residue's offset must be one of OFFSETS")
+}
+
 impl<const C: u64> Residue<C> {
     /// The modulus.
-    pub const P: u64 = (1 << 61) - C;
+    pub const P: u64 = modulus(C);
 
     /// The residue of an integer.
     pub fn from_big(v: &BigInt) -> Self {
@@ -137,10 +150,9 @@ pub struct ModPAgreement {
     pub degree: u32,
     /// Points that cannot fail: one for an unknown ratio, which the first point fixes.
     pub free_points: usize,
-    /// d/p, p the smallest prime: the chance that one point agrees although the two differ
-    /// (all points agreeing: this to the power `points − free_points`); 1 where the primes
-    /// cannot cover the height bound.
-    pub failure_bound: f64,
+    /// d/p, p the smallest prime: the chance that one point agrees although the two differ;
+    /// 1 where the primes cannot cover the height bound.
+    pub per_point_bound: f64,
 }
 
 impl ModPAgreement {
@@ -154,10 +166,24 @@ impl ModPAgreement {
         self.primes.iter().copied().min().unwrap_or(PRIME)
     }
 
-    /// log₁₀ of the chance that a false identity agrees at every point.
+    /// log₁₀ of the chance that a false identity agrees at every point: the per-point bound
+    /// to the power `points − free_points`, times `points` where the first point fixes an
+    /// unknown ratio (it is the first of them where the right side does not vanish, which may
+    /// be any). A zero bound (degree 0: a non-zero constant never vanishes) gives the log of
+    /// the smallest normal float, still an upper bound and finite.
     pub fn log10_false_pass(&self) -> f64 {
         let n = self.points.saturating_sub(self.free_points) as f64;
-        (n * self.failure_bound.log10()).min(0.0)
+        if n == 0.0 {
+            return 0.0;
+        }
+        let which = match self.free_points {
+            0 => 0.0,
+            _ => (self.points as f64).log10(),
+        };
+        if self.per_point_bound == 0.0 {
+            return f64::MIN_POSITIVE.log10();
+        }
+        (which + n * self.per_point_bound.log10()).min(0.0)
     }
 }
 
@@ -255,8 +281,11 @@ struct Sides<'a> {
 impl<'a> Sides<'a> {
     fn new(left: &'a RatFn, right: &'a RatFn) -> Sides<'a> {
         let polys = [&left.num, &right.den, &right.num, &left.den];
-        let mut vars = left.variables();
-        vars.extend(right.variables());
+        // every name of the four rings, so that each finds its place below
+        let mut vars: Vec<String> = polys
+            .iter()
+            .flat_map(|p| p.ring().names().iter().map(|n| n.to_string()))
+            .collect();
         vars.sort();
         vars.dedup();
         let maps = polys.map(|p| {
@@ -304,7 +333,7 @@ fn finish(
 ) -> ModPAgreement {
     let covered = height_bits.div_ceil(60) <= OFFSETS.len() as u64;
     let smallest = prime(primes.last().copied().unwrap_or(0));
-    let failure_bound = match covered {
+    let per_point_bound = match covered {
         true => (f64::from(s.degree) / smallest as f64).min(1.0),
         false => 1.0,
     };
@@ -316,7 +345,7 @@ fn finish(
         height_bits,
         degree: s.degree,
         free_points,
-        failure_bound,
+        per_point_bound,
     }
 }
 

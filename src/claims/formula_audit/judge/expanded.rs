@@ -33,7 +33,7 @@ fn expanded_power(x: &ExpandedFinding) -> Power {
     Power::mutant(
         !m.holds(),
         &format!(
-            "{which} with the sign of its term {} flipped: the screen modulo p (and, if it passed, the exact comparison) rejects it",
+            "{which} with the sign of its term {} flipped: the screen modulo the primes (and, if it passed, the exact comparison) rejects it",
             Power::term_text(term)
         ),
     )
@@ -42,7 +42,7 @@ fn expanded_power(x: &ExpandedFinding) -> Power {
 fn screen_details<'b>(r: ClaimBuilder<'b>, who: &str, s: &Screened) -> ClaimBuilder<'b> {
     r.computed_cell(
         who,
-        "points agreeing modulo p",
+        "points agreeing modulo the primes",
         Value::count_of(s.screen.agreeing, s.screen.points),
     )
     .computed_cell(who, "exact comparison run", s.exact_run)
@@ -63,7 +63,7 @@ pub(super) fn expanded_evidence<'b>(r: ClaimBuilder<'b>, x: &ExpandedFinding) ->
         r = r
             .computed_cell(
                 WHO,
-                "points agreeing modulo p",
+                "points agreeing modulo the primes",
                 Value::count_of(s.screen.agreeing, s.screen.points),
             )
             .computed_cell(WHO, "exactly equal", s.ratio.is_some());
@@ -120,13 +120,13 @@ pub(super) fn expanded_result(
             )
             .detail(
                 "failure bound of the screen per point (degree / p)",
-                Value::real(s.screen.failure_bound),
+                Value::real(s.screen.per_point_bound),
             );
     }
     if let Some((_, m)) = &x.mutant {
         r = r.cell(
             "mutant",
-            "points agreeing modulo p",
+            "points agreeing modulo the primes",
             Value::count_of(m.screen.agreeing, m.screen.points),
         );
     }
@@ -166,7 +166,7 @@ mod tests {
                 height_bits: 3,
                 degree: 2,
                 free_points: 0,
-                failure_bound: 2.0 / 7.0,
+                per_point_bound: 2.0 / 7.0,
             },
             exact_run: agreeing == 4,
             ratio: exact.then(|| rat(1, 1)),
@@ -198,7 +198,7 @@ mod tests {
     #[test]
     fn a_form_holds_only_through_both_stages() {
         assert!(screened(4, true).holds());
-        // one point off modulo p, or the exact comparison failing, rejects
+        // one point off modulo a prime, or the exact comparison failing, rejects
         assert!(!screened(3, true).holds());
         assert!(!screened(4, false).holds());
     }

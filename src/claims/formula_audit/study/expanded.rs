@@ -21,7 +21,7 @@ use crate::error::{Error, Result};
 /// One form run through the screen and, when it passes, the exact comparison.
 #[derive(Clone, Debug)]
 pub struct Screened {
-    /// The screen modulo p.
+    /// The screen modulo the primes.
     pub screen: ModPAgreement,
     /// The exact comparison ran (only after a passed screen).
     pub exact_run: bool,

@@ -110,6 +110,7 @@ impl MPoly {
             .collect();
         let tables: Vec<Vec<Vec<T>>> = points.iter().map(|at| powers(&degrees, at)).collect();
         let mut sums = vec![T::zero(); points.len()];
+        debug_assert_eq!(coefs.len(), self.len(), "one image per term");
         let mut factors: Vec<(usize, usize)> = Vec::with_capacity(self.nvars());
         for (t, c) in coefs.iter().enumerate().take(self.len()) {
             let m = self.packed(t);

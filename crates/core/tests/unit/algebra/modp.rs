@@ -45,3 +45,18 @@ fn a_difference_the_first_prime_divides_is_rejected_by_the_second() {
     let small = RatFn::parse("(2^50) x + y").unwrap();
     assert_eq!(agree_mod_p(&small, &r, &one, 8, 3).primes.len(), 1);
 }
+
+/// Constants (degree 0): the bound is finite, never −∞ (which no output may hold).
+#[test]
+fn a_constant_difference_has_a_finite_bound() {
+    let one = orthocheck_core::algebra::rat(1, 1);
+    let s = agree_mod_p(
+        &RatFn::parse("2").unwrap(),
+        &RatFn::parse("3").unwrap(),
+        &one,
+        4,
+        1,
+    );
+    assert_eq!((s.agreeing, s.degree), (0, 0));
+    assert!(s.log10_false_pass().is_finite() && s.log10_false_pass() < -300.0);
+}
