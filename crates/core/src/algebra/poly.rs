@@ -352,27 +352,6 @@ impl Poly {
         Some(&self.content * BigRational::new(n, d))
     }
 
-    /// The value at `values` as an unreduced fraction `(numerator, denominator)`, the
-    /// denominator positive: [`Poly::eval`] without its gcds, for callers that only compare
-    /// values (by cross-multiplication); `None` if a variable has no value.
-    pub fn eval_unreduced(
-        &self,
-        values: &BTreeMap<String, BigRational>,
-    ) -> Option<(BigInt, BigInt)> {
-        let mut nums = Vec::with_capacity(self.ring.names().len());
-        let mut dens = Vec::with_capacity(nums.capacity());
-        for n in self.ring.names() {
-            let x = values.get(&**n)?;
-            nums.push(x.numer().clone());
-            dens.push(x.denom().clone());
-        }
-        if self.is_zero() {
-            return Some((BigInt::zero(), BigInt::from(1)));
-        }
-        let (n, d) = self.prim.eval_fraction(&nums, &dens);
-        Some((self.content.numer() * n, self.content.denom() * d))
-    }
-
     /// Evaluate in floating point; `None` if a variable has no value. Term by term in the
     /// canonical order, each coefficient rounded once (the rounding of the first engine).
     pub fn eval_f64(&self, values: &BTreeMap<String, f64>) -> Option<f64> {
