@@ -5,7 +5,7 @@ pub mod figure;
 pub mod noise;
 mod points;
 
-pub use points::{points_details, points_tolerance};
+pub use points::{points_details, points_tolerance, prime_details};
 
 mod resolution;
 mod result;

@@ -18,16 +18,22 @@ pub fn points_tolerance(p: &PointCheck) -> Tolerance {
 
 /// The random-point check's numbers, as details.
 pub fn points_details<'b>(r: ClaimBuilder<'b>, p: &PointCheck) -> ClaimBuilder<'b> {
-    r.detail("seed of the points", p.seed)
-        .detail("degree of the difference", p.degree as usize)
-        .detail("primes", p.primes.len())
+    let r = r
+        .detail("seed of the points", p.seed)
+        .detail("degree of the difference", p.degree as usize);
+    prime_details(r, p).detail(
+        "log10 of the failure bound",
+        Value::real(p.log10_false_pass()),
+    )
+}
+
+/// The primes a random-point check ran modulo: how many, the smallest, and the height bound
+/// of the difference that set their number.
+pub fn prime_details<'b>(r: ClaimBuilder<'b>, p: &PointCheck) -> ClaimBuilder<'b> {
+    r.detail("primes", p.primes.len())
         .detail("smallest prime", p.smallest_prime())
         .detail(
             "height bound of the difference (bits)",
             p.height_bits as usize,
-        )
-        .detail(
-            "log10 of the failure bound",
-            Value::real(p.log10_false_pass()),
         )
 }

@@ -149,50 +149,23 @@ pub fn below(x: f64) -> String {
 
 /// The Unicode superscript of `c`, if it has one.
 pub fn superscript(c: char) -> Option<char> {
-    let digits = "⁰¹²³⁴⁵⁶⁷⁸⁹";
-    match c {
-        '0'..='9' => digits.chars().nth(c as usize - '0' as usize),
-        '+' => Some('⁺'),
-        '-' | '−' => Some('⁻'),
-        '=' => Some('⁼'),
-        '(' => Some('⁽'),
-        ')' => Some('⁾'),
-        'n' => Some('ⁿ'),
-        'i' => Some('ⁱ'),
-        _ => None,
-    }
+    glyph(c, "0123456789+-−=()ni", "⁰¹²³⁴⁵⁶⁷⁸⁹⁺⁻⁻⁼⁽⁾ⁿⁱ")
 }
 
 /// The Unicode subscript of `c`, if it has one.
 pub fn subscript(c: char) -> Option<char> {
-    let digits = "₀₁₂₃₄₅₆₇₈₉";
-    match c {
-        '0'..='9' => digits.chars().nth(c as usize - '0' as usize),
-        '+' => Some('₊'),
-        '-' | '−' => Some('₋'),
-        '=' => Some('₌'),
-        '(' => Some('₍'),
-        ')' => Some('₎'),
-        ',' => Some(','),
-        'a' => Some('ₐ'),
-        'e' => Some('ₑ'),
-        'o' => Some('ₒ'),
-        'x' => Some('ₓ'),
-        'h' => Some('ₕ'),
-        'k' => Some('ₖ'),
-        'l' => Some('ₗ'),
-        'm' => Some('ₘ'),
-        'n' => Some('ₙ'),
-        'p' => Some('ₚ'),
-        's' => Some('ₛ'),
-        't' => Some('ₜ'),
-        'i' => Some('ᵢ'),
-        'j' => Some('ⱼ'),
-        'r' => Some('ᵣ'),
-        'u' => Some('ᵤ'),
-        'v' => Some('ᵥ'),
-        _ => None,
-    }
+    glyph(
+        c,
+        "0123456789+-−=(),aeoxhklmnpstijruv",
+        "₀₁₂₃₄₅₆₇₈₉₊₋₋₌₍₎,ₐₑₒₓₕₖₗₘₙₚₛₜᵢⱼᵣᵤᵥ",
+    )
+}
+
+/// The glyph of `to` at the place of `c` in `from`.
+fn glyph(c: char, from: &str, to: &str) -> Option<char> {
+    from.chars()
+        .position(|x| x == c)
+        .and_then(|i| to.chars().nth(i))
 }
 
 /// A monomial as a reader writes it, `a²·aᵢ²` for `[("a", 2), ("a_i", 2)]`: a name's `_x`
@@ -224,6 +197,20 @@ pub fn monomial(factors: &[(&str, u32)]) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Each table pairs every character with its glyph (one for one), and a monomial reads
+    /// as a reader writes it.
+    #[test]
+    fn scripts_line_up_and_monomials_read_as_written() {
+        assert_eq!(superscript('7'), Some('⁷'));
+        assert_eq!(superscript('i'), Some('ⁱ'));
+        assert_eq!(subscript('v'), Some('ᵥ'));
+        assert_eq!(subscript('9'), Some('₉'));
+        assert_eq!((superscript('b'), subscript('b')), (None, None));
+        assert_eq!(monomial(&[("a", 2), ("a_i", 2), ("c_12", 1)]), "a²·aᵢ²·c₁₂");
+        assert_eq!(monomial(&[("f_cb", 1), ("x_y", 3)]), "f_cb·x_y³");
+        assert_eq!(monomial(&[]), "1");
+    }
 
     #[test]
     fn every_formatter_counts_the_non_finite_values_it_formats() {

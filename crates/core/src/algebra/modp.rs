@@ -206,23 +206,7 @@ pub fn agree_mod_p(
     points: usize,
     seed: u64,
 ) -> ModPAgreement {
-    let sides = Sides::new(left, right);
-    // k = a/b: the integer difference is b·L̃ − a·R̃
-    let (a, b) = (ratio.numer(), ratio.denom());
-    let height = (b.abs() * &sides.norms.0 + a.abs() * &sides.norms.1).bits();
-    let primes = primes_for(height);
-    let mut g = crate::model::rng(seed);
-    let mut agree = vec![true; points];
-    for &j in &primes {
-        let p = prime(j);
-        let k = big_mod(b, p)
-            .and_then(|d| inv_mod(d, p))
-            .map(|d| mul_mod(big_mod(a, p).unwrap_or(0), d, p));
-        for (ok, v) in agree.iter_mut().zip(cross_in(j, &sides, points, &mut g)) {
-            *ok &= matches!((v, k), (Some((l, r)), Some(k)) if l == mul_mod(k, r, p));
-        }
-    }
-    finish(&sides, points, seed, agree, primes, height, 0)
+    screen(left, right, Some(ratio), points, seed)
 }
 
 /// The same screen for `left = k · right` with an unknown non-zero constant k (an equation
@@ -240,26 +224,51 @@ pub fn agree_mod_p(
 /// assert_eq!(proportional_mod_p(&l, &m, 8, 1).agreeing, 1);
 /// ```
 pub fn proportional_mod_p(left: &RatFn, right: &RatFn, points: usize, seed: u64) -> ModPAgreement {
+    screen(left, right, None, points, seed)
+}
+
+/// Both screens: `ratio` known (`L = k·R`), or `None`, read off the first point.
+fn screen(
+    left: &RatFn,
+    right: &RatFn,
+    ratio: Option<&BigRational>,
+    points: usize,
+    seed: u64,
+) -> ModPAgreement {
     let sides = Sides::new(left, right);
-    // the minors' coefficients are at most 2·‖L̃‖₁·‖R̃‖₁
-    let height = (BigInt::from(2) * &sides.norms.0 * &sides.norms.1).bits();
+    let height = match ratio {
+        // k = a/b: the integer difference is b·L̃ − a·R̃
+        Some(k) => (k.denom().abs() * &sides.norms.0 + k.numer().abs() * &sides.norms.1).bits(),
+        // the minors' coefficients are at most 2·‖L̃‖₁·‖R̃‖₁
+        None => (BigInt::from(2) * &sides.norms.0 * &sides.norms.1).bits(),
+    };
     let primes = primes_for(height);
     let mut g = crate::model::rng(seed);
     let mut agree = vec![true; points];
     for &j in &primes {
-        let p = prime(j);
-        let values = cross_in(j, &sides, points, &mut g);
-        let k = values
-            .iter()
-            .flatten()
-            .find(|(_, r)| *r != 0)
-            .and_then(|&(l, r)| Some(mul_mod(l, inv_mod(r, p)?, p)))
-            .filter(|k| *k != 0);
-        for (ok, v) in agree.iter_mut().zip(&values) {
-            *ok &= matches!((v, k), (Some((l, r)), Some(k)) if *l == mul_mod(k, *r, p));
+        for (ok, a) in agree
+            .iter_mut()
+            .zip(agreeing_in(j, &sides, ratio, points, &mut g))
+        {
+            *ok &= a;
         }
     }
-    finish(&sides, points, seed, agree, primes, height, 1)
+    let covered = height.div_ceil(60) <= OFFSETS.len() as u64;
+    let primes: Vec<u64> = primes.into_iter().map(prime).collect();
+    let smallest = primes.iter().copied().min().unwrap_or(PRIME);
+    ModPAgreement {
+        points,
+        seed,
+        agreeing: agree.iter().filter(|a| **a).count(),
+        primes,
+        height_bits: height,
+        degree: sides.degree,
+        free_points: usize::from(ratio.is_none()),
+        per_point_bound: match covered {
+            true => (f64::from(sides.degree) / smallest as f64).min(1.0),
+            false => 1.0,
+        },
+    }
 }
 
 /// The four polynomials of a comparison, `L = l.num · r.den` and `R = r.num · l.den`, with
@@ -322,45 +331,20 @@ fn primes_for(bits: u64) -> Vec<usize> {
     (0..m.clamp(1, OFFSETS.len())).collect()
 }
 
-fn finish(
-    s: &Sides,
-    points: usize,
-    seed: u64,
-    agree: Vec<bool>,
-    primes: Vec<usize>,
-    height_bits: u64,
-    free_points: usize,
-) -> ModPAgreement {
-    let covered = height_bits.div_ceil(60) <= OFFSETS.len() as u64;
-    let smallest = prime(primes.last().copied().unwrap_or(0));
-    let per_point_bound = match covered {
-        true => (f64::from(s.degree) / smallest as f64).min(1.0),
-        false => 1.0,
-    };
-    ModPAgreement {
-        points,
-        seed,
-        agreeing: agree.iter().filter(|a| **a).count(),
-        primes: primes.into_iter().map(prime).collect(),
-        height_bits,
-        degree: s.degree,
-        free_points,
-        per_point_bound,
-    }
-}
-
-/// At each of `points` fresh points modulo prime j: (L, R), `None` where the prime divides
-/// the denominator of a content.
-fn cross_in(
+/// At each of `points` fresh points modulo prime j: whether `L = k·R` there (`k` known, or
+/// read off the first point where R does not vanish); a point where the prime divides the
+/// denominator of a content, or of k, disagrees.
+fn agreeing_in(
     j: usize,
     s: &Sides,
+    ratio: Option<&BigRational>,
     points: usize,
     g: &mut rand_chacha::ChaCha8Rng,
-) -> Vec<Option<(u64, u64)>> {
+) -> Vec<bool> {
     macro_rules! dispatch {
         ($($i:literal),*) => {
             match j {
-                $($i => cross::<{ OFFSETS[$i] }>(s, points, g),)*
+                $($i => agreeing::<{ OFFSETS[$i] }>(s, ratio, points, g),)*
                 _ => unreachable!("prime index beyond OFFSETS"),
             }
         };
@@ -368,11 +352,35 @@ fn cross_in(
     dispatch!(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15)
 }
 
+fn agreeing<const C: u64>(
+    s: &Sides,
+    ratio: Option<&BigRational>,
+    points: usize,
+    g: &mut rand_chacha::ChaCha8Rng,
+) -> Vec<bool> {
+    let values = cross::<C>(s, points, g);
+    let k = match ratio {
+        Some(k) => Residue::<C>::from_rational(k),
+        None => values
+            .iter()
+            .flatten()
+            .find(|(_, r)| r.0 != 0)
+            .and_then(|(l, r)| Some(l.mul(&r.inv()?)))
+            .filter(|k| k.0 != 0),
+    };
+    values
+        .iter()
+        .map(|v| matches!((v, k), (Some((l, r)), Some(k)) if *l == k.mul(r)))
+        .collect()
+}
+
+/// (L, R) at each of `points` fresh points, `None` where the prime divides the denominator
+/// of a content.
 fn cross<const C: u64>(
     s: &Sides,
     points: usize,
     g: &mut rand_chacha::ChaCha8Rng,
-) -> Vec<Option<(u64, u64)>> {
+) -> Vec<Option<(Residue<C>, Residue<C>)>> {
     let draws: Vec<Vec<Residue<C>>> = (0..points)
         .map(|_| {
             s.vars
@@ -386,16 +394,18 @@ fn cross<const C: u64>(
         .iter()
         .zip(&s.maps)
         .map(|(p, map)| {
+            if p.is_zero() {
+                return vec![Some(Residue(0)); points];
+            }
             let (content, prim) = p.primitive();
-            let Some(c) = Residue::<C>::from_rational(content).filter(|_| !p.is_zero()) else {
-                return vec![(p.is_zero()).then_some(Residue(0)); points];
+            let Some(c) = Residue::<C>::from_rational(content) else {
+                return vec![None; points];
             };
             let local: Vec<Vec<Residue<C>>> = draws
                 .iter()
                 .map(|d| map.iter().map(|&i| d[i]).collect())
                 .collect();
-            let images = prim.coef_images();
-            prim.eval_points(&images, &local)
+            prim.eval_points(&prim.coef_images(), &local)
                 .into_iter()
                 .map(|v| Some(c.mul(&v)))
                 .collect()
@@ -404,32 +414,7 @@ fn cross<const C: u64>(
     (0..points)
         .map(|i| {
             let [a, b, c, d] = [0, 1, 2, 3].map(|k| values[k][i]);
-            Some((a?.mul(&b?).0, c?.mul(&d?).0))
+            Some((a?.mul(&b?), c?.mul(&d?)))
         })
         .collect()
-}
-
-fn mul_mod(a: u64, b: u64, p: u64) -> u64 {
-    (u128::from(a) * u128::from(b) % u128::from(p)) as u64
-}
-
-/// The inverse modulo p (Fermat), `None` for zero.
-fn inv_mod(a: u64, p: u64) -> Option<u64> {
-    if a.is_multiple_of(p) {
-        return None;
-    }
-    let (mut r, mut b, mut e) = (1, a % p, p - 2);
-    while e > 0 {
-        if e & 1 == 1 {
-            r = mul_mod(r, b, p);
-        }
-        b = mul_mod(b, b, p);
-        e >>= 1;
-    }
-    Some(r)
-}
-
-/// `v mod p`, `None` when it is zero.
-fn big_mod(v: &BigInt, p: u64) -> Option<u64> {
-    v.mod_floor(&BigInt::from(p)).to_u64().filter(|r| *r != 0)
 }

@@ -2,7 +2,7 @@
 //! expanded into the projected and the true squares, judged like the macro-level item.
 
 use super::{ClaimBuilder, ClaimResult, Power, ResultBuilder, Tolerance, Value, Verdict};
-use crate::check::Role;
+use crate::check::{prime_details, Role};
 use crate::claims::audit::Shown;
 use crate::claims::formula_audit::study::{ExpandedFinding, Form, Screened};
 use crate::claims::formula_audit::FormulaItem;
@@ -106,13 +106,7 @@ pub(super) fn expanded_result(
         );
     }
     if let Some(s) = x.printed.as_ref().or(x.corrected.as_ref()) {
-        r = r
-            .detail("primes", s.screen.primes.len())
-            .detail("smallest prime p", s.screen.smallest_prime())
-            .detail(
-                "height bound of the difference (bits)",
-                s.screen.height_bits as usize,
-            )
+        r = prime_details(r, &s.screen)
             .detail("seed of the points", s.screen.seed)
             .detail(
                 "degree of the cross-multiplied difference",

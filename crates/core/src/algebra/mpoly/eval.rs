@@ -110,9 +110,9 @@ impl MPoly {
             .collect();
         let tables: Vec<Vec<Vec<T>>> = points.iter().map(|at| powers(&degrees, at)).collect();
         let mut sums = vec![T::zero(); points.len()];
-        debug_assert_eq!(coefs.len(), self.len(), "one image per term");
         let mut factors: Vec<(usize, usize)> = Vec::with_capacity(self.nvars());
-        for (t, c) in coefs.iter().enumerate().take(self.len()) {
+        // one image per term: fewer is a caller's error, and indexing says so
+        for (t, c) in coefs[..self.len()].iter().enumerate() {
             let m = self.packed(t);
             factors.clear();
             factors.extend((0..self.nvars()).filter_map(|i| {
