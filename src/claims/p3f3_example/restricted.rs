@@ -1,6 +1,7 @@
 //! §2's example under rounding restricted to exact views of the printed body
 //! (`ex2-rounding-restricted`), and the discriminant of the paper's quadratic at the printed
-//! data (`ex2-discriminant`). Computation in `studies::exact_views`.
+//! data (`ex2-discriminant`). Computation in `studies::exact_views` (samples and the witness)
+//! and `studies::view_bounds` (the proven separation of the two solutions).
 
 use crate::check::{
     ClaimBuilder, ClaimResult, Power, ResultBuilder, Tolerance, ToleranceSource, Value, Verdict,
@@ -8,11 +9,7 @@ use crate::check::{
 use crate::claims::p3f3_example::P3f3ExampleCase;
 use crate::studies::exact_views::{restricted, Restricted, RestrictedDesign};
 use crate::studies::rounding::{inside, Acceptance, RoundingBox};
-
-/// Two real roots at every sample (and at least one sample).
-fn always_two_real(r: &Restricted) -> bool {
-    r.samples > 0 && r.two_real == r.samples && r.discriminant_spread.0 > 0.0
-}
+use crate::studies::view_bounds::{separation, Extreme, Views, CELL_BUDGET};
 
 pub(super) fn results(
     b: &ResultBuilder,
@@ -38,7 +35,8 @@ pub(super) fn results(
         out.push(restricted_result(b, c, &r, targets, target_half));
     }
     if let Some(c) = &case.discriminant {
-        out.push(discriminant_result(b, c, &r));
+        let sep = Views::new(figure_box, body).map(|v| separation(&v));
+        out.push(discriminant_result(b, c, &r, sep.as_ref()));
     }
     out
 }
@@ -140,22 +138,43 @@ fn sample_cells<'b>(mut out: ClaimBuilder<'b>, r: &Restricted) -> ClaimBuilder<'
     out
 }
 
+/// Whether the bracket proves two distinct real solutions at every view: its proven end
+/// on the attained one's side of 0.
+fn proves_distinct(e: &Extreme) -> bool {
+    e.attained
+        .is_some_and(|a| e.proven != 0.0 && e.proven.signum() == a.signum())
+}
+
 fn discriminant_result(
     b: &ResultBuilder,
     claim: &crate::cases::ClaimRef,
     r: &Restricted,
+    sep: Option<&Extreme>,
 ) -> ClaimResult {
-    let holds = always_two_real(r);
+    let holds = sep.is_some_and(proves_distinct);
     let (n, of) = r.unrestricted_no_real;
     let mut out = b
         .claim(claim)
         .printed("solutions", Value::label("two"))
-        .computed("two real roots at every sampled exact view rounding to the figure", Value::flag(holds))
-        .computed("smallest discriminant over the sampled exact views", r.discriminant_spread.0)
-        .computed("discriminant over the sampled exact views: 5 / 50 / 95 %", Value::reals(&r.discriminant_spread.1))
-        .tolerance(Tolerance::bound(0.0, ToleranceSource::Propagated, &format!("Δ > 0 at each of {} seeded exact views of the printed body whose coordinates round to the figure: a sample of the views, not a bound over all of them", r.samples)))
+        .computed("two distinct real solutions at every exact view rounding to the figure (proven)", Value::flag(holds))
+        .tolerance(Tolerance::bound(0.0, ToleranceSource::Propagated, "the two solutions' separation in c² is not 0 at any exact view of the printed body whose coordinates round to the figure (half a unit of each printed digit): proven by branch-and-bound over every such view. On the paper's route Δ = α²·separation², and the separation is s·det with det the determinant of its Cramer step, so a separation away from 0 proves the route defined and Δ > 0 at every view"))
         .power(Power::mutant(n > 0, &format!("the same count over the unrestricted rounding box (projections no rigid body need produce) finds data with no real root: {n} of {of} samples")))
-        .method("β² − 4αγ of the paper's quadratic α c⁴ + β c² + γ (F₃ with a², b² from Cramer's rule); its change and the roots' over the figure's rounding to first order (Σₖ |∂/∂cₖ|·hₖ); its distribution over seeded exact views of the printed body");
+        .method("at every exact view the body's squares solve eq. p3f3sqr; the other solution is v₂ = v₁ − (∇F₃(v₁)·n / nᵀAn) n on the line of the two linear differences (n = d₁ × d₂). Its c² separation from the body is bounded below by branch-and-bound over the views' nine free coordinates (per frame Q and R's first coordinate, R's second from rigidity), cells contracted to the rounding of R's second coordinate and bounded by interval centred forms; the bracket's upper end is attained at an exact view. Beside it: β² − 4αγ of the paper's quadratic α c⁴ + β c² + γ at the printed data, its change and the roots' to first order over the figure's rounding (Σₖ |∂/∂cₖ|·hₖ), and its distribution over seeded exact views")
+        .detail("smallest discriminant over the sampled exact views", r.discriminant_spread.0)
+        .detail("discriminant over the sampled exact views: 5 / 50 / 95 %", Value::reals(&r.discriminant_spread.1));
+    if let Some(e) = sep {
+        out = out
+            .computed(
+                "separation in c² nearest 0 over every exact view: proven bound",
+                e.proven,
+            )
+            .computed(
+                "separation in c² nearest 0 over every exact view: attained at a view",
+                e.attained
+                    .map_or(Value::label("no view found"), Value::from),
+            )
+            .detail("cells bounded", Value::count_of(e.cells, CELL_BUDGET));
+    }
     if let Some(d) = &r.discriminant {
         out = out
             .computed("discriminant at the printed data", d.value)
@@ -177,6 +196,8 @@ fn discriminant_result(
                 Value::reals(&d.root_change[1]),
             );
     }
+    // the body is a real solution at every exact view, so the other is real too: the claim
+    // fails only at a double root, which a bracket reaching 0 cannot exclude
     out.verdict(if holds {
         Verdict::ReproducedWithinRounding
     } else {
@@ -200,24 +221,19 @@ mod tests {
     }
 
     #[test]
-    fn two_real_needs_a_positive_discriminant_everywhere() {
-        let mut r = Restricted {
-            discriminant: None,
-            accepted: [(1, 1); 3],
-            samples: 2,
-            two_real: 2,
-            spread: Vec::new(),
-            discriminant_spread: (0.5, [0.6, 0.8, 1.0]),
-            unrestricted_no_real: (0, 2),
-            unrestricted_spread: Vec::new(),
-            acceptance: Vec::new(),
-            witness: None,
+    fn distinct_solutions_need_a_proven_bound_on_the_side_of_a_view() {
+        let e = |proven: f64, attained: Option<f64>| Extreme {
+            proven,
+            attained,
+            at: None,
+            cells: 1,
+            closed: true,
         };
-        assert!(always_two_real(&r));
-        r.discriminant_spread.0 = -0.1;
-        assert!(!always_two_real(&r));
-        r.discriminant_spread.0 = 0.5;
-        r.two_real = 1;
-        assert!(!always_two_real(&r));
+        assert!(proves_distinct(&e(0.01, Some(0.1))));
+        assert!(proves_distinct(&e(-0.01, Some(-0.1))));
+        // a bracket reaching 0, a view on the other side, or no view at all
+        assert!(!proves_distinct(&e(0.0, Some(0.1))));
+        assert!(!proves_distinct(&e(-0.01, Some(0.1))));
+        assert!(!proves_distinct(&e(0.01, None)));
     }
 }

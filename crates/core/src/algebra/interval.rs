@@ -89,6 +89,31 @@ impl Interval {
         }
     }
 
+    /// The intersection of two intervals, `None` when they are disjoint.
+    pub fn intersect(self, o: Interval) -> Option<Interval> {
+        let (lo, hi) = (self.lo.max(o.lo), self.hi.min(o.hi));
+        (lo <= hi).then_some(Interval { lo, hi })
+    }
+
+    /// Whether every point of `self` lies in `o`.
+    pub fn within(&self, o: &Interval) -> bool {
+        o.lo <= self.lo && self.hi <= o.hi
+    }
+
+    /// 1 / x, `None` when the interval contains 0.
+    pub fn recip(self) -> Option<Interval> {
+        (self.lo > 0.0 || self.hi < 0.0).then(|| Interval::outward(1.0 / self.hi, 1.0 / self.lo))
+    }
+
+    /// √x over the part of the interval at or above 0 (the square root is correctly
+    /// rounded, so one step outward encloses it); `None` when the interval is all negative.
+    pub fn sqrt(self) -> Option<Interval> {
+        (self.hi >= 0.0).then(|| Interval {
+            lo: self.lo.max(0.0).sqrt().next_down().max(0.0),
+            hi: self.hi.sqrt().next_up(),
+        })
+    }
+
     /// The distance from `x` to the interval (0 inside).
     pub fn distance(&self, x: f64) -> f64 {
         (self.lo - x).max(x - self.hi).max(0.0)

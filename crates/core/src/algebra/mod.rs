@@ -3,6 +3,7 @@
 pub mod cholesky;
 pub mod damping;
 mod diff;
+pub mod enclosure;
 pub mod float_roots;
 mod gram;
 pub mod interval;
@@ -20,6 +21,7 @@ pub mod ratfn;
 pub mod sturm;
 
 pub use diff::central_jacobian;
+pub use enclosure::{Grad, Scalar};
 pub use float_roots::{
     closed_form_real, companion_roots, compare_methods, quadratic, quadratic_roots, EigenMethod,
     RootAgreement,

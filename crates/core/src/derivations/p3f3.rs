@@ -136,13 +136,7 @@ fn polish(f: &[FrameCoefficients; 3], v: [f64; 3]) -> [f64; 3] {
         return v;
     }
     // Newton step J d = r by the adjugate: J⁻¹ has the columns j₁×j₂, j₂×j₀, j₀×j₁ over det
-    let row = |fi: &FrameCoefficients| {
-        Vector3::new(
-            2.0 * (x - y - z + fi.alpha),
-            2.0 * (y - x - z + fi.beta),
-            2.0 * (z - x - y + fi.gamma),
-        )
-    };
+    let row = |fi: &FrameCoefficients| Vector3::from(fi.slope(v));
     let (j0, j1, j2) = (row(&f[0]), row(&f[1]), row(&f[2]));
     let c0 = j1.cross(&j2);
     let det = j0.dot(&c0);

@@ -11,7 +11,7 @@ use nalgebra::Vector3;
 use num_rational::BigRational;
 use rand::Rng;
 
-use crate::algebra::Poly;
+use crate::algebra::{Poly, Scalar};
 use crate::model::{random_rotation, rng};
 
 /// Radical symbols and what they square to, in terms of edges and projections.
@@ -245,24 +245,27 @@ impl FrameCoefficients {
     /// assert_eq!(f.eval(9.0, 16.0, 25.0), 0.0);
     /// ```
     #[inline]
-    pub fn new([a2, b2, c2]: [f64; 3]) -> Self {
+    pub fn new(l: [f64; 3]) -> Self {
+        let [alpha, beta, gamma, k] = frame_terms(l);
         FrameCoefficients {
-            alpha: -a2 + b2 + c2,
-            beta: a2 - b2 + c2,
-            gamma: a2 + b2 - c2,
-            k: a2 * a2 + b2 * b2 + c2 * c2 - 2.0 * a2 * b2 - 2.0 * a2 * c2 - 2.0 * b2 * c2,
-            scale: a2 + b2 + c2,
+            alpha,
+            beta,
+            gamma,
+            k,
+            scale: l[0] + l[1] + l[2],
         }
     }
 
     /// F(x, y, z).
     #[inline]
     pub fn eval(&self, x: f64, y: f64, z: f64) -> f64 {
-        x * x + y * y + z * z - 2.0 * x * y - 2.0 * x * z - 2.0 * y * z
-            + self.k
-            + 2.0 * self.alpha * x
-            + 2.0 * self.beta * y
-            + 2.0 * self.gamma * z
+        frame_value(&[self.alpha, self.beta, self.gamma, self.k], [x, y, z])
+    }
+
+    /// ∂F/∂(x, y, z) at (x, y, z).
+    #[inline]
+    pub fn slope(&self, v: [f64; 3]) -> [f64; 3] {
+        frame_slope(&[self.alpha, self.beta, self.gamma, self.k], v)
     }
 
     /// The sum of the absolute values of F's terms at (x, y, z): the scale of its rounding.
@@ -279,13 +282,57 @@ impl FrameCoefficients {
     /// The linear equation F_self − F_other = 0 as (coefficients of x, y, z; constant).
     #[inline]
     pub fn difference(&self, other: &FrameCoefficients) -> ([f64; 3], f64) {
-        (
-            [
-                2.0 * (self.alpha - other.alpha),
-                2.0 * (self.beta - other.beta),
-                2.0 * (self.gamma - other.gamma),
-            ],
-            self.k - other.k,
-        )
+        let terms = |f: &FrameCoefficients| [f.alpha, f.beta, f.gamma, f.k];
+        frame_difference(&terms(self), &terms(other))
     }
+}
+
+/// (α, β, γ, K) of [`FrameCoefficients`] from one frame's projected squared lengths, in any
+/// [`Scalar`] (the solver's floats and the enclosures of `studies::view_bounds` share it).
+#[inline]
+pub fn frame_terms<T: Scalar>([a2, b2, c2]: [T; 3]) -> [T; 4] {
+    let two = T::constant(2.0);
+    [
+        -a2 + b2 + c2,
+        a2 - b2 + c2,
+        a2 + b2 - c2,
+        a2 * a2 + b2 * b2 + c2 * c2 - two * a2 * b2 - two * a2 * c2 - two * b2 * c2,
+    ]
+}
+
+/// F(x, y, z) from a frame's (α, β, γ, K), in any [`Scalar`].
+#[inline]
+pub fn frame_value<T: Scalar>(t: &[T; 4], [x, y, z]: [T; 3]) -> T {
+    let two = T::constant(2.0);
+    x * x + y * y + z * z - two * x * y - two * x * z - two * y * z
+        + t[3]
+        + two * t[0] * x
+        + two * t[1] * y
+        + two * t[2] * z
+}
+
+/// ∂F/∂(x, y, z) from a frame's (α, β, γ, K), in any [`Scalar`].
+#[inline]
+pub fn frame_slope<T: Scalar>(t: &[T; 4], [x, y, z]: [T; 3]) -> [T; 3] {
+    let two = T::constant(2.0);
+    [
+        two * (x - y - z + t[0]),
+        two * (y - x - z + t[1]),
+        two * (z - x - y + t[2]),
+    ]
+}
+
+/// The linear equation Fᵢ − Fⱼ = 0 from the (α, β, γ, K) of two frames: (coefficients of x, y,
+/// z; constant).
+#[inline]
+pub fn frame_difference<T: Scalar>(a: &[T; 4], b: &[T; 4]) -> ([T; 3], T) {
+    let two = T::constant(2.0);
+    (
+        [
+            two * (a[0] - b[0]),
+            two * (a[1] - b[1]),
+            two * (a[2] - b[2]),
+        ],
+        a[3] - b[3],
+    )
 }

@@ -10,3 +10,4 @@ pub mod noise;
 pub mod points;
 pub mod printed_matrix;
 pub mod rounding;
+pub mod view_bounds;

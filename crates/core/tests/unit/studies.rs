@@ -6,3 +6,4 @@ mod joint_fit;
 mod noise;
 mod points;
 mod rounding;
+mod view_bounds;

@@ -16,3 +16,37 @@ fn enclosures_hold_at_sampled_points() {
     }
     assert!(Interval::around(0.0, 1.0).square().lo >= 0.0);
 }
+
+#[test]
+fn division_and_roots_refuse_what_they_cannot_enclose() {
+    assert!(Interval::around(0.0, 1.0).recip().is_none());
+    let r = Interval::around(2.0, 0.5)
+        .recip()
+        .unwrap_or(Interval::point(f64::NAN));
+    assert!(r.contains(0.4) && r.contains(1.0 / 1.5) && !r.contains(0.39));
+    assert!(Interval::around(-2.0, 0.5).sqrt().is_none());
+    let s = Interval::around(0.0, 4.0)
+        .sqrt()
+        .unwrap_or(Interval::point(f64::NAN));
+    assert!(s.lo == 0.0 && s.contains(2.0));
+    let a = Interval::around(1.0, 1.0);
+    assert_eq!(a.intersect(Interval::around(3.0, 0.5)), None);
+    assert!(Interval::around(1.0, 0.5).within(&a) && !a.within(&Interval::around(1.0, 0.5)));
+}
+
+#[test]
+fn the_centred_range_beats_the_naive_one_where_terms_cancel() {
+    use orthocheck_core::algebra::{Grad, Scalar};
+    // f = x − x² + (1 − x)²  = 1 − x  over x ∈ [0.4, 0.6]
+    let cell = [Interval::around(0.5, 0.1)];
+    let off = [cell[0] - Interval::point(0.5)];
+    let x = Grad::<1>::variable(&[0.5], &off, 0);
+    let one = Grad::constant(1.0);
+    let f = x - x * x + (one - x) * (one - x);
+    let naive = cell[0] - cell[0] * cell[0] + (Interval::point(1.0) - cell[0]).square();
+    let r = f.range();
+    assert!(r.contains(0.4) && r.contains(0.6) && r.contains(0.5));
+    assert!(r.width() < 0.6 * naive.width(), "{r:?} against {naive:?}");
+    // a reciprocal through 0 has no enclosure
+    assert!((x - Grad::constant(0.5)).recip().is_none());
+}
