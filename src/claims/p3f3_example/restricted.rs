@@ -9,7 +9,7 @@ use crate::check::{
 use crate::claims::p3f3_example::P3f3ExampleCase;
 use crate::studies::exact_views::{restricted, Restricted, RestrictedDesign};
 use crate::studies::rounding::{inside, Acceptance, RoundingBox};
-use crate::studies::view_bounds::{separation, Extreme, Views, CELL_BUDGET};
+use crate::studies::view_bounds::{separation, Extreme, Views};
 
 pub(super) fn results(
     b: &ResultBuilder,
@@ -138,20 +138,13 @@ fn sample_cells<'b>(mut out: ClaimBuilder<'b>, r: &Restricted) -> ClaimBuilder<'
     out
 }
 
-/// Whether the bracket proves two distinct real solutions at every view: its proven end
-/// on the attained one's side of 0.
-fn proves_distinct(e: &Extreme) -> bool {
-    e.attained
-        .is_some_and(|a| e.proven != 0.0 && e.proven.signum() == a.signum())
-}
-
 fn discriminant_result(
     b: &ResultBuilder,
     claim: &crate::cases::ClaimRef,
     r: &Restricted,
     sep: Option<&Extreme>,
 ) -> ClaimResult {
-    let holds = sep.is_some_and(proves_distinct);
+    let holds = sep.is_some_and(Extreme::proves_distinct);
     let (n, of) = r.unrestricted_no_real;
     let mut out = b
         .claim(claim)
@@ -159,7 +152,7 @@ fn discriminant_result(
         .computed("two distinct real solutions at every exact view rounding to the figure (proven)", Value::flag(holds))
         .tolerance(Tolerance::bound(0.0, ToleranceSource::Propagated, "the two solutions' separation in c² is not 0 at any exact view of the printed body whose coordinates round to the figure (half a unit of each printed digit): proven by branch-and-bound over every such view. On the paper's route Δ = α²·separation², and the separation is s·det with det the determinant of its Cramer step, so a separation away from 0 proves the route defined and Δ > 0 at every view"))
         .power(Power::mutant(n > 0, &format!("the same count over the unrestricted rounding box (projections no rigid body need produce) finds data with no real root: {n} of {of} samples")))
-        .method("at every exact view the body's squares solve eq. p3f3sqr; the other solution is v₂ = v₁ − (∇F₃(v₁)·n / nᵀAn) n on the line of the two linear differences (n = d₁ × d₂). Its c² separation from the body is bounded below by branch-and-bound over the views' nine free coordinates (per frame Q and R's first coordinate, R's second from rigidity), cells contracted to the rounding of R's second coordinate and bounded by interval centred forms; the bracket's upper end is attained at an exact view. Beside it: β² − 4αγ of the paper's quadratic α c⁴ + β c² + γ at the printed data, its change and the roots' to first order over the figure's rounding (Σₖ |∂/∂cₖ|·hₖ), and its distribution over seeded exact views")
+        .method("at every exact view the body's squares solve eq. p3f3sqr; the other solution is v₂ = v₁ − (∇F₃(v₁)·n / nᵀAn) n on the line of the two linear differences (n = d₁ × d₂). Its c² separation from the body is bracketed by branch-and-bound over the views' nine free coordinates (per frame Q and R's first coordinate, R's second from rigidity), cells contracted to the rounding of R's second coordinate and bounded by interval centred forms: the proven end bounds every view, the other end is attained at one. Beside it: β² − 4αγ of the paper's quadratic α c⁴ + β c² + γ at the printed data, its change and the roots' to first order over the figure's rounding (Σₖ |∂/∂cₖ|·hₖ), and its distribution over seeded exact views")
         .detail("smallest discriminant over the sampled exact views", r.discriminant_spread.0)
         .detail("discriminant over the sampled exact views: 5 / 50 / 95 %", Value::reals(&r.discriminant_spread.1));
     if let Some(e) = sep {
@@ -173,7 +166,7 @@ fn discriminant_result(
                 e.attained
                     .map_or(Value::label("no view found"), Value::from),
             )
-            .detail("cells bounded", Value::count_of(e.cells, CELL_BUDGET));
+            .detail("cells bounded", e.cells);
     }
     if let Some(d) = &r.discriminant {
         out = out
@@ -218,22 +211,5 @@ mod tests {
         let acc = [[a(3.0), a(10.0), a(3.0)], [a(3.0), a(3.0), a(30.0)]];
         assert_eq!(widest_component(&acc), (1, 2));
         assert_eq!(widest_component(&acc[..1]), (0, 1));
-    }
-
-    #[test]
-    fn distinct_solutions_need_a_proven_bound_on_the_side_of_a_view() {
-        let e = |proven: f64, attained: Option<f64>| Extreme {
-            proven,
-            attained,
-            at: None,
-            cells: 1,
-            closed: true,
-        };
-        assert!(proves_distinct(&e(0.01, Some(0.1))));
-        assert!(proves_distinct(&e(-0.01, Some(-0.1))));
-        // a bracket reaching 0, a view on the other side, or no view at all
-        assert!(!proves_distinct(&e(0.0, Some(0.1))));
-        assert!(!proves_distinct(&e(-0.01, Some(0.1))));
-        assert!(!proves_distinct(&e(0.01, None)));
     }
 }

@@ -16,7 +16,8 @@ pub trait Scalar:
     fn constant(x: f64) -> Self;
     /// 1 / x, `None` where it is not defined (0, or an interval containing 0).
     fn recip(self) -> Option<Self>;
-    /// √x, `None` where it is not defined (x < 0; for a gradient, an interval reaching 0).
+    /// √x, `None` where it is not defined: x < 0; for an interval, all of it below 0 (√ of
+    /// its part at or above 0 otherwise); for a gradient, a range reaching 0.
     fn sqrt(self) -> Option<Self>;
 }
 
@@ -95,6 +96,7 @@ impl<'a, const N: usize> Grad<'a, N> {
             for (g, o) in grad.iter().zip(off) {
                 e = e + *g * *o;
             }
+            // both enclose the range: disjoint only through a NaN, which the naive one keeps
             e.intersect(naive).unwrap_or(naive)
         });
         Grad {

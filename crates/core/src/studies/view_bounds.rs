@@ -1,7 +1,7 @@
-//! Proven bounds over every exact view of a three-point body that rounds to a three-frame
-//! figure (§2's example): how far apart the two solutions of eq. p3f3sqr stay, and the range
-//! of each solution's components. [`super::exact_views`] samples these views; this module
-//! encloses them, by branch-and-bound over interval enclosures.
+//! A proven bound over every exact view of a three-point body that rounds to a three-frame
+//! figure (§2's example): how far apart the two solutions of eq. p3f3sqr stay.
+//! [`super::exact_views`] samples these views; this module encloses them, by
+//! branch-and-bound over interval enclosures.
 //!
 //! With P at the origin, a frame's view is fixed by Q = (qx, qy) and R's first coordinate
 //! rx: rigidity (Q·R = (a² + c² − b²)/2 with the depths √(a² − |q|²) and ±√(c² − |r|²))
@@ -14,16 +14,17 @@
 //! p3f3sqr holds for true lengths). The other solution lies on the line of the two linear
 //! differences, of direction n = d₁ × d₂ (dᵢ the coefficients of Fᵢ − F₃), and F₃ along it,
 //! F₃(v₁ + s n) = s ∇F₃(v₁)·n + s² nᵀAn (A the matrix of F's quadratic part), gives
-//! v₂ = v₁ − (∇F₃(v₁)·n / nᵀAn) n. The paper's route divides by a determinant that varies by
-//! about half its size over the figure's rounding; n·∇F₃ and nᵀAn vary by a quarter and stay
-//! far from 0, which is why the enclosure goes through them. The separation of the two in c²
-//! is √Δ/|α| on the paper's route, so a positive lower bound on it is a positive discriminant
-//! wherever the route is defined.
+//! v₂ = v₁ − (∇F₃(v₁)·n / nᵀAn) n: no division by the determinant n_z of the paper's
+//! Cramer step, which can vary by a large part of itself over a figure's rounding. The
+//! separation of the two in c², s·n_z, is √Δ/|α| on the paper's route, so a bound away from
+//! 0 proves at every view both that the route is defined and that Δ > 0.
 //!
 //! A cell of free coordinates is first contracted to the part whose ry can round to the
-//! figure (or dropped), then bounded by the centred form ([`Grad`]) of v₂. A cell's midpoint
-//! whose ry provably rounds to the figure is an exact view, so every extreme comes with a
-//! bracket: a proven end, and an end attained at a view.
+//! figure (or dropped), then bounded by the centred form ([`Grad`]) of the separation. A
+//! cell's midpoint whose coordinates provably round to the figure is an exact view, so the
+//! bound comes with a bracket: a proven end, and an end attained at a view. Where a cell
+//! meets the edge of the views (a depth or ry's square root reaching 0) its slope has no
+//! enclosure; such a cell is split until the budget ends, and the bracket stays open.
 
 use std::cmp::Ordering;
 use std::collections::BinaryHeap;
@@ -35,30 +36,25 @@ use crate::studies::rounding::RoundingBox;
 /// Free coordinates: (qx, qy, rx) per frame.
 const VARS: usize = 9;
 
-/// Cells bounded per optimisation before it reports the bracket it has reached.
+/// Cells bounded per search before it reports the bracket it has reached.
 pub const CELL_BUDGET: usize = 100_000;
-
-/// What is bounded.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Objective {
-    /// c² of the other solution minus the body's c² (±√Δ/|α| on the paper's route).
-    Separation,
-    /// Component 0, 1, 2 (a², b², c²) of the other solution.
-    Component(usize),
-}
 
 /// The three frames' rounding boxes in the free coordinates, and the body.
 #[derive(Clone, Debug)]
 pub struct Views {
-    /// Per frame: qx, qy, rx, ry as intervals (the figure's rounding).
+    /// Per frame: qx, qy, rx, ry as intervals (the figure's rounding, rounded outward).
     frames: [[Interval; 4]; 3],
+    /// The same boxes rounded inward: a point inside rounds to the figure.
+    inner: [[Interval; 4]; 3],
     /// a², b², c² (PQ², QR², RP²).
     body: [f64; 3],
 }
 
-/// A bracket of a minimum (or maximum) over the exact views.
+/// A bracket of the separation's minimum (or maximum) over the exact views.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Extreme {
+    /// Whether this brackets the maximum (the other solution below the body).
+    pub maximum: bool,
     /// The proven bound: no exact view goes below it (above it, for a maximum).
     pub proven: f64,
     /// The value's enclosure at the best exact view found, its far end (`None`: no cell's
@@ -68,25 +64,45 @@ pub struct Extreme {
     pub at: Option<Vec<f64>>,
     /// Cells bounded.
     pub cells: usize,
-    /// Whether the bracket closed as asked within [`CELL_BUDGET`].
-    pub closed: bool,
+}
+
+impl Extreme {
+    /// Whether the bracket proves the two solutions distinct at every view: its proven end
+    /// strictly on the far side of 0 from the other end, and a view found.
+    pub fn proves_distinct(&self) -> bool {
+        self.attained.is_some()
+            && if self.maximum {
+                self.proven < 0.0
+            } else {
+                self.proven > 0.0
+            }
+    }
 }
 
 impl Views {
     /// The views of `body` (a², b², c²) rounding to `figure` (three frames of P, Q, R with
     /// P at the exact origin); `None` for another layout.
     pub fn new(figure: &RoundingBox, body: [f64; 3]) -> Option<Views> {
-        let p_exact = figure.center.len() == 18
-            && (0..3).all(|f| {
-                (0..2).all(|k| figure.center[6 * f + k] == 0.0 && figure.half[6 * f + k] == 0.0)
-            });
-        let frames = std::array::from_fn(|f| {
-            std::array::from_fn(|k| {
-                let i = (6 * f + 2 + k).min(figure.center.len().saturating_sub(1));
-                Interval::around(figure.center[i], figure.half[i])
-            })
-        });
-        p_exact.then_some(Views { frames, body })
+        let (c, h) = (&figure.center, &figure.half);
+        let layout = c.len() == 18
+            && h.len() == 18
+            && (0..3).all(|f| (0..2).all(|k| c[6 * f + k] == 0.0 && h[6 * f + k] == 0.0));
+        if !layout {
+            return None;
+        }
+        let at = |f: usize, k: usize| (c[6 * f + 2 + k], h[6 * f + 2 + k]);
+        // two steps inward cover the rounding of c ± h itself
+        let inward = |(c, h): (f64, f64)| Interval {
+            lo: (c - h).next_up().next_up(),
+            hi: (c + h).next_down().next_down(),
+        };
+        Some(Views {
+            frames: std::array::from_fn(|f| {
+                std::array::from_fn(|k| Interval::around(at(f, k).0, at(f, k).1))
+            }),
+            inner: std::array::from_fn(|f| std::array::from_fn(|k| inward(at(f, k)))),
+            body,
+        })
     }
 
     /// The box of the free coordinates.
@@ -107,17 +123,21 @@ impl Views {
     }
 
     /// Shrink frame `f`'s cell `x` (qx, qy, rx) to enclose every point whose ry on branch
-    /// `plus` rounds to the figure; `None` when there is none. By the mean value theorem,
-    /// ry(x) = ry(m) + Σᵢ ∂ᵢry(ξ)(xᵢ − mᵢ) with ξ in the cell, so ry(x) in its box bounds each
-    /// xₖ − mₖ by (box − ry(m) − Σ_{i≠k} ∂ᵢry(X)(Xᵢ − mᵢ)) / ∂ₖry(X).
+    /// `plus` rounds to the figure; `None` when there is provably none. By the mean value
+    /// theorem, ry(x) = ry(m) + Σᵢ ∂ᵢry(ξ)(xᵢ − mᵢ) with ξ in the cell, so ry(x) in its box
+    /// bounds each xₖ − mₖ by (box − ry(m) − Σ_{i≠k} ∂ᵢry(X)(Xᵢ − mᵢ)) / ∂ₖry(X).
     fn contract(&self, x: &mut [Interval; 3], plus: bool, f: usize) -> Option<()> {
         let target = self.frames[f][3];
         let mid: [f64; 3] = x.map(|i| i.mid());
         let off: [Interval; 3] = std::array::from_fn(|i| x[i] - Interval::point(mid[i]));
         let vars: [Grad<3>; 3] = std::array::from_fn(|i| Grad::variable(&mid, &off, i));
         let Some(ry) = self.ry(vars, plus) else {
-            // no enclosure of the slope: only the naive test
-            return self.ry(*x, plus)?.intersect(target).map(|_| ());
+            // no enclosure of the slope: drop the cell only when its ry provably misses the
+            // box (an undefined enclosure proves nothing: keep it whole)
+            return match self.ry(*x, plus) {
+                Some(r) => r.intersect(target).map(|_| ()),
+                None => Some(()),
+            };
         };
         ry.range().intersect(target)?;
         for k in 0..3 {
@@ -134,8 +154,9 @@ impl Views {
         Some(())
     }
 
-    /// The objective at free coordinates `x` on the branches `plus`.
-    fn value<T: Scalar>(&self, x: &[T; VARS], plus: [bool; 3], obj: Objective) -> Option<T> {
+    /// The other solution's c² minus the body's, s·n_z, at free coordinates `x` on the
+    /// branches `plus`.
+    fn separation_at<T: Scalar>(&self, x: &[T; VARS], plus: [bool; 3]) -> Option<T> {
         let mut t = [[T::constant(0.0); 4]; 3];
         for (f, tf) in t.iter_mut().enumerate() {
             let (qx, qy, rx) = (x[3 * f], x[3 * f + 1], x[3 * f + 2]);
@@ -149,29 +170,26 @@ impl Views {
             d1[2] * d2[0] - d1[0] * d2[2],
             d1[0] * d2[1] - d1[1] * d2[0],
         ];
-        let v1 = self.body.map(T::constant);
-        let g = frame_slope(&t[2], v1);
+        let g = frame_slope(&t[2], self.body.map(T::constant));
         let two = T::constant(2.0);
         let quadric = n[0] * n[0] + n[1] * n[1] + n[2] * n[2]
             - two * (n[0] * n[1] + n[0] * n[2] + n[1] * n[2]);
         let s = -(g[0] * n[0] + g[1] * n[1] + g[2] * n[2]) * quadric.recip()?;
-        Some(match obj {
-            Objective::Separation => s * n[2],
-            Objective::Component(e) => v1[e] + s * n[e],
-        })
+        Some(s * n[2])
     }
 
-    /// The flat coordinates (P, Q, R per frame) at free coordinates `m`, when every frame's
-    /// ry there provably rounds to the figure.
+    /// The flat coordinates (P, Q, R per frame) at free coordinates `m`, when every one of
+    /// them provably rounds to the figure.
     fn view_at(&self, m: &[f64; VARS], plus: [bool; 3]) -> Option<Vec<f64>> {
         let mut out = Vec::with_capacity(18);
-        for (f, frame) in self.frames.iter().enumerate() {
-            let q = [m[3 * f], m[3 * f + 1], m[3 * f + 2]].map(Interval::point);
-            let ry = self.ry(q, plus[f])?;
-            if !ry.within(&frame[3]) {
+        for (f, inner) in self.inner.iter().enumerate() {
+            let q = [m[3 * f], m[3 * f + 1], m[3 * f + 2]];
+            let ry = self.ry(q.map(Interval::point), plus[f])?;
+            let fits = (0..3).all(|k| inner[k].contains(q[k])) && ry.within(&inner[3]);
+            if !fits {
                 return None;
             }
-            out.extend([0.0, 0.0, m[3 * f], m[3 * f + 1], m[3 * f + 2], ry.mid()]);
+            out.extend([0.0, 0.0, q[0], q[1], q[2], ry.mid()]);
         }
         Some(out)
     }
@@ -189,8 +207,7 @@ struct Cell {
     x: [Interval; VARS],
     plus: [bool; 3],
     lower: f64,
-    /// Per coordinate: the width times the solutions' largest slope (the split goes to the
-    /// largest).
+    /// Per coordinate: the width times the largest |∂f/∂xᵢ| (the split goes to the largest).
     weight: [f64; VARS],
 }
 
@@ -212,10 +229,9 @@ impl Ord for Cell {
     }
 }
 
-/// One minimisation of `sign` × the objective: its state between cells.
+/// One minimisation of `sign` × the separation: its state between cells.
 struct Search<'a> {
     views: &'a Views,
-    obj: Objective,
     sign: f64,
     best: f64,
     at: Option<Vec<f64>>,
@@ -235,28 +251,36 @@ impl Search<'_> {
         let mid: [f64; VARS] = x.map(|i| i.mid());
         let off: [Interval; VARS] = std::array::from_fn(|i| x[i] - Interval::point(mid[i]));
         let vars: [Grad<VARS>; VARS] = std::array::from_fn(|i| Grad::variable(&mid, &off, i));
-        let grad = self.views.value(&vars, plus, self.obj);
+        let grad = self.views.separation_at(&vars, plus);
         if let (Some(g), Some(p)) = (grad, self.views.view_at(&mid, plus)) {
             let far = if self.sign > 0.0 { g.mid.hi } else { -g.mid.lo };
             if far < self.best {
                 (self.best, self.at) = (far, Some(p));
             }
         }
-        let Some(g) = grad else {
+        let (lower, weight) = match grad {
+            Some(g) => {
+                let v = g.range();
+                let w = std::array::from_fn(|i| {
+                    x[i].width() * g.grad[i].lo.abs().max(g.grad[i].hi.abs())
+                });
+                (if self.sign > 0.0 { v.lo } else { -v.hi }, w)
+            }
             // not enclosed: no bound, split by relative width
-            let root = self.views.root();
-            let weight = std::array::from_fn(|i| x[i].width() / root[i].width());
-            return Some(Cell {
-                x,
-                plus,
-                lower: f64::NEG_INFINITY,
-                weight,
-            });
+            None => {
+                let root = self.views.root();
+                (
+                    f64::NEG_INFINITY,
+                    std::array::from_fn(|i| x[i].width() / root[i].width()),
+                )
+            }
         };
-        let v = g.range();
-        let lower = if self.sign > 0.0 { v.lo } else { -v.hi };
-        let weight =
-            std::array::from_fn(|i| x[i].width() * g.grad[i].lo.abs().max(g.grad[i].hi.abs()));
+        // a bound lost to overflow bounds nothing
+        let lower = if lower.is_nan() {
+            f64::NEG_INFINITY
+        } else {
+            lower
+        };
         Some(Cell {
             x,
             plus,
@@ -278,21 +302,12 @@ impl Search<'_> {
     }
 }
 
-/// When an optimisation has its answer.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Until {
-    /// The bracket is at most this wide.
-    Gap(f64),
-    /// The side of this value is known: the proven end beyond it, or a view on its near side.
-    Decided(f64),
-}
-
-/// The minimum (`sign` = 1) or maximum (`sign` = −1) of `obj` over the exact views, its
-/// bracket closed `until` it answers or as far as [`CELL_BUDGET`] allows.
-pub fn extreme(views: &Views, obj: Objective, sign: f64, until: Until) -> Extreme {
+/// The minimum (`sign` = 1) or maximum (`sign` = −1) of the separation over the exact views,
+/// bracketed until the side of 0 is known (the proven end beyond 0, or a view on the near
+/// side) or [`CELL_BUDGET`] runs out.
+fn extreme(views: &Views, sign: f64) -> Extreme {
     let mut s = Search {
         views,
-        obj,
         sign,
         best: f64::INFINITY,
         at: None,
@@ -303,15 +318,10 @@ pub fn extreme(views: &Views, obj: Objective, sign: f64, until: Until) -> Extrem
         let plus = [b & 1 != 0, b & 2 != 0, b & 4 != 0];
         heap.extend(s.bound(views.root(), plus));
     }
-    let mut closed = false;
+    // the heap's top holds the smallest lower bound of all
     while let Some(c) = heap.pop() {
-        // the heap's top holds the smallest lower bound of all
-        let answered = match until {
-            Until::Gap(g) => s.best - c.lower <= g,
-            Until::Decided(t) => sign * t < c.lower || s.best <= sign * t,
-        };
-        if answered || s.cells >= CELL_BUDGET {
-            closed = answered;
+        // a proven side needs a view too: an empty set would prove it vacuously
+        if (c.lower > 0.0 && s.at.is_some()) || s.best <= 0.0 || s.cells + 2 > CELL_BUDGET {
             heap.push(c);
             break;
         }
@@ -324,28 +334,23 @@ pub fn extreme(views: &Views, obj: Objective, sign: f64, until: Until) -> Extrem
     // an empty heap: every cell dropped or beaten, the best view is the extreme
     let lower = heap.peek().map_or(s.best, |c| c.lower.min(s.best));
     Extreme {
+        maximum: sign < 0.0,
         proven: sign * lower,
         attained: s.at.is_some().then_some(sign * s.best),
         at: s.at,
         cells: s.cells,
-        closed: closed || heap.is_empty(),
     }
 }
 
-/// The distance in c² from the body to the other solution nearest 0 over the exact views,
-/// bracketed until its sign is proven. It is s·n_z with n_z the determinant of the paper's
-/// Cramer step, so a bracket away from 0 proves at every view both that the route is
-/// defined and that its quadratic has two distinct real roots.
+/// The separation in c² of the other solution from the body nearest 0 over the exact
+/// views: the minimum's bracket when the other solution is proven above the body, else the
+/// maximum's (`cells` counts both searches).
 pub fn separation(views: &Views) -> Extreme {
-    // the other solution above the body in c², or below it
-    let d = extreme(views, Objective::Separation, 1.0, Until::Decided(0.0));
-    if d.proven > 0.0 {
-        return d;
+    let above = extreme(views, 1.0);
+    if above.proves_distinct() {
+        return above;
     }
-    let below = extreme(views, Objective::Separation, -1.0, Until::Decided(0.0));
-    if below.proven < 0.0 {
-        below
-    } else {
-        d
-    }
+    let mut below = extreme(views, -1.0);
+    below.cells += above.cells;
+    below
 }

@@ -29,6 +29,15 @@ fn division_and_roots_refuse_what_they_cannot_enclose() {
         .sqrt()
         .unwrap_or(Interval::point(f64::NAN));
     assert!(s.lo == 0.0 && s.contains(2.0));
+    // outward: the exact 1/3 and √2 lie strictly inside their enclosures
+    let t = Interval::point(3.0)
+        .recip()
+        .unwrap_or(Interval::point(f64::NAN));
+    assert!(t.lo < t.hi && t.lo * 3.0 <= 1.0 && t.hi * 3.0 >= 1.0);
+    let q = Interval::point(2.0)
+        .sqrt()
+        .unwrap_or(Interval::point(f64::NAN));
+    assert!(q.lo < q.hi && q.lo * q.lo <= 2.0 && q.hi * q.hi >= 2.0);
     let a = Interval::around(1.0, 1.0);
     assert_eq!(a.intersect(Interval::around(3.0, 0.5)), None);
     assert!(Interval::around(1.0, 0.5).within(&a) && !a.within(&Interval::around(1.0, 0.5)));

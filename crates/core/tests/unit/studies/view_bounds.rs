@@ -7,6 +7,7 @@ use orthocheck_core::model::{random_rotation, rng, squared_lengths};
 use orthocheck_core::studies::exact_views::{rigidity, solve_ry};
 use orthocheck_core::studies::rounding::RoundingBox;
 use orthocheck_core::studies::view_bounds::*;
+use rand::Rng;
 
 /// A triangle's squares (PQ², QR², RP²) and three seeded views of it rounded to two
 /// decimals, P at the exact origin.
@@ -34,31 +35,27 @@ fn figure(seed: u64) -> ([f64; 3], RoundingBox) {
     (body, RoundingBox { center, half })
 }
 
-/// Seeded exact views rounding to the figure: per frame (qx, qy, rx) uniform, ry solved.
+/// Seeded exact views rounding to the figure: per frame (qx, qy, rx) uniform until ry,
+/// solved, lands in its rounding.
 fn samples(body: [f64; 3], b: &RoundingBox, n: usize) -> Vec<Vec<f64>> {
     let mut g = rng(7);
     let mut out = Vec::new();
-    'draw: for _ in 0..100 * n {
+    'sample: for _ in 0..n {
         let mut x = b.center.clone();
         for f in 0..3 {
-            let u = |g: &mut _, k: usize| {
-                b.center[k] + rand::Rng::random_range(g, -b.half[k]..=b.half[k])
-            };
-            let (qx, qy, rx) = (
-                u(&mut g, 6 * f + 2),
-                u(&mut g, 6 * f + 3),
-                u(&mut g, 6 * f + 4),
-            );
-            let (c, h) = (b.center[6 * f + 5], b.half[6 * f + 5]);
-            let Some(y) = solve_ry(body, [qx, qy], rx, c - h, c + h).first().copied() else {
-                continue 'draw;
-            };
-            x[6 * f + 2..6 * f + 6].copy_from_slice(&[qx, qy, rx, y]);
+            let view = (0..10_000).find_map(|_| {
+                let mut u = |k: usize| b.center[k] + g.random_range(-b.half[k]..=b.half[k]);
+                let (qx, qy, rx) = (u(6 * f + 2), u(6 * f + 3), u(6 * f + 4));
+                let (c, h) = (b.center[6 * f + 5], b.half[6 * f + 5]);
+                let y = solve_ry(body, [qx, qy], rx, c - h, c + h)
+                    .first()
+                    .copied()?;
+                Some([qx, qy, rx, y])
+            });
+            let Some(v) = view else { break 'sample };
+            x[6 * f + 2..6 * f + 6].copy_from_slice(&v);
         }
         out.push(x);
-        if out.len() == n {
-            break;
-        }
     }
     out
 }
@@ -93,7 +90,7 @@ fn a_proven_positive_separation_is_below_every_sampled_view() {
     let (body, b) = figure(9);
     let v = Views::new(&b, body).unwrap_or_else(|| unreachable!());
     let e = separation(&v);
-    assert!(e.closed && e.proven > 0.0, "{e:?}");
+    assert!(e.proves_distinct() && !e.maximum && e.proven > 0.0, "{e:?}");
     let views = samples(body, &b, 300);
     assert_eq!(views.len(), 300);
     for x in &views {
@@ -108,9 +105,14 @@ fn a_proven_negative_separation_is_above_every_sampled_view_and_attained_at_one(
     let v = Views::new(&b, body).unwrap_or_else(|| unreachable!());
     let e = separation(&v);
     let attained = e.attained.unwrap_or(f64::NAN);
-    assert!(e.closed && e.proven < 0.0 && attained <= e.proven, "{e:?}");
-    for x in samples(body, &b, 30) {
-        let s = sampled_separation(body, &x);
+    assert!(
+        e.proves_distinct() && e.maximum && attained <= e.proven,
+        "{e:?}"
+    );
+    let views = samples(body, &b, 30);
+    assert_eq!(views.len(), 30);
+    for x in &views {
+        let s = sampled_separation(body, x);
         assert!(s <= e.proven, "sampled {s} above the proven {}", e.proven);
     }
     // the attained end is an exact view inside the figure's rounding
@@ -133,26 +135,44 @@ fn a_proven_negative_separation_is_above_every_sampled_view_and_attained_at_one(
 }
 
 #[test]
-fn a_component_bracket_encloses_every_sampled_view() {
-    let (body, b) = figure(9);
+fn a_separation_taking_both_signs_proves_nothing() {
+    // seed 11: the sampled views put the other solution on both sides of the body in c²
+    let (body, b) = figure(11);
+    let s: Vec<f64> = samples(body, &b, 300)
+        .iter()
+        .map(|x| sampled_separation(body, x))
+        .collect();
+    assert!(s.iter().any(|v| *v > 0.0) && s.iter().any(|v| *v < 0.0));
     let v = Views::new(&b, body).unwrap_or_else(|| unreachable!());
-    let lo = extreme(&v, Objective::Component(0), 1.0, Until::Gap(0.5));
-    let hi = extreme(&v, Objective::Component(0), -1.0, Until::Gap(0.5));
-    assert!(lo.closed && hi.closed);
-    for x in samples(body, &b, 200) {
-        let a2 = other(body, &x).map_or(f64::NAN, |o| o[0]);
-        assert!(
-            lo.proven <= a2 && a2 <= hi.proven,
-            "{a2} outside [{}, {}]",
-            lo.proven,
-            hi.proven
-        );
-    }
+    assert!(!separation(&v).proves_distinct());
 }
 
 #[test]
-fn a_figure_without_p_at_the_exact_origin_has_no_views() {
+fn distinct_solutions_need_a_proven_bound_beyond_0_and_a_view() {
+    let e = |maximum: bool, proven: f64, attained: Option<f64>| Extreme {
+        maximum,
+        proven,
+        attained,
+        at: None,
+        cells: 1,
+    };
+    assert!(e(false, 0.01, Some(0.1)).proves_distinct());
+    assert!(e(true, -0.01, Some(-0.1)).proves_distinct());
+    // a minimum's bound below 0 proves nothing, whatever view was found
+    assert!(!e(false, -0.1, Some(-0.01)).proves_distinct());
+    assert!(!e(false, 0.0, Some(0.1)).proves_distinct());
+    assert!(!e(true, 0.01, Some(0.1)).proves_distinct());
+    assert!(!e(false, 0.01, None).proves_distinct());
+}
+
+#[test]
+fn a_figure_without_p_at_the_exact_origin_or_of_another_size_has_no_views() {
     let (body, mut b) = figure(9);
     b.half[0] = 0.005;
     assert!(Views::new(&b, body).is_none());
+    let empty = RoundingBox {
+        center: Vec::new(),
+        half: Vec::new(),
+    };
+    assert!(Views::new(&empty, body).is_none());
 }
