@@ -423,6 +423,16 @@ impl<'de> serde::Deserialize<'de> for Claims {
     }
 }
 
+impl Claims {
+    /// A scalar that may be a `claim:` value.
+    fn scalar(text: String) -> Claims {
+        Claims {
+            text: Some(text),
+            ..Claims::default()
+        }
+    }
+}
+
 struct ClaimsVisitor;
 
 impl<'de> serde::de::Visitor<'de> for ClaimsVisitor {
@@ -432,22 +442,21 @@ impl<'de> serde::de::Visitor<'de> for ClaimsVisitor {
         f.write_str("any YAML value")
     }
     fn visit_str<E>(self, v: &str) -> std::result::Result<Claims, E> {
-        Ok(Claims {
-            text: Some(v.to_string()),
-            ..Claims::default()
-        })
+        Ok(Claims::scalar(v.to_string()))
     }
     fn visit_bool<E>(self, _: bool) -> std::result::Result<Claims, E> {
         Ok(Claims::default())
     }
-    fn visit_i64<E>(self, _: i64) -> std::result::Result<Claims, E> {
-        Ok(Claims::default())
+    // a number where a name belongs (`claim: 12`) is read as a name by the case, so it is
+    // one here too: the inventory check then refuses it
+    fn visit_i64<E>(self, v: i64) -> std::result::Result<Claims, E> {
+        Ok(Claims::scalar(v.to_string()))
     }
-    fn visit_u64<E>(self, _: u64) -> std::result::Result<Claims, E> {
-        Ok(Claims::default())
+    fn visit_u64<E>(self, v: u64) -> std::result::Result<Claims, E> {
+        Ok(Claims::scalar(v.to_string()))
     }
-    fn visit_f64<E>(self, _: f64) -> std::result::Result<Claims, E> {
-        Ok(Claims::default())
+    fn visit_f64<E>(self, v: f64) -> std::result::Result<Claims, E> {
+        Ok(Claims::scalar(v.to_string()))
     }
     fn visit_unit<E>(self) -> std::result::Result<Claims, E> {
         Ok(Claims::default())

@@ -25,8 +25,19 @@ pub fn default_edge_names(count: usize) -> Vec<String> {
     edges(p)
         .iter()
         .take(count)
-        .map(|&(i, j)| format!("{}{}", names[i], names[j]))
+        .map(|&(i, j)| edge_name(&names[i], &names[j]))
         .collect()
+}
+
+/// The name of the edge between points named `a` and `b`: "PQ" for one-letter names, "A1–B"
+/// once either is longer, where joined names would run together ("AB" and "C" against "A"
+/// and "BC", or "inf" and "NaN" reading as two numbers).
+pub fn edge_name(a: &str, b: &str) -> String {
+    if a.chars().count() == 1 && b.chars().count() == 1 {
+        format!("{a}{b}")
+    } else {
+        format!("{a}–{b}")
+    }
 }
 
 /// Projected squared lengths of every edge in every frame.
@@ -83,7 +94,7 @@ impl SquaredLengths {
     pub fn edge_names(&self) -> Vec<String> {
         self.edges
             .iter()
-            .map(|&(i, j)| format!("{}{}", self.names[i], self.names[j]))
+            .map(|&(i, j)| edge_name(&self.names[i], &self.names[j]))
             .collect()
     }
 
@@ -182,7 +193,7 @@ pub fn feasibility(squares: &[f64], imag: &[f64], input: &SquaredLengths) -> Fea
     // names only for a violation: this runs for every solve
     let name = |e: usize| {
         let (i, j) = input.edges[e];
-        format!("{}{}", input.names[i], input.names[j])
+        edge_name(&input.names[i], &input.names[j])
     };
     match first_violation(squares, input.frames.iter().map(|f| &f[..])) {
         None => Feasibility::Feasible,
