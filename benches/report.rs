@@ -1,7 +1,8 @@
 //! Speed goal of the whole report (every case, ≥ 10,000 trials per noise level, figures and
 //! the HTML page): < 5 s after a release build. Beside it the slowest case alone, §4's four
 //! points (the joint fit of one configuration to figure and table, refitted for 96 mutants),
-//! so that a regression there shows by itself.
+//! so that a regression there shows by itself, and §2's three frames (its exact views sampled,
+//! and the two solutions proven distinct over all of them).
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use orthocheck::cases;
@@ -21,20 +22,22 @@ fn report(c: &mut Criterion) {
             html::render(&r).len()
         })
     });
-    let ex4: Vec<_> = all
-        .iter()
-        .filter(|c| c.id == "ex4-four-points")
-        .cloned()
-        .collect();
-    assert_eq!(ex4.len(), 1, "the §4 case is among the paper cases");
-    g.bench_function("ex4_four_points", |b| {
-        b.iter(|| {
-            orthocheck::claims::run_paper(&ex4, &|_, _| {})
-                .expect("the §4 case runs")
-                .results
-                .len()
-        })
-    });
+    // §4's case (the slowest) and §2's (sampled exact views and the proof over all of them)
+    for (id, name) in [
+        ("ex4-four-points", "ex4_four_points"),
+        ("ex2-three-frames", "ex2_three_frames"),
+    ] {
+        let one: Vec<_> = all.iter().filter(|c| c.id == id).cloned().collect();
+        assert_eq!(one.len(), 1, "{id} is among the paper cases");
+        g.bench_function(name, |b| {
+            b.iter(|| {
+                orthocheck::claims::run_paper(&one, &|_, _| {})
+                    .expect("the case runs")
+                    .results
+                    .len()
+            })
+        });
+    }
     g.finish();
 }
 

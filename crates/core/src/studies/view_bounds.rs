@@ -36,8 +36,9 @@ use crate::studies::rounding::RoundingBox;
 /// Free coordinates: (qx, qy, rx) per frame.
 const VARS: usize = 9;
 
-/// Cells bounded per search before it reports the bracket it has reached.
-pub const CELL_BUDGET: usize = 100_000;
+/// Cells bounded per search before it reports the bracket it has reached: 0.2–0.34 ms a
+/// cell, about 4 s when both searches reach it (docs/limits.md); §2's figure needs 1,652.
+pub const CELL_BUDGET: usize = 10_000;
 
 /// The three frames' rounding boxes in the free coordinates, and the body.
 #[derive(Clone, Debug)]
