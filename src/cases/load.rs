@@ -344,12 +344,27 @@ fn inventory_claims(
             .iter()
             .find(|id| !super::refers_to_inventory(id, &ids))
         {
-            // the line of this `claim:` itself (plain or quoted)
-            let line = text.lines().position(|l| {
+            // the line of this `claim:` itself (plain or quoted); a value the YAML read as
+            // a number or a boolean is spelled otherwise in the file (`1.0`, `yes`): the first
+            // `claim:` value the inventory does not know
+            let value_at = |l: &str| {
                 let v = l.trim_start().trim_start_matches("- ");
                 v.strip_prefix("claim:")
-                    .is_some_and(|v| v.trim().trim_matches(['"', '\'']) == id.as_str())
-            });
+                    .map(|v| v.trim().trim_matches(['"', '\'']).to_string())
+            };
+            let line = text
+                .lines()
+                .position(|l| value_at(l).is_some_and(|v| v == *id))
+                .or_else(|| {
+                    text.lines().position(|l| {
+                        value_at(l)
+                            .is_some_and(|v| !v.is_empty() && !super::refers_to_inventory(&v, &ids))
+                    })
+                });
+            let id = line
+                .and_then(|l| text.lines().nth(l))
+                .and_then(value_at)
+                .unwrap_or_else(|| id.clone());
             return Err(Error::Input {
                 location: InputLocation {
                     file: p.clone(),
@@ -444,11 +459,11 @@ impl<'de> serde::de::Visitor<'de> for ClaimsVisitor {
     fn visit_str<E>(self, v: &str) -> std::result::Result<Claims, E> {
         Ok(Claims::scalar(v.to_string()))
     }
-    fn visit_bool<E>(self, _: bool) -> std::result::Result<Claims, E> {
-        Ok(Claims::default())
+    fn visit_bool<E>(self, v: bool) -> std::result::Result<Claims, E> {
+        Ok(Claims::scalar(v.to_string()))
     }
-    // a number where a name belongs (`claim: 12`) is read as a name by the case, so it is
-    // one here too: the inventory check then refuses it
+    // a number or a YAML 1.1 boolean where a name belongs (`claim: 12`, `claim: yes`) is
+    // read as a name by the case, so it is one here too: the inventory check refuses it
     fn visit_i64<E>(self, v: i64) -> std::result::Result<Claims, E> {
         Ok(Claims::scalar(v.to_string()))
     }

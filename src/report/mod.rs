@@ -259,9 +259,8 @@ pub fn synth_header(scene: &crate::model::Scene, seed: u64, noise: Option<f64>) 
         .iter()
         .map(|&(i, j)| {
             format!(
-                "{}{}={}",
-                b.names[i],
-                b.names[j],
+                "{}={}",
+                crate::derivations::solver::edge_name(&b.names[i], &b.names[j]),
                 crate::numfmt::sig(b.squared_distance(i, j))
             )
         })

@@ -199,7 +199,10 @@ fn frames_result(b: &ResultBuilder, case: &IdentityExampleCase, fit: &NamesFit) 
     for (col, x, y) in &fit.resolved {
         c = c.detail(
             &format!("column {} is", t.columns[*col]),
-            Value::label(format!("{}{}", t.point_names[*x], t.point_names[*y])),
+            Value::label(crate::derivations::solver::edge_name(
+                &t.point_names[*x],
+                &t.point_names[*y],
+            )),
         );
     }
     c.verdict(judge_names(fit.matched, fit.runner_up, n))

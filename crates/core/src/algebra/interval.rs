@@ -153,6 +153,13 @@ impl Mul for Interval {
             self.hi * o.lo,
             self.hi * o.hi,
         ];
+        // 0·∞ (an overflowed end) bounds nothing: min and max would drop the NaN
+        if p.iter().any(|v| v.is_nan()) {
+            return Interval {
+                lo: f64::NEG_INFINITY,
+                hi: f64::INFINITY,
+            };
+        }
         let lo = p.iter().copied().fold(f64::INFINITY, f64::min);
         let hi = p.iter().copied().fold(f64::NEG_INFINITY, f64::max);
         Interval::outward(lo, hi)

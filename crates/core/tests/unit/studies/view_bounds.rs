@@ -144,7 +144,13 @@ fn a_separation_taking_both_signs_proves_nothing() {
         .collect();
     assert!(s.iter().any(|v| *v > 0.0) && s.iter().any(|v| *v < 0.0));
     let v = Views::new(&b, body).unwrap_or_else(|| unreachable!());
-    assert!(!separation(&v).proves_distinct());
+    let e = separation(&v);
+    // decided by a view on the far side of 0, not by the budget
+    assert!(
+        !e.proves_distinct() && e.maximum && e.attained.is_some_and(|a| a >= 0.0),
+        "{e:?}"
+    );
+    assert!(e.cells < 2 * CELL_BUDGET);
 }
 
 #[test]
