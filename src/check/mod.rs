@@ -9,7 +9,7 @@ pub use points::{points_details, points_tolerance, prime_details};
 
 mod resolution;
 mod result;
-pub use resolution::{excluded_by, Resolution};
+pub use resolution::{alternative_verdict, excluded_by, Resolution};
 pub use result::{
     ClaimResult, Evidence, Power, PowerKind, Quantity, Real, Role, Tolerance, ToleranceSource,
     Value, Verdict,

@@ -32,6 +32,16 @@ pub fn excluded_by(regions: &[(f64, f64)], alternative: &[f64]) -> Option<usize>
         .position(|(&(lo, hi), &v)| !(lo <= v && v <= hi))
 }
 
+/// A positive verdict stands only when the check excludes the nearest alternative; one that
+/// accepts it could not tell the claim from its alternative.
+pub fn alternative_verdict(v: super::Verdict, excluded: bool) -> super::Verdict {
+    if v.is_positive() && !excluded {
+        super::Verdict::Inconclusive
+    } else {
+        v
+    }
+}
+
 impl Resolution {
     /// The resolution of `[lo, hi]` around `printed`, whose half unit is `half_unit`; `None`
     /// when an end is not finite or the printed value is 0 (it has no significant digit).

@@ -6,8 +6,8 @@ use crate::algebra::Interval;
 use crate::cases::Printed;
 use crate::check::figure::{central_window, thin, Figure, Layer, Plot, Shape, Style};
 use crate::check::{
-    excluded_by, ClaimBuilder, ClaimResult, Power, ResultBuilder, Tolerance, ToleranceSource,
-    Value, Verdict,
+    alternative_verdict, excluded_by, ClaimBuilder, ClaimResult, Power, ResultBuilder, Tolerance,
+    ToleranceSource, Value, Verdict,
 };
 use crate::claims::p3f3_example::restricted as p3f3_restricted;
 use crate::claims::p3f3_example::study::{self as ex2, ExampleStudy};
@@ -96,16 +96,6 @@ pub(super) fn with_alternative<'b>(
         r = r.undecided("the accepted regions of a solution's components hold the other solution: the check cannot tell the two apart");
     }
     (r, excluded)
-}
-
-/// A positive verdict stands only when the check excludes the nearest alternative; one that
-/// accepts it could not tell the claim from its alternative.
-pub(super) fn alternative_verdict(v: Verdict, excluded: bool) -> Verdict {
-    if v.is_positive() && !excluded {
-        Verdict::Inconclusive
-    } else {
-        v
-    }
 }
 
 /// The acceptance interval of one search as a power statement: weak when it reaches beyond

@@ -87,7 +87,7 @@ fn restricted_result(
     } else {
         Verdict::Contradicted
     };
-    out.verdict(super::judge::alternative_verdict(v, excluded))
+    out.verdict(crate::check::alternative_verdict(v, excluded))
 }
 
 /// The samples' part of the evidence: the draws per frame, the spread of the roots over the

@@ -52,16 +52,25 @@ pub(super) struct Shared<'a> {
     pub half: &'a [[f64; 7]],
 }
 
+/// The paper's system built from the figure's printed digits and solved, against the
+/// printed x.
+pub(super) fn figure_system_of(case: &P4f3ExampleCase, s: &Shared) -> FigureSystem {
+    let x: Vec<f64> = case.solution.values[0]
+        .iter()
+        .map(Printed::to_f64)
+        .collect();
+    figure_system(s.figure_box, &x, s.rows, s.half)
+}
+
 pub(super) fn figure_system_result(
     b: &ResultBuilder,
     case: &P4f3ExampleCase,
-    s: &Shared,
+    fs: &FigureSystem,
 ) -> Option<ClaimResult> {
     let claim = case.figure_system.as_ref()?;
     let xs = &case.solution.values[0];
     let x: Vec<f64> = xs.iter().map(Printed::to_f64).collect();
     let sdig = case.solution.significant_digits;
-    let fs: FigureSystem = figure_system(s.figure_box, &x, s.rows, s.half);
     let holds = within_bounds(&fs.relative, &fs.relative_bound);
     // the widest unknown: its acceptance interval against the printed x's half unit
     let k = (0..fs.relative_bound.len())

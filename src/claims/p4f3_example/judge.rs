@@ -5,7 +5,10 @@
 use crate::cases::Printed;
 use crate::check::figure::{Figure, Layer, Plot, Shape, Style};
 use crate::check::Role;
-use crate::check::{ClaimResult, Power, ResultBuilder, Tolerance, ToleranceSource, Value, Verdict};
+use crate::check::{
+    alternative_verdict, excluded_by, ClaimBuilder, ClaimResult, Power, ResultBuilder, Tolerance,
+    ToleranceSource, Value, Verdict,
+};
 use crate::claims::p4f3_example::joint as p4f3_joint;
 use crate::claims::p4f3_example::study::{self as ex4, Conditioning, FigureFit, SolutionCheck};
 use crate::claims::p4f3_example::P4f3ExampleCase;
@@ -87,7 +90,8 @@ pub(super) fn check(b: &ResultBuilder, case: &P4f3ExampleCase) -> Result<Vec<Cla
         p4f3_joint::body_result(b, case, &shared),
         figure_result(b, case, &fit, &sq_half),
     ];
-    out.extend(p4f3_joint::figure_system_result(b, case, &shared));
+    let fs = p4f3_joint::figure_system_of(case, &shared);
+    out.extend(p4f3_joint::figure_system_result(b, case, &fs));
     figure(b, case, &figure_box, &fit);
     let audit = printed_matrix::audit(&printed_matrix::PrintedSystem {
         figure_box: &figure_box,
@@ -108,7 +112,7 @@ pub(super) fn check(b: &ResultBuilder, case: &P4f3ExampleCase) -> Result<Vec<Cla
         .map(|r| r.iter().map(|p| p.value.clone()).collect())
         .collect();
     let sol = ex4::solution_check(&aq, &rh, &x, &xh);
-    out.push(solution_result(b, case, &sol, &x, &xh));
+    out.push(solution_result(b, case, &sol, (&x, &xh), fs.x.as_ref()));
     let levels: Vec<f64> = case.noise.iter().map(|l| l.level.to_f64()).collect();
     let cond = fit
         .witness
@@ -293,12 +297,15 @@ fn matrix_result(b: &ResultBuilder, case: &P4f3ExampleCase, a: &Audit) -> ClaimR
     r.verdict(matrix_verdict(a.witness.is_some()))
 }
 
+/// `ex4-solution`: the printed x against the printed matrix, and the named alternative it
+/// must exclude, the solution of the same system built from the figure's digits
+/// (`alternative`).
 fn solution_result(
     b: &ResultBuilder,
     case: &P4f3ExampleCase,
     s: &SolutionCheck,
-    x: &[f64],
-    xh: &[f64],
+    (x, xh): (&[f64], &[f64]),
+    alternative: Option<&[f64; 6]>,
 ) -> ClaimResult {
     let xs = &case.solution.values[0];
     let res_ok = all_within(&s.residuals, &s.residual_bounds);
@@ -318,7 +325,7 @@ fn solution_result(
     for p in xs {
         r = r.printed("x", p);
     }
-    r.computed("exact solution of the printed matrix over ℚ", Value::reals(&exact))
+    let r = r.computed("exact solution of the printed matrix over ℚ", Value::reals(&exact))
         .computed("printed x satisfies the printed matrix within its precision", Value::flag(res_ok))
         .computed("exact solution within the propagated precision of the printed x", Value::flag(solve_ok))
         .computed("x equals the table's squares digit for digit", Value::flag(table_equal))
@@ -329,8 +336,48 @@ fn solution_result(
         .detail("residual bounds", Value::reals(&s.residual_bounds))
         .detail("propagated bounds per unknown", Value::reals(&s.bounds))
         .detail("exact solution minus printed x", Value::reals(&diff))
-        .detail("condition number of the printed matrix", s.condition.unwrap_or(f64::INFINITY).min(f64::MAX))
-        .verdict(Verdict::holds(res_ok && solve_ok && table_equal))
+        .detail("condition number of the printed matrix", s.condition.unwrap_or(f64::INFINITY).min(f64::MAX));
+    let (r, excluded) = figure_alternative(r, &exact, &s.bounds, alternative);
+    r.verdict(alternative_verdict(
+        Verdict::holds(res_ok && solve_ok && table_equal),
+        excluded,
+    ))
+}
+
+/// The named alternative of `ex4-solution`: had the paper printed the solution of its system
+/// built from the figure's digits, would the check have told? Excluded when one unknown of
+/// it lies outside that unknown's accepted region (the exact solution ± its bound).
+fn figure_alternative<'b>(
+    mut r: ClaimBuilder<'b>,
+    exact: &[f64],
+    bounds: &[f64],
+    alternative: Option<&[f64; 6]>,
+) -> (ClaimBuilder<'b>, bool) {
+    let Some(alt) = alternative else {
+        return (r, true);
+    };
+    let regions: Vec<(f64, f64)> = exact
+        .iter()
+        .zip(bounds)
+        .map(|(c, h)| (c - h, c + h))
+        .collect();
+    let by = excluded_by(&regions, alt);
+    r = r.computed(
+        "alternative: the solution of the system built from the figure's digits",
+        Value::reals(alt),
+    );
+    match by {
+        Some(k) => {
+            r = r.computed(
+                "alternative excluded by",
+                Value::label(format!("x{}", k + 1)),
+            );
+        }
+        None => {
+            r = r.undecided("every unknown's accepted region holds the solution from the figure's digits: the check cannot tell the two apart");
+        }
+    }
+    (r, by.is_some())
 }
 
 fn conditioning_result(
