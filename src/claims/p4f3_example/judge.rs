@@ -353,6 +353,7 @@ fn figure_alternative<'b>(
     bounds: &[f64],
     alternative: Option<&[f64; 6]>,
 ) -> (ClaimBuilder<'b>, bool) {
+    // a singular system from the figure's digits has no solution to mistake for the printed x
     let Some(alt) = alternative else {
         return (r, true);
     };
