@@ -167,6 +167,14 @@ fn discriminant_result(
                     .map_or(Value::label("no view found"), Value::from),
             )
             .detail("cells bounded", e.cells);
+        if let Some(at) = &e.at {
+            // P is the origin of every frame: Q and R say where the view is
+            let qr: Vec<f64> = at.chunks(6).flat_map(|f| f[2..].to_vec()).collect();
+            out = out.detail(
+                "the view attaining it: Q and R per frame",
+                Value::reals(&qr),
+            );
+        }
     }
     if let Some(d) = &r.discriminant {
         out = out

@@ -55,7 +55,8 @@ impl Scalar for Interval {
 /// square root's argument) is not lost to the dependency of its own terms.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Grad<'a, const N: usize> {
-    /// The enclosure of the value over the cell.
+    /// The enclosure of the value over the cell: the naive one met with the mean-value
+    /// form, formed as each value is made.
     pub value: Interval,
     /// The enclosure of the value at the midpoint.
     pub mid: Interval,
@@ -63,6 +64,14 @@ pub struct Grad<'a, const N: usize> {
     pub grad: [Interval; N],
     /// X − m per variable (`None` for a constant).
     offsets: Option<&'a [Interval; N]>,
+}
+
+/// A cell's midpoint and each coordinate's offsets from it, X − m: what [`Grad::variables`]
+/// centres on.
+pub fn centre<const N: usize>(cell: &[Interval; N]) -> ([f64; N], [Interval; N]) {
+    let mid = cell.map(|i| i.mid());
+    let off = std::array::from_fn(|i| cell[i] - Interval::point(mid[i]));
+    (mid, off)
 }
 
 impl<'a, const N: usize> Grad<'a, N> {
@@ -78,10 +87,9 @@ impl<'a, const N: usize> Grad<'a, N> {
         }
     }
 
-    /// The centred range over the cell: the naive enclosure met with the mean-value form
-    /// (formed once, as each value is made).
-    pub fn range(&self) -> Interval {
-        self.value
+    /// Every variable x₁ … x_N of the cell that [`centre`] gave `mid` and `offsets`.
+    pub fn variables(mid: &[f64; N], offsets: &'a [Interval; N]) -> [Self; N] {
+        std::array::from_fn(|i| Grad::variable(mid, offsets, i))
     }
 
     /// A value from its naive range, midpoint value and gradient, its range centred.

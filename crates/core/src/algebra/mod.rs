@@ -21,7 +21,7 @@ pub mod ratfn;
 pub mod sturm;
 
 pub use diff::central_jacobian;
-pub use enclosure::{Grad, Scalar};
+pub use enclosure::{centre, Grad, Scalar};
 pub use float_roots::{
     closed_form_real, companion_roots, compare_methods, quadratic, quadratic_roots, EigenMethod,
     RootAgreement,

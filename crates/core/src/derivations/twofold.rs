@@ -259,13 +259,17 @@ impl FrameCoefficients {
     /// F(x, y, z).
     #[inline]
     pub fn eval(&self, x: f64, y: f64, z: f64) -> f64 {
-        frame_value(&[self.alpha, self.beta, self.gamma, self.k], [x, y, z])
+        x * x + y * y + z * z - 2.0 * x * y - 2.0 * x * z - 2.0 * y * z
+            + self.k
+            + 2.0 * self.alpha * x
+            + 2.0 * self.beta * y
+            + 2.0 * self.gamma * z
     }
 
     /// ∂F/∂(x, y, z) at (x, y, z).
     #[inline]
     pub fn slope(&self, v: [f64; 3]) -> [f64; 3] {
-        frame_slope(&[self.alpha, self.beta, self.gamma, self.k], v)
+        frame_slope(&self.coefficients(), v)
     }
 
     /// The sum of the absolute values of F's terms at (x, y, z): the scale of its rounding.
@@ -282,8 +286,13 @@ impl FrameCoefficients {
     /// The linear equation F_self − F_other = 0 as (coefficients of x, y, z; constant).
     #[inline]
     pub fn difference(&self, other: &FrameCoefficients) -> ([f64; 3], f64) {
-        let terms = |f: &FrameCoefficients| [f.alpha, f.beta, f.gamma, f.k];
-        frame_difference(&terms(self), &terms(other))
+        frame_difference(&self.coefficients(), &other.coefficients())
+    }
+
+    /// (α, β, γ, K), the form the generic functions below take.
+    #[inline]
+    fn coefficients(&self) -> [f64; 4] {
+        [self.alpha, self.beta, self.gamma, self.k]
     }
 }
 
@@ -298,17 +307,6 @@ pub fn frame_terms<T: Scalar>([a2, b2, c2]: [T; 3]) -> [T; 4] {
         a2 + b2 - c2,
         a2 * a2 + b2 * b2 + c2 * c2 - two * a2 * b2 - two * a2 * c2 - two * b2 * c2,
     ]
-}
-
-/// F(x, y, z) from a frame's (α, β, γ, K), in any [`Scalar`].
-#[inline]
-pub fn frame_value<T: Scalar>(t: &[T; 4], [x, y, z]: [T; 3]) -> T {
-    let two = T::constant(2.0);
-    x * x + y * y + z * z - two * x * y - two * x * z - two * y * z
-        + t[3]
-        + two * t[0] * x
-        + two * t[1] * y
-        + two * t[2] * z
 }
 
 /// ∂F/∂(x, y, z) from a frame's (α, β, γ, K), in any [`Scalar`].

@@ -29,14 +29,14 @@
 use std::cmp::Ordering;
 use std::collections::BinaryHeap;
 
-use crate::algebra::{Grad, Interval, Scalar};
+use crate::algebra::{centre, Grad, Interval, Scalar};
 use crate::derivations::twofold::{frame_difference, frame_slope, frame_terms};
 use crate::studies::rounding::RoundingBox;
 
 /// Free coordinates: (qx, qy, rx) per frame.
 const VARS: usize = 9;
 
-/// Cells bounded per search before it reports the bracket it has reached: 0.2–0.34 ms a
+/// Cells bounded per search before it reports the bracket it has reached: 0.17–0.2 ms a
 /// cell, about 4 s when both searches reach it (docs/limits.md); §2's figure needs 1,652.
 pub const CELL_BUDGET: usize = 10_000;
 
@@ -129,10 +129,8 @@ impl Views {
     /// bounds each xₖ − mₖ by (box − ry(m) − Σ_{i≠k} ∂ᵢry(X)(Xᵢ − mᵢ)) / ∂ₖry(X).
     fn contract(&self, x: &mut [Interval; 3], plus: bool, f: usize) -> Option<()> {
         let target = self.frames[f][3];
-        let mid: [f64; 3] = x.map(|i| i.mid());
-        let off: [Interval; 3] = std::array::from_fn(|i| x[i] - Interval::point(mid[i]));
-        let vars: [Grad<3>; 3] = std::array::from_fn(|i| Grad::variable(&mid, &off, i));
-        let Some(ry) = self.ry(vars, plus) else {
+        let (mid, off) = centre(x);
+        let Some(ry) = self.ry(Grad::variables(&mid, &off), plus) else {
             // no enclosure of the slope: drop the cell only when its ry provably misses the
             // box (an undefined enclosure proves nothing: keep it whole)
             return match self.ry(*x, plus) {
@@ -140,7 +138,7 @@ impl Views {
                 None => Some(()),
             };
         };
-        ry.range().intersect(target)?;
+        ry.value.intersect(target)?;
         for k in 0..3 {
             let Some(inv) = ry.grad[k].recip() else {
                 continue;
@@ -249,10 +247,8 @@ impl Search<'_> {
             self.views.contract(&mut c, plus[f], f)?;
             x[3 * f..3 * f + 3].copy_from_slice(&c);
         }
-        let mid: [f64; VARS] = x.map(|i| i.mid());
-        let off: [Interval; VARS] = std::array::from_fn(|i| x[i] - Interval::point(mid[i]));
-        let vars: [Grad<VARS>; VARS] = std::array::from_fn(|i| Grad::variable(&mid, &off, i));
-        let grad = self.views.separation_at(&vars, plus);
+        let (mid, off) = centre(&x);
+        let grad = self.views.separation_at(&Grad::variables(&mid, &off), plus);
         if let (Some(g), Some(p)) = (grad, self.views.view_at(&mid, plus)) {
             let far = if self.sign > 0.0 { g.mid.hi } else { -g.mid.lo };
             if far < self.best {
@@ -261,7 +257,7 @@ impl Search<'_> {
         }
         let (lower, weight) = match grad {
             Some(g) => {
-                let v = g.range();
+                let v = g.value;
                 let w = std::array::from_fn(|i| {
                     x[i].width() * g.grad[i].lo.abs().max(g.grad[i].hi.abs())
                 });
