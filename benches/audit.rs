@@ -14,8 +14,9 @@ fn audit(c: &mut Criterion) {
         b.iter(|| audit_all(&all, Wanted::All).expect("the audit runs"))
     });
     // one formula item of §2.2, eq. p3f3sqr (the twofold squaring), and an Appendix A
-    // coefficient (the elimination and its expansion, the dearest items); the derived frame
-    // equations are kept once derived, so after the first iteration these are warm figures
+    // coefficient (its expansion in the projections, among the dearest items); the
+    // derived frame equations and the symbolic elimination are kept once derived (once per
+    // process), so after the first iteration these are warm figures
     for id in [
         "p3f3-differences/equation-1",
         "p3f3sqr",

@@ -33,7 +33,8 @@ fn docs_errata_is_up_to_date() {
 }
 
 /// The audit computes what is asked: one item (or one claim's items) alone gives exactly
-/// what the whole audit gives for it, the formulas it builds on computed with it.
+/// what the whole audit gives for it, the names earlier formulas define (A_c for the
+/// substitution, f_b for Δ_b) read but those formulas not judged.
 #[test]
 fn one_item_of_the_audit_is_its_line_in_the_whole() {
     use orthocheck::claims::audit::{audit_all, Wanted};
@@ -43,6 +44,8 @@ fn one_item_of_the_audit_is_its_line_in_the_whole() {
         "p3f3-differences/equation-1",
         "p3f3-a2-b2/a-squared/expanded",
         "p3f3-quadratic/substitution",
+        "appA-coefficients/f_b/expanded",
+        "appA-quartic/delta_b",
         "appA-quartic/constant-symbols",
         "p3f3-a2-b2",
     ] {

@@ -215,15 +215,20 @@ pub struct TextItem {
     pub effect: String,
 }
 
-/// The case with only the items `wanted` asks for (its definitions kept): the audit of one
-/// item computes that item, and the formulas before it, whose results its expansion uses (a
-/// formula's expansion substitutes those of the formulas it follows).
+/// Whether `wanted` asks for the item `claim/id` (as itself, its claim, or its `/expanded`
+/// sibling).
+pub(super) fn is_asked(claim: &ClaimRef, id: &str, wanted: crate::claims::audit::Wanted) -> bool {
+    wanted.item(&format!("{}/{id}", claim.claim), &claim.claim)
+}
+
+/// The case with only the items `wanted` asks for (its definitions kept). The formulas before
+/// the last asked one stay, unjudged: a formula's parse substitutes the names earlier
+/// formulas define, so the judge reads their `defines` and computes only what is asked.
 pub(super) fn asked(
     c: &FormulaAuditCase,
     wanted: crate::claims::audit::Wanted,
 ) -> FormulaAuditCase {
-    let keep =
-        |claim: &ClaimRef, id: &str| wanted.item(&format!("{}/{id}", claim.claim), &claim.claim);
+    let keep = |claim: &ClaimRef, id: &str| is_asked(claim, id, wanted);
     let last = c.formulas.iter().rposition(|f| keep(&f.claim, &f.id));
     FormulaAuditCase {
         formulas: c.formulas[..last.map_or(0, |k| k + 1)].to_vec(),

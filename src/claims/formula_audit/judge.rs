@@ -14,7 +14,7 @@ use crate::check::{
 use crate::claims::audit::Shown;
 use crate::claims::formula_audit::study::{
     arithmetic, computed, expanded, formulas, ArithmeticFinding, ExpandedFinding, Form,
-    FormulaFinding,
+    FormulaFinding, Judged,
 };
 use crate::claims::formula_audit::{ArithmeticItem, FormulaAuditCase, FormulaItem, TextItem};
 use crate::derivations::formulas::NAMES;
@@ -264,14 +264,30 @@ fn items(
     b: &ResultBuilder,
     case: &FormulaAuditCase,
     twins: bool,
+    judged: Judged,
 ) -> Result<Vec<(ClaimResult, Shown)>> {
+    use rayon::prelude::*;
     let mut out = Vec::new();
-    // no formula asked: nothing to expand (the expansions of the macros cost milliseconds)
-    let (found, expansions) = match case.formulas.is_empty() {
-        true => (Vec::new(), Vec::new()),
-        false => (formulas(case)?, expanded(case)?),
-    };
-    for ((f, x), e) in case.formulas.iter().zip(found).zip(expansions) {
+    // the two levels of the formulas and the dedicated computations are independent
+    let (levels, tests) = rayon::join(
+        || match case.formulas.iter().any(judged) {
+            // no formula asked: nothing to expand (the macros' expansions cost milliseconds)
+            false => Ok((Vec::new(), Vec::new())),
+            true => match rayon::join(|| formulas(case, judged), || expanded(case, judged)) {
+                (Ok(f), Ok(e)) => Ok((f, e)),
+                (Err(e), _) | (_, Err(e)) => Err(e),
+            },
+        },
+        || {
+            case.computed
+                .par_iter()
+                .map(|c| computed(&c.test))
+                .collect::<Vec<_>>()
+        },
+    );
+    let (found, expansions) = levels?;
+    let asked = case.formulas.iter().filter(|f| judged(f));
+    for ((f, x), e) in asked.zip(found).zip(expansions) {
         out.push(formula_result(b, f, &x, &e));
         if twins {
             out.push(expanded_result(b, f, &e));
@@ -281,7 +297,8 @@ fn items(
     out.extend(
         case.computed
             .iter()
-            .map(|c| computed_result(b, c, &computed(&c.test))),
+            .zip(tests)
+            .map(|(c, t)| computed_result(b, c, &t)),
     );
     out.extend(case.text.iter().map(|t| text_result(b, t)));
     for (r, s) in &mut out {
@@ -291,17 +308,21 @@ fn items(
     Ok(out)
 }
 
-/// The items `orthocheck audit` lists: both levels of every formula.
+/// The items `orthocheck audit` lists: both levels of every formula `judged` selects.
 pub(super) fn judged(
     b: &ResultBuilder,
     case: &FormulaAuditCase,
+    judged: Judged,
 ) -> Result<Vec<(ClaimResult, Shown)>> {
-    items(b, case, true)
+    items(b, case, true, judged)
 }
 
 /// The audit as claim results: one per item, a formula's expansion in its evidence.
 pub(super) fn check(b: &ResultBuilder, case: &FormulaAuditCase) -> Result<Vec<ClaimResult>> {
-    Ok(items(b, case, false)?.into_iter().map(|(r, _)| r).collect())
+    Ok(items(b, case, false, &|_| true)?
+        .into_iter()
+        .map(|(r, _)| r)
+        .collect())
 }
 
 mod computed;

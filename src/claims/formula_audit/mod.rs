@@ -41,7 +41,8 @@ impl ClaimKind for FormulaAuditCase {
         _source: &crate::cases::Source,
         wanted: crate::claims::audit::Wanted,
     ) -> Result<Vec<(ClaimResult, crate::claims::audit::Shown)>> {
-        let items = judge::judged(b, &case::asked(self, wanted))?;
+        let judged = |f: &FormulaItem| case::is_asked(&f.claim, &f.id, wanted);
+        let items = judge::judged(b, &case::asked(self, wanted), &judged)?;
         Ok(items
             .into_iter()
             .filter(|(r, _)| wanted.shows(&r.id, &r.claim))

@@ -7,6 +7,7 @@ use std::collections::BTreeMap;
 
 use num_rational::BigRational;
 use num_traits::One;
+use rayon::prelude::*;
 
 use crate::algebra::{Monomial, Poly, RatFn};
 use crate::claims::formula_audit::{
@@ -94,23 +95,37 @@ impl Defs {
     }
 }
 
-/// Every formula of the case, in order (later formulas may use names earlier ones define).
-pub fn formulas(case: &FormulaAuditCase) -> Result<Vec<FormulaFinding>> {
+/// Which formulas of a case a study computes (the others only lend later ones what they
+/// define).
+pub type Judged<'a> = &'a (dyn Fn(&FormulaItem) -> bool + Sync);
+
+/// Every formula of the case that `judged` selects, in order (later formulas may use names
+/// earlier ones define, which are read whether judged or not). The parses run in order; the
+/// checks, independent of each other, in parallel.
+pub fn formulas(case: &FormulaAuditCase, judged: Judged) -> Result<Vec<FormulaFinding>> {
     let mut defs = Defs(BTreeMap::new());
     for d in &case.definitions {
         let v = defs.parse(&d.printed, &[])?;
         defs.0.insert(d.name.clone(), v);
     }
-    let mut out = Vec::new();
+    let mut work = Vec::new();
     for f in &case.formulas {
-        out.push(formula(f, &defs, case.evaluation_points, case.seed)?);
+        if judged(f) {
+            let parse = |t: &Option<String>| -> Result<Option<RatFn>> {
+                t.as_deref().map(|t| defs.parse(t, &f.symbols)).transpose()
+            };
+            work.push((f, parse(&f.printed)?, parse(&f.corrected)?));
+        }
         if let (Some(name), Some(text)) = (&f.defines, f.corrected.as_ref().or(f.printed.as_ref()))
         {
             let v = defs.parse(text, &f.symbols)?;
             defs.0.insert(name.clone(), v);
         }
     }
-    Ok(out)
+    let (points, seed) = (case.evaluation_points, case.seed);
+    work.into_par_iter()
+        .map(|(f, printed, corrected)| formula(f, printed, corrected, points, seed))
+        .collect()
 }
 
 /// `e = k · target` under the item's relation: `Some(k)` when it holds.
@@ -121,14 +136,15 @@ fn relation_ratio(e: &RatFn, target: &RatFn, relation: Relation) -> Option<BigRa
     }
 }
 
-fn formula(f: &FormulaItem, defs: &Defs, points: usize, seed: u64) -> Result<FormulaFinding> {
+fn formula(
+    f: &FormulaItem,
+    printed: Option<RatFn>,
+    corrected: Option<RatFn>,
+    points: usize,
+    seed: u64,
+) -> Result<FormulaFinding> {
     let target = derived(&f.derived)
         .ok_or_else(|| Error::InvalidInput(format!("no derivation `{}`", f.derived)))?;
-    let parse = |t: &Option<String>| -> Result<Option<RatFn>> {
-        t.as_deref().map(|t| defs.parse(t, &f.symbols)).transpose()
-    };
-    let printed = parse(&f.printed)?;
-    let corrected = parse(&f.corrected)?;
     let ratio = |e: &Option<RatFn>| e.as_ref().map(|e| relation_ratio(e, &target, f.relation));
     let (pr, cr) = (ratio(&printed), ratio(&corrected));
     let accepted = match (&pr, &cr, &printed, &corrected) {

@@ -53,11 +53,6 @@ impl Monomial {
     pub fn factors(&self) -> &[(String, u32)] {
         &self.0
     }
-
-    /// The monomial of `factors` (sorted by name, positive exponents).
-    pub(crate) fn from_sorted(factors: Vec<(String, u32)>) -> Self {
-        Monomial(factors)
-    }
 }
 
 /// A polynomial over ℚ in named variables.

@@ -7,7 +7,7 @@ use std::ops::{Add, Div, Mul, Neg, Sub};
 use num_rational::BigRational;
 use num_traits::{One, Zero};
 
-use super::{Monomial, Poly};
+use super::Poly;
 use crate::error::ParseError;
 
 /// `num / den` with `den ≠ 0`.
@@ -339,41 +339,70 @@ impl RatFn {
 }
 
 /// `p` with each name of `used` (value Nⱼ / D) replaced, times D^d: (Σ cₘ·Nᵐ·D^(d−|m|), d),
-/// d the total degree of `p` in those names. Powers are cached.
+/// d the total degree of `p` in those names. The terms are grouped by their monomial m in
+/// the names first (one product per group, not per term), powers are cached, and the
+/// products are summed pairwise (a running sum would merge the growing total once a term).
 fn homogenise_all(p: &Poly, used: &BTreeMap<&str, &RatFn>, d: &Poly) -> (Poly, u32) {
-    let split = |m: &Monomial| -> (Vec<(&str, u32)>, Monomial, u32) {
-        let mut rest = Vec::new();
-        let mut subs = Vec::new();
-        let mut deg = 0;
-        for (name, e) in m.factors() {
-            if let Some((k, _)) = used.get_key_value(name.as_str()) {
-                subs.push((*k, *e));
-                deg += e;
-            } else {
-                rest.push((name.clone(), *e));
-            }
-        }
-        (subs, Monomial::from_sorted(rest), deg)
-    };
-    let terms: Vec<_> = p.terms().map(|(m, c)| (split(&m), c)).collect();
-    let top = terms.iter().map(|((_, _, k), _)| *k).max().unwrap_or(0);
-    let mut powers: BTreeMap<(&str, u32), Poly> = BTreeMap::new();
+    let names: Vec<&str> = used.keys().copied().collect();
+    let groups = split_in(p, &names);
+    let top = groups
+        .iter()
+        .map(|(m, _)| m.iter().sum::<u32>())
+        .max()
+        .unwrap_or(0);
+    let mut powers: BTreeMap<(usize, u32), Poly> = BTreeMap::new();
     let mut dpow: BTreeMap<u32, Poly> = BTreeMap::new();
-    let mut out = Poly::zero();
-    for ((subs, rest, k), c) in terms {
-        let mut t = Poly::from_monomial(rest).scale(&c);
-        for (name, e) in subs {
+    let mut parts = Vec::with_capacity(groups.len());
+    for (m, c) in groups {
+        let mut t = c;
+        for (i, &e) in m.iter().enumerate().filter(|(_, e)| **e > 0) {
             let v = powers
-                .entry((name, e))
-                .or_insert_with(|| used[name].num.pow(e));
+                .entry((i, e))
+                .or_insert_with(|| used[names[i]].num.pow(e));
             t = &t * v;
         }
+        let k = m.iter().sum::<u32>();
         if top > k {
             t = &t * dpow.entry(top - k).or_insert_with(|| d.pow(top - k));
         }
-        out = &out + &t;
+        parts.push(t);
     }
-    (out, top)
+    (sum_pairwise(parts), top)
+}
+
+/// `p = Σₘ cₘ · namesᵐ`: each monomial m in `names` (exponents in their order) with its
+/// coefficient, a polynomial free of them; zero coefficients left out.
+fn split_in(p: &Poly, names: &[&str]) -> Vec<(Vec<u32>, Poly)> {
+    let Some((first, rest)) = names.split_first() else {
+        return vec![(Vec::new(), p.clone())];
+    };
+    let mut out = Vec::new();
+    for (e, c) in p.coefficients_in(first).into_iter().enumerate() {
+        if c.is_zero() {
+            continue;
+        }
+        for (mut m, q) in split_in(&c, rest) {
+            m.insert(0, e as u32);
+            out.push((m, q));
+        }
+    }
+    out
+}
+
+/// The sum of `parts`, added in a balanced tree.
+fn sum_pairwise(mut parts: Vec<Poly>) -> Poly {
+    while parts.len() > 1 {
+        let mut next = Vec::with_capacity(parts.len().div_ceil(2));
+        let mut it = parts.into_iter();
+        while let Some(a) = it.next() {
+            next.push(match it.next() {
+                Some(b) => &a + &b,
+                None => a,
+            });
+        }
+        parts = next;
+    }
+    parts.pop().unwrap_or_default()
 }
 
 /// A row of rational functions over their common denominator: polynomials, the same

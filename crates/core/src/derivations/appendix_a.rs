@@ -85,8 +85,14 @@ pub fn eliminate() -> Eliminated {
 /// The same elimination with the coefficients of each frame's equation as symbols, the
 /// paper's macros: Fₖ = x² + y² + z² − 2xy − 2xz − 2yz + facCstₖ + facaₖ x + facbₖ y + faccₖ z
 /// with x = a², y = b², z = c² (so facaₖ = 2(−aₖ² + bₖ² + cₖ²), …). Much smaller than in the
-/// projections, and what the appendix's printed coefficients are written in.
+/// projections, and what the appendix's printed coefficients are written in. Computed once
+/// per process (every appendix item and the audit's expansions read it).
 pub fn eliminate_symbolic() -> Eliminated {
+    static ONCE: std::sync::OnceLock<Eliminated> = std::sync::OnceLock::new();
+    ONCE.get_or_init(symbolic).clone()
+}
+
+fn symbolic() -> Eliminated {
     let frame = |k: u32| -> Poly {
         Poly::parse(&format!(
             "x^2+y^2+z^2-2x y-2x z-2y z + facCst{k} + faca{k} x + facb{k} y + facc{k} z"

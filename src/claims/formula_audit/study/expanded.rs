@@ -8,8 +8,9 @@ use std::collections::BTreeMap;
 
 use num_rational::BigRational;
 use num_traits::One;
+use rayon::prelude::*;
 
-use super::{accepted_quadratic, flip_one_term, Form};
+use super::{accepted_quadratic, flip_one_term, Form, Judged};
 use crate::algebra::modp::{agree_mod_p, proportional_mod_p, ModPAgreement};
 use crate::algebra::{Monomial, Poly, RatFn};
 use crate::claims::formula_audit::{FormulaAuditCase, FormulaItem, Relation};
@@ -141,39 +142,57 @@ fn linear_coefficient(p: &Poly, e: usize) -> Poly {
     pick(&pick(&pick(&s, "x", k(0)), "y", k(1)), "z", k(2))
 }
 
-/// Every formula of the case, expanded to the end, in order.
-pub fn expanded(case: &FormulaAuditCase) -> Result<Vec<ExpandedFinding>> {
-    let expansions = Expansions::new(case);
-    let mut defs: BTreeMap<String, RatFn> = BTreeMap::new();
-    let parse = |text: &str, defs: &BTreeMap<String, RatFn>| {
-        RatFn::parse_with(text, defs).map_err(|source| Error::Formula {
-            formula: text.to_string(),
-            source,
+/// Every formula of the case that `judged` selects, expanded to the end, in order. The
+/// parses run in order (a formula reads what earlier ones define); each formula's expansion
+/// and checks are independent of the others' and run in parallel.
+pub fn expanded(case: &FormulaAuditCase, judged: Judged) -> Result<Vec<ExpandedFinding>> {
+    let (expansions, work) = rayon::join(|| Expansions::new(case), || parsed(case, judged));
+    work?
+        .into_par_iter()
+        .map(|(f, printed, corrected)| {
+            let target = derived(&f.derived)
+                .ok_or_else(|| Error::InvalidInput(format!("no derivation `{}`", f.derived)))?;
+            let target = expansions.expand(&target);
+            Ok(one(f, &target, printed, corrected, case))
         })
-    };
+        .collect()
+}
+
+/// A formula with its printed and corrected forms read.
+type Read<'a> = (&'a FormulaItem, Option<RatFn>, Option<RatFn>);
+
+/// Each formula `judged` selects with its printed and corrected forms read, in order.
+fn parsed<'a>(case: &'a FormulaAuditCase, judged: Judged) -> Result<Vec<Read<'a>>> {
+    let mut defs: BTreeMap<String, RatFn> = BTreeMap::new();
     for d in &case.definitions {
         let v = parse(&d.printed, &defs)?;
         defs.insert(d.name.clone(), v);
     }
-    let mut out = Vec::new();
+    let mut work = Vec::new();
     for f in &case.formulas {
-        let target = derived(&f.derived)
-            .ok_or_else(|| Error::InvalidInput(format!("no derivation `{}`", f.derived)))?;
-        let target = expansions.expand(&target);
-        let printed = f.printed.as_deref().map(|t| parse(t, &defs)).transpose()?;
-        let corrected = f
-            .corrected
-            .as_deref()
-            .map(|t| parse(t, &defs))
-            .transpose()?;
-        out.push(one(f, &target, printed, corrected, case));
-        if let (Some(name), Some(text)) = (&f.defines, f.corrected.as_ref().or(f.printed.as_ref()))
-        {
-            let v = parse(text, &defs)?;
-            defs.insert(name.clone(), v);
+        if judged(f) {
+            let form = |t: &Option<String>| t.as_deref().map(|t| parse(t, &defs)).transpose();
+            work.push((f, form(&f.printed)?, form(&f.corrected)?));
         }
+        define(f, &mut defs)?;
     }
-    Ok(out)
+    Ok(work)
+}
+
+/// The name `f` defines, if any, read into `defs` (its corrected form when it has one).
+fn define(f: &FormulaItem, defs: &mut BTreeMap<String, RatFn>) -> Result<()> {
+    if let (Some(name), Some(text)) = (&f.defines, f.corrected.as_ref().or(f.printed.as_ref())) {
+        let v = parse(text, defs)?;
+        defs.insert(name.clone(), v);
+    }
+    Ok(())
+}
+
+fn parse(text: &str, defs: &BTreeMap<String, RatFn>) -> Result<RatFn> {
+    RatFn::parse_with(text, defs).map_err(|source| Error::Formula {
+        formula: text.to_string(),
+        source,
+    })
 }
 
 fn one(

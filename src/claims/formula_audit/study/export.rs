@@ -132,8 +132,8 @@ fn script(
 /// macro-level and expanded.
 pub fn sympy_scripts(case: &FormulaAuditCase) -> Result<Vec<Script>> {
     let exp = Expansions::new(case);
-    let macro_level = formulas(case)?;
-    let expanded_level = expanded(case)?;
+    let macro_level = formulas(case, &|_| true)?;
+    let expanded_level = expanded(case, &|_| true)?;
     let mut chain: Vec<(String, String, Vec<String>)> = case
         .definitions
         .iter()
