@@ -86,11 +86,16 @@ pub(super) fn check(b: &ResultBuilder, case: &P4f3ExampleCase) -> Result<Vec<Cla
         rows: &rows,
         half: &rh,
     };
+    let fs = p4f3_joint::figure_system_of(case, &shared);
+    // the body a reader would take from the figure: its digits through the paper's system
+    let alternative = fs
+        .x
+        .as_ref()
+        .map(|a| (a, ex4::reproduces(&figure_box, a)));
     let mut out = vec![
         p4f3_joint::body_result(b, case, &shared),
-        figure_result(b, case, &fit, &sq_half),
+        figure_result(b, case, (&fit, &sq_half), alternative),
     ];
-    let fs = p4f3_joint::figure_system_of(case, &shared);
     out.extend(p4f3_joint::figure_system_result(b, case, &fs));
     figure(b, case, &figure_box, &fit);
     let audit = printed_matrix::audit(&printed_matrix::PrintedSystem {
@@ -146,11 +151,15 @@ fn widest_power(acc: &[Acceptance], values: &[f64], units: &[f64], what: &str) -
     }
 }
 
+/// `ex4-figure`: exact views of the table's body inside the figure's rounding, and the
+/// named alternative the search must not also reproduce: the body of the squares the
+/// figure's own digits give through the paper's system (`alternative`, with whether the
+/// same search finds exact views of it).
 fn figure_result(
     b: &ResultBuilder,
     case: &P4f3ExampleCase,
-    fit: &FigureFit,
-    sq_half: &[f64],
+    (fit, sq_half): (&FigureFit, &[f64]),
+    alternative: Option<(&[f64; 6], bool)>,
 ) -> ClaimResult {
     let squares: Vec<f64> = case.body.squares.iter().map(Printed::to_f64).collect();
     let mut r = b
@@ -175,11 +184,31 @@ fn figure_result(
             Value::interval(lo, hi),
         );
     }
-    r.verdict(if fit.witness.is_some() {
-        Verdict::ReproducedWithinRounding
-    } else {
-        Verdict::Contradicted
-    })
+    // a singular figure system gives no body to mistake for the table's
+    let mut excluded = true;
+    if let Some((alt, found)) = alternative {
+        r = r
+            .computed(
+                "alternative: the squares the figure's digits give through the paper's system",
+                Value::reals(alt),
+            )
+            .computed(
+                "exact views of the alternative's body inside the rounding box",
+                Value::flag(found),
+            );
+        if found {
+            r = r.undecided("the same search finds exact views of the body the figure's digits give: the check cannot tell it from the table's body");
+        }
+        excluded = !found;
+    }
+    r.verdict(alternative_verdict(
+        if fit.witness.is_some() {
+            Verdict::ReproducedWithinRounding
+        } else {
+            Verdict::Contradicted
+        },
+        excluded,
+    ))
 }
 
 fn figure(b: &ResultBuilder, case: &P4f3ExampleCase, figure_box: &RoundingBox, fit: &FigureFit) {

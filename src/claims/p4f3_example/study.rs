@@ -81,8 +81,7 @@ pub fn figure_fit(figure_box: &RoundingBox, squares: &[f64], half: &[f64]) -> Fi
             acceptance(&|shift| {
                 let mut moved = squares.to_vec();
                 moved[e] += shift * half[e];
-                let r = realize(&moved, 4);
-                r.realizable && reproduce(figure_box, &|x| scaled_views(x, &r.points)).is_some()
+                reproduces(figure_box, &moved)
             })
         })
         .collect();
@@ -92,6 +91,13 @@ pub fn figure_fit(figure_box: &RoundingBox, squares: &[f64], half: &[f64]) -> Fi
         witness,
         acceptance,
     }
+}
+
+/// Whether the body of `squares` exists and the search finds exact views of it inside the
+/// box: the test of every acceptance and of a named alternative body.
+pub fn reproduces(figure_box: &RoundingBox, squares: &[f64]) -> bool {
+    let r = realize(squares, 4);
+    r.realizable && reproduce(figure_box, &|x| scaled_views(x, &r.points)).is_some()
 }
 
 /// The printed solution against the printed matrix.

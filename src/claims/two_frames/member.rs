@@ -4,16 +4,31 @@
 use nalgebra::Vector3;
 
 use crate::cases::Printed;
-use crate::check::{ClaimResult, Power, ResultBuilder, Tolerance, ToleranceSource, Value, Verdict};
+use crate::check::{
+    alternative_verdict, ClaimResult, Power, ResultBuilder, Tolerance, ToleranceSource, Value,
+    Verdict,
+};
 use crate::claims::two_frames::drawn_member::{
     member, read, rebuild, theta_bound, Picture, Reading,
 };
 use crate::claims::two_frames::{DrawnMember, TwoFramesCase};
 
-/// The drawn angle agrees with the printed points' when their difference lies within the
-/// two propagated roundings.
+/// The drawn angle agrees with the printed points' when their difference, modulo π (both
+/// are folded into (−π/2, π/2], so −π/2 + ε and π/2 − ε are 2ε apart), lies within the two
+/// propagated roundings.
 fn same_member(drawn: f64, printed: f64, bound: f64) -> bool {
-    (drawn - printed).abs() <= bound
+    fold(drawn - printed).abs() <= bound
+}
+
+/// The alternatives the drawings must tell from the printed member's turn `printed`: the
+/// member equation's other root, θ = 0 (the body left as it was), and the same turn in the
+/// opposite sense; and whether the drawn turn excludes both.
+fn alternatives(drawn: f64, printed: f64, bound: f64) -> ([f64; 2], bool) {
+    let alternatives = [0.0, fold(-printed)];
+    let excluded = alternatives
+        .iter()
+        .all(|a| !same_member(drawn, *a, bound));
+    (alternatives, excluded)
 }
 
 /// An angle difference folded into (−π/2, π/2] (directions are defined modulo π).
@@ -144,11 +159,25 @@ pub(super) fn result(b: &ResultBuilder, case: &TwoFramesCase) -> Option<ClaimRes
         .power(Power::interval(deg(theta - bound), deg(theta + bound), deg(theta), deg(bound), "θ (degrees) of the printed points the drawings would accept: exactly what the drawings' three decimals and the printed points' digits allow"))
         .method("per picture: the cube's thin edges as the scene's axes (x along the frame-1 ray, z along n), their signs and the scale fitted to the labels of P and the two points of either body; the frame-2 rays' direction in the scene; the turn θ = φ′ − φ between the pictures of the two bodies, against the non-trivial root of (R(−θ)Q′ − Q) × (R(−θ)R′ − R) = 0 of the printed points; Q′ and R′ rebuilt from Q and R by the drawn member");
     r = picture_details(r, dm, &readings);
-    Some(r.verdict(if holds {
+    let (alternatives, excluded) = alternatives(theta, m.theta, bound);
+    r = r
+        .computed(
+            "alternatives: the other root θ = 0 and the opposite turn −θ (degrees)",
+            Value::reals(&alternatives.map(deg)),
+        )
+        .computed(
+            "an alternative within the tolerance of θ drawn",
+            Value::flag(!excluded),
+        );
+    if !excluded {
+        r = r.undecided("θ drawn lies within the tolerance of an alternative as well: the drawings cannot tell which member they show");
+    }
+    let v = if holds {
         Verdict::ReproducedWithinRounding
     } else {
         Verdict::Inconclusive
-    }))
+    };
+    Some(r.verdict(alternative_verdict(v, excluded)))
 }
 
 #[cfg(test)]
@@ -163,5 +192,16 @@ mod tests {
         // π − 0.1 and the subtraction of π each round once: a few units of π's last place
         assert!((fold(pi - 0.1) + 0.1).abs() <= 4.0 * f64::EPSILON * pi);
         assert_eq!(fold(0.2), 0.2);
+    }
+
+    #[test]
+    fn a_drawn_turn_near_an_alternative_excludes_nothing() {
+        // a large turn, drawn within its bound: both alternatives lie far outside
+        assert_eq!(alternatives(-0.75, -0.75, 0.01), ([0.0, 0.75], true));
+        // a small turn: θ = 0 lies within the bound of the drawn turn
+        assert!(!alternatives(0.005, 0.005, 0.01).1);
+        // a turn near a quarter circle: its opposite sense folds onto itself
+        let q = std::f64::consts::FRAC_PI_2 - 0.001;
+        assert!(!alternatives(q, q, 0.01).1);
     }
 }
