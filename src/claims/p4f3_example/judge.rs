@@ -88,10 +88,7 @@ pub(super) fn check(b: &ResultBuilder, case: &P4f3ExampleCase) -> Result<Vec<Cla
     };
     let fs = p4f3_joint::figure_system_of(case, &shared);
     // the body a reader would take from the figure: its digits through the paper's system
-    let alternative = fs
-        .x
-        .as_ref()
-        .map(|a| (a, ex4::reproduces(&figure_box, a)));
+    let alternative = fs.x.as_ref().map(|a| (a, ex4::reproduces(&figure_box, a)));
     let mut out = vec![
         p4f3_joint::body_result(b, case, &shared),
         figure_result(b, case, (&fit, &sq_half), alternative),

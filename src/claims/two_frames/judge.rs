@@ -137,6 +137,17 @@ fn counterexample_result(b: &ResultBuilder, case: &TwoFramesCase) -> ClaimResult
             .detail("axis n", Value::reals(&[c.axis.x, c.axis.y, c.axis.z]))
             .detail("rotation (rad)", Value::real(c.angle));
     }
+    let sides = [["PQ", "QR", "RP"], ["PQ′", "Q′R′", "R′P"]];
+    for (names, ranges) in sides.iter().zip(&fit.side_ranges) {
+        for (side, i) in names.iter().zip(ranges) {
+            let range = Value::interval(i.lo, i.hi);
+            r = r.cell(
+                side,
+                "range over the printed points' rounding (proven)",
+                range,
+            );
+        }
+    }
     r.verdict(Verdict::holds(judge_counterexample(&fit)))
 }
 
@@ -262,6 +273,7 @@ mod tests {
             rebuilt_ratio: rebuilt,
             difference_ratio: diff,
             mismatch_ratio: mismatch,
+            side_ranges: crate::claims::two_frames::study::side_ranges(&p, &[Vector3::zeros(); 5]),
         }
     }
 

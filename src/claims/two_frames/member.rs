@@ -25,9 +25,7 @@ fn same_member(drawn: f64, printed: f64, bound: f64) -> bool {
 /// opposite sense; and whether the drawn turn excludes both.
 fn alternatives(drawn: f64, printed: f64, bound: f64) -> ([f64; 2], bool) {
     let alternatives = [0.0, fold(-printed)];
-    let excluded = alternatives
-        .iter()
-        .all(|a| !same_member(drawn, *a, bound));
+    let excluded = alternatives.iter().all(|a| !same_member(drawn, *a, bound));
     (alternatives, excluded)
 }
 

@@ -4,7 +4,7 @@
 
 use nalgebra::{Vector2, Vector3};
 
-use crate::algebra::NEGLIGIBLE_ULPS;
+use crate::algebra::{Interval, NEGLIGIBLE_ULPS};
 use crate::derivations::two_frames::{counterexample, epipolar, family, shape_difference, Member};
 use crate::model::{Body, Motion, Scene};
 
@@ -173,6 +173,31 @@ pub struct CounterexampleFit {
     pub difference_ratio: f64,
     /// The image mismatch over its floating-point bound (64ε of the largest squared side).
     pub mismatch_ratio: f64,
+    /// The sides PQ, QR, RP and PQ′, Q′R′, R′P over the printed points' rounding boxes:
+    /// proven outer bounds (outward-rounded interval arithmetic, each coordinate once, so
+    /// also the exact ranges to within the rounding of the ends).
+    pub side_ranges: [[Interval; 3]; 2],
+}
+
+/// The sides of PQR and PQ′R′ (`pts` = P, Q, R, Q′, R′) over the boxes of half units `half`.
+pub fn side_ranges(pts: &[Vector3<f64>; 5], half: &[Vector3<f64>; 5]) -> [[Interval; 3]; 2] {
+    let side = |i: usize, j: usize| {
+        let sq = (0..3)
+            .map(|k| {
+                (Interval::around(pts[i][k], half[i][k]) - Interval::around(pts[j][k], half[j][k]))
+                    .square()
+            })
+            .fold(Interval::point(0.0), |a, b| a + b);
+        // a sum of squares is never negative, so the root exists
+        sq.sqrt().unwrap_or(Interval {
+            lo: 0.0,
+            hi: f64::INFINITY,
+        })
+    };
+    [
+        [side(0, 1), side(1, 2), side(2, 0)],
+        [side(0, 3), side(3, 4), side(4, 0)],
+    ]
 }
 
 /// Judge-ready numbers for printed points P, Q, R, Q′, R′ with per-coordinate half units.
@@ -184,6 +209,7 @@ pub fn fit_counterexample(pts: [Vector3<f64>; 5], half: [Vector3<f64>; 5]) -> Co
             rebuilt_ratio: f64::INFINITY,
             difference_ratio: 0.0,
             mismatch_ratio: f64::INFINITY,
+            side_ranges: side_ranges(&pts, &half),
         };
     };
     let ratio = |got: &Vector3<f64>, want: &Vector3<f64>, h: &Vector3<f64>| {
@@ -207,6 +233,28 @@ pub fn fit_counterexample(pts: [Vector3<f64>; 5], half: [Vector3<f64>; 5]) -> Co
         rebuilt_ratio,
         difference_ratio,
         mismatch_ratio: cx.image_mismatch / (NEGLIGIBLE_ULPS * f64::EPSILON),
+        side_ranges: side_ranges(&pts, &half),
         construction: c,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_side_range_is_the_exact_range_rounded_outward() {
+        let z = Vector3::zeros();
+        let q = Vector3::new(3.0, 4.0, 0.0);
+        let pts = [z, q, z, q, z];
+        // Q's first coordinate in [2.5, 3.5]: |PQ| runs from √22.25 to √28.25
+        let mut half = [z; 5];
+        half[1].x = 0.5;
+        let [[pq, ..], [pq_prime, ..]] = side_ranges(&pts, &half);
+        let (lo, hi) = (22.25f64.sqrt(), 28.25f64.sqrt());
+        assert!(pq.lo <= lo && lo - pq.lo < 1e-14, "{pq:?}");
+        assert!(pq.hi >= hi && pq.hi - hi < 1e-14, "{pq:?}");
+        // no rounding: the range holds the one distance, 5
+        assert!(pq_prime.contains(5.0) && pq_prime.width() < 1e-14);
     }
 }
