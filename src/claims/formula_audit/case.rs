@@ -7,6 +7,7 @@ use serde::Deserialize;
 
 use crate::algebra::Poly;
 use crate::cases::{ClaimRef, Printed, Validator};
+use crate::derivations::formulas::NAMES;
 use crate::error::Result;
 
 /// The formula audit.
@@ -221,17 +222,16 @@ pub(super) fn is_asked(claim: &ClaimRef, id: &str, wanted: crate::claims::audit:
     wanted.item(&format!("{}/{id}", claim.claim), &claim.claim)
 }
 
-/// The case with only the items `wanted` asks for (its definitions kept). The formulas before
-/// the last asked one stay, unjudged: a formula's parse substitutes the names earlier
-/// formulas define, so the judge reads their `defines` and computes only what is asked.
+/// The case with only the items `wanted` asks for. Every formula stays, for the judge to
+/// select (see [`is_asked`]): a formula's parse substitutes the names earlier formulas
+/// define, and the expansions of the macros are built from the names of them all, so one
+/// item is read exactly as in the whole audit, though only it is judged.
 pub(super) fn asked(
     c: &FormulaAuditCase,
     wanted: crate::claims::audit::Wanted,
 ) -> FormulaAuditCase {
     let keep = |claim: &ClaimRef, id: &str| is_asked(claim, id, wanted);
-    let last = c.formulas.iter().rposition(|f| keep(&f.claim, &f.id));
     FormulaAuditCase {
-        formulas: c.formulas[..last.map_or(0, |k| k + 1)].to_vec(),
         arithmetic: c
             .arithmetic
             .iter()
@@ -266,6 +266,16 @@ pub(super) fn checks(c: &FormulaAuditCase, v: &Validator) -> Result<()> {
         }
         if let Some(p) = &f.corrected {
             v.rat_formula(&at("corrected"), p)?;
+        }
+        if !NAMES.iter().any(|(n, _)| *n == f.derived) {
+            return v.err(
+                &at("derived"),
+                format!(
+                    "`{}` is not a derivation; one of: {}",
+                    f.derived,
+                    NAMES.iter().map(|(n, _)| *n).collect::<Vec<_>>().join(", ")
+                ),
+            );
         }
         if f.printed.is_none() && f.corrected.is_none() {
             return v.err(

@@ -257,8 +257,8 @@ fn text_result(b: &ResultBuilder, t: &TextItem) -> (ClaimResult, Shown) {
     (r.verdict(Verdict::Erratum), shown)
 }
 
-/// Every item of the audit, judged, with what its audit line shows: with `twins`, each
-/// formula's `/expanded` item after it (the audit lists both levels; as claims, the expansion
+/// Every item of the case, judged (of the formulas, those `judged` selects), with what its
+/// audit line shows: with `twins`, each formula's `/expanded` item after it (the audit lists both levels; as claims, the expansion
 /// is evidence of its formula).
 fn items(
     b: &ResultBuilder,
@@ -308,13 +308,13 @@ fn items(
     Ok(out)
 }
 
-/// The items `orthocheck audit` lists: both levels of every formula `judged` selects.
+/// The items `orthocheck audit` lists: both levels of every formula `select` selects.
 pub(super) fn judged(
     b: &ResultBuilder,
     case: &FormulaAuditCase,
-    judged: Judged,
+    select: Judged,
 ) -> Result<Vec<(ClaimResult, Shown)>> {
-    items(b, case, true, judged)
+    items(b, case, true, select)
 }
 
 /// The audit as claim results: one per item, a formula's expansion in its evidence.

@@ -110,22 +110,32 @@ pub fn formulas(case: &FormulaAuditCase, judged: Judged) -> Result<Vec<FormulaFi
     }
     let mut work = Vec::new();
     for f in &case.formulas {
-        if judged(f) {
-            let parse = |t: &Option<String>| -> Result<Option<RatFn>> {
-                t.as_deref().map(|t| defs.parse(t, &f.symbols)).transpose()
-            };
-            work.push((f, parse(&f.printed)?, parse(&f.corrected)?));
-        }
-        if let (Some(name), Some(text)) = (&f.defines, f.corrected.as_ref().or(f.printed.as_ref()))
-        {
-            let v = defs.parse(text, &f.symbols)?;
+        let parse = |t: &Option<String>| -> Result<Option<RatFn>> {
+            t.as_deref().map(|t| defs.parse(t, &f.symbols)).transpose()
+        };
+        let defined = match judged(f) {
+            true => {
+                let (p, c) = (parse(&f.printed)?, parse(&f.corrected)?);
+                let defined = c.clone().or_else(|| p.clone());
+                work.push((f, p, c));
+                defined
+            }
+            false if f.defines.is_some() => {
+                parse(f.corrected.as_ref().map_or(&f.printed, |_| &f.corrected))?
+            }
+            false => None,
+        };
+        if let (Some(name), Some(v)) = (&f.defines, defined) {
             defs.0.insert(name.clone(), v);
         }
     }
     let (points, seed) = (case.evaluation_points, case.seed);
-    work.into_par_iter()
+    // every formula computed, then the first error in case order (whichever finished first)
+    let found: Vec<Result<FormulaFinding>> = work
+        .into_par_iter()
         .map(|(f, printed, corrected)| formula(f, printed, corrected, points, seed))
-        .collect()
+        .collect();
+    found.into_iter().collect()
 }
 
 /// `e = k · target` under the item's relation: `Some(k)` when it holds.

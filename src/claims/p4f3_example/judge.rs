@@ -87,11 +87,9 @@ pub(super) fn check(b: &ResultBuilder, case: &P4f3ExampleCase) -> Result<Vec<Cla
         half: &rh,
     };
     let fs = p4f3_joint::figure_system_of(case, &shared);
-    // the body a reader would take from the figure: its digits through the paper's system
-    let alternative = fs.x.as_ref().map(|a| (a, ex4::reproduces(&figure_box, a)));
     let mut out = vec![
         p4f3_joint::body_result(b, case, &shared),
-        figure_result(b, case, (&fit, &sq_half), alternative),
+        figure_result(b, case, &fit, &sq_half, &figure_box, fs.x.as_ref()),
     ];
     out.extend(p4f3_joint::figure_system_result(b, case, &fs));
     figure(b, case, &figure_box, &fit);
@@ -149,14 +147,16 @@ fn widest_power(acc: &[Acceptance], values: &[f64], units: &[f64], what: &str) -
 }
 
 /// `ex4-figure`: exact views of the table's body inside the figure's rounding, and the
-/// named alternative the search must not also reproduce: the body of the squares the
-/// figure's own digits give through the paper's system (`alternative`, with whether the
-/// same search finds exact views of it).
+/// named alternative the search must not also reproduce there: the body of the squares the
+/// figure's own digits give through the paper's system (`alternative`, the body a reader
+/// would take from the figure; none when that system is singular).
 fn figure_result(
     b: &ResultBuilder,
     case: &P4f3ExampleCase,
-    (fit, sq_half): (&FigureFit, &[f64]),
-    alternative: Option<(&[f64; 6], bool)>,
+    fit: &FigureFit,
+    sq_half: &[f64],
+    figure_box: &RoundingBox,
+    alternative: Option<&[f64; 6]>,
 ) -> ClaimResult {
     let squares: Vec<f64> = case.body.squares.iter().map(Printed::to_f64).collect();
     let mut r = b
@@ -181,8 +181,9 @@ fn figure_result(
             Value::interval(lo, hi),
         );
     }
+    let alternative = alternative.map(|a| (a, ex4::reproduces(figure_box, a)));
     // a singular figure system gives no body to mistake for the table's
-    let mut excluded = true;
+    let excluded = !alternative.is_some_and(|(_, found)| found);
     if let Some((alt, found)) = alternative {
         r = r
             .computed(
@@ -196,7 +197,6 @@ fn figure_result(
         if found {
             r = r.undecided("the same search finds exact views of the body the figure's digits give: the check cannot tell it from the table's body");
         }
-        excluded = !found;
     }
     r.verdict(alternative_verdict(
         if fit.witness.is_some() {

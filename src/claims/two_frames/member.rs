@@ -5,17 +5,17 @@ use nalgebra::Vector3;
 
 use crate::cases::Printed;
 use crate::check::{
-    alternative_verdict, ClaimResult, Power, ResultBuilder, Tolerance, ToleranceSource, Value,
-    Verdict,
+    alternative_verdict, ClaimBuilder, ClaimResult, Power, ResultBuilder, Tolerance,
+    ToleranceSource, Value, Verdict,
 };
 use crate::claims::two_frames::drawn_member::{
     member, read, rebuild, theta_bound, Picture, Reading,
 };
 use crate::claims::two_frames::{DrawnMember, TwoFramesCase};
 
-/// The drawn angle agrees with the printed points' when their difference, modulo π (both
-/// are folded into (−π/2, π/2], so −π/2 + ε and π/2 − ε are 2ε apart), lies within the two
-/// propagated roundings.
+/// The drawn angle agrees with the printed points' when their difference, folded into
+/// (−π/2, π/2] (turns are directions, defined modulo π: −π/2 + ε and π/2 − ε are 2ε
+/// apart), lies within the two propagated roundings.
 fn same_member(drawn: f64, printed: f64, bound: f64) -> bool {
     fold(drawn - printed).abs() <= bound
 }
@@ -157,17 +157,26 @@ pub(super) fn result(b: &ResultBuilder, case: &TwoFramesCase) -> Option<ClaimRes
         .power(Power::interval(deg(theta - bound), deg(theta + bound), deg(theta), deg(bound), "θ (degrees) of the printed points the drawings would accept: exactly what the drawings' three decimals and the printed points' digits allow"))
         .method("per picture: the cube's thin edges as the scene's axes (x along the frame-1 ray, z along n), their signs and the scale fitted to the labels of P and the two points of either body; the frame-2 rays' direction in the scene; the turn θ = φ′ − φ between the pictures of the two bodies, against the non-trivial root of (R(−θ)Q′ − Q) × (R(−θ)R′ − R) = 0 of the printed points; Q′ and R′ rebuilt from Q and R by the drawn member");
     r = picture_details(r, dm, &readings);
-    let (alternatives, excluded) = alternatives(theta, m.theta, bound);
-    r = r
+    Some(alternatives_result(r, holds, (theta, m.theta, bound)))
+}
+
+/// The verdict, with the alternatives the drawn turn must exclude: `(drawn, printed, bound)`.
+fn alternatives_result(
+    r: ClaimBuilder,
+    holds: bool,
+    (drawn, printed, bound): (f64, f64, f64),
+) -> ClaimResult {
+    let (alternatives, excluded) = alternatives(drawn, printed, bound);
+    let mut r = r
         .computed(
             "alternatives: the other root θ = 0 and the opposite turn −θ (degrees)",
-            Value::reals(&alternatives.map(deg)),
+            Value::reals(&alternatives.map(f64::to_degrees)),
         )
         .computed(
             "an alternative within the tolerance of θ drawn",
             Value::flag(!excluded),
         );
-    if !excluded {
+    if holds && !excluded {
         r = r.undecided("θ drawn lies within the tolerance of an alternative as well: the drawings cannot tell which member they show");
     }
     let v = if holds {
@@ -175,7 +184,7 @@ pub(super) fn result(b: &ResultBuilder, case: &TwoFramesCase) -> Option<ClaimRes
     } else {
         Verdict::Inconclusive
     };
-    Some(r.verdict(alternative_verdict(v, excluded)))
+    r.verdict(alternative_verdict(v, excluded))
 }
 
 #[cfg(test)]
@@ -193,7 +202,7 @@ mod tests {
     }
 
     #[test]
-    fn a_drawn_turn_near_an_alternative_excludes_nothing() {
+    fn alternatives_are_excluded_only_when_far_from_the_drawn_turn() {
         // a large turn, drawn within its bound: both alternatives lie far outside
         assert_eq!(alternatives(-0.75, -0.75, 0.01), ([0.0, 0.75], true));
         // a small turn: θ = 0 lies within the bound of the drawn turn

@@ -341,7 +341,7 @@ impl RatFn {
 /// `p` with each name of `used` (value Nⱼ / D) replaced, times D^d: (Σ cₘ·Nᵐ·D^(d−|m|), d),
 /// d the total degree of `p` in those names. The terms are grouped by their monomial m in
 /// the names first (one product per group, not per term), powers are cached, and the
-/// products are summed pairwise (a running sum would merge the growing total once a term).
+/// products are summed pairwise (a running sum re-merges the growing total once per term).
 fn homogenise_all(p: &Poly, used: &BTreeMap<&str, &RatFn>, d: &Poly) -> (Poly, u32) {
     let names: Vec<&str> = used.keys().copied().collect();
     let groups = split_in(p, &names);

@@ -87,9 +87,9 @@ pub fn eliminate() -> Eliminated {
 /// with x = a², y = b², z = c² (so facaₖ = 2(−aₖ² + bₖ² + cₖ²), …). Much smaller than in the
 /// projections, and what the appendix's printed coefficients are written in. Computed once
 /// per process (every appendix item and the audit's expansions read it).
-pub fn eliminate_symbolic() -> Eliminated {
+pub fn eliminate_symbolic() -> &'static Eliminated {
     static ONCE: std::sync::OnceLock<Eliminated> = std::sync::OnceLock::new();
-    ONCE.get_or_init(symbolic).clone()
+    ONCE.get_or_init(symbolic)
 }
 
 fn symbolic() -> Eliminated {

@@ -147,7 +147,8 @@ fn linear_coefficient(p: &Poly, e: usize) -> Poly {
 /// and checks are independent of the others' and run in parallel.
 pub fn expanded(case: &FormulaAuditCase, judged: Judged) -> Result<Vec<ExpandedFinding>> {
     let (expansions, work) = rayon::join(|| Expansions::new(case), || parsed(case, judged));
-    work?
+    // every formula computed, then the first error in case order (whichever finished first)
+    let found: Vec<Result<ExpandedFinding>> = work?
         .into_par_iter()
         .map(|(f, printed, corrected)| {
             let target = derived(&f.derived)
@@ -155,7 +156,8 @@ pub fn expanded(case: &FormulaAuditCase, judged: Judged) -> Result<Vec<ExpandedF
             let target = expansions.expand(&target);
             Ok(one(f, &target, printed, corrected, case))
         })
-        .collect()
+        .collect();
+    found.into_iter().collect()
 }
 
 /// A formula with its printed and corrected forms read.
@@ -170,22 +172,25 @@ fn parsed<'a>(case: &'a FormulaAuditCase, judged: Judged) -> Result<Vec<Read<'a>
     }
     let mut work = Vec::new();
     for f in &case.formulas {
-        if judged(f) {
-            let form = |t: &Option<String>| t.as_deref().map(|t| parse(t, &defs)).transpose();
-            work.push((f, form(&f.printed)?, form(&f.corrected)?));
+        let form = |t: &Option<String>| t.as_deref().map(|t| parse(t, &defs)).transpose();
+        // what `f` defines is its corrected form when it has one, read once
+        let defined = match judged(f) {
+            true => {
+                let (p, c) = (form(&f.printed)?, form(&f.corrected)?);
+                let defined = c.clone().or_else(|| p.clone());
+                work.push((f, p, c));
+                defined
+            }
+            false if f.defines.is_some() => {
+                form(f.corrected.as_ref().map_or(&f.printed, |_| &f.corrected))?
+            }
+            false => None,
+        };
+        if let (Some(name), Some(v)) = (&f.defines, defined) {
+            defs.insert(name.clone(), v);
         }
-        define(f, &mut defs)?;
     }
     Ok(work)
-}
-
-/// The name `f` defines, if any, read into `defs` (its corrected form when it has one).
-fn define(f: &FormulaItem, defs: &mut BTreeMap<String, RatFn>) -> Result<()> {
-    if let (Some(name), Some(text)) = (&f.defines, f.corrected.as_ref().or(f.printed.as_ref())) {
-        let v = parse(text, defs)?;
-        defs.insert(name.clone(), v);
-    }
-    Ok(())
 }
 
 fn parse(text: &str, defs: &BTreeMap<String, RatFn>) -> Result<RatFn> {

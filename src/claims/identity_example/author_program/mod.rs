@@ -249,7 +249,7 @@ pub fn delta_at_bound(ex: &Example, frame1: &[usize; 4]) -> Vec<DeltaAtBound> {
         .into_iter()
         .filter_map(|asg| {
             let (s1, s2) = (ex.exact_squares(0, frame1), ex.exact_squares(1, &asg));
-            let d: ExactDeltaB = exact_delta_b(&e, &s1, &s2)?;
+            let d: ExactDeltaB = exact_delta_b(e, &s1, &s2)?;
             let (bound, smaller) = if s1[2] > s2[2] {
                 (&s1[2], &s2[2])
             } else {

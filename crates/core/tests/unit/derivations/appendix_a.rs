@@ -11,7 +11,7 @@ fn exact_delta_b_matches_the_float_quadratic() {
     // projections (4, 8, 4) and (4, 5, 1) of the scene below; at c² = 5 the true b² = 9
     // is a root, so Δ_b ≥ 0 there
     let q = |v: [i64; 3]| v.map(|x| BigRational::from_integer(x.into()));
-    let d = exact_delta_b(&eliminate_symbolic(), &q([4, 8, 4]), &q([4, 5, 1])).unwrap();
+    let d = exact_delta_b(eliminate_symbolic(), &q([4, 8, 4]), &q([4, 5, 1])).unwrap();
     let at5 = d.eval(&BigRational::from_integer(5.into()));
     assert!(!at5.is_negative());
     assert!(d.f_cb_over_f_b2.is_some());
