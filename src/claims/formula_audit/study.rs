@@ -82,53 +82,69 @@ pub struct FormulaFinding {
     pub accepted: Option<Accepted>,
 }
 
-struct Defs(BTreeMap<String, RatFn>);
-
-impl Defs {
-    fn parse(&self, text: &str, keep: &[String]) -> Result<RatFn> {
-        let mut map = self.0.clone();
-        map.retain(|k, _| !keep.contains(k));
-        RatFn::parse_with(text, &map).map_err(|source| Error::Formula {
-            formula: text.to_string(),
-            source,
-        })
-    }
+/// `text` read with the names defined so far substituted, but for those in `keep` (the
+/// symbols a macro-level formula leaves free).
+fn parse_keeping(text: &str, defs: &BTreeMap<String, RatFn>, keep: &[String]) -> Result<RatFn> {
+    let mut map = defs.clone();
+    map.retain(|k, _| !keep.contains(k));
+    RatFn::parse_with(text, &map).map_err(|source| Error::Formula {
+        formula: text.to_string(),
+        source,
+    })
 }
 
 /// Which formulas of a case a study computes (the others only lend later ones what they
 /// define).
 pub type Judged<'a> = &'a (dyn Fn(&FormulaItem) -> bool + Sync);
 
-/// Every formula of the case that `judged` selects, in order (later formulas may use names
-/// earlier ones define, which are read whether judged or not). The parses run in order; the
-/// checks, independent of each other, in parallel.
-pub fn formulas(case: &FormulaAuditCase, judged: Judged) -> Result<Vec<FormulaFinding>> {
-    let mut defs = Defs(BTreeMap::new());
+/// A formula with its printed and corrected forms read.
+pub(super) type Read<'a> = (&'a FormulaItem, Option<RatFn>, Option<RatFn>);
+
+/// Each formula `judged` selects with its printed and corrected forms read by `parse` (the
+/// text, the names defined so far, the formula's free symbols), in order. What every formula
+/// defines, judged or not (its corrected form when it has one), is read once, for the
+/// formulas after it.
+pub(super) fn read_in_order<'a>(
+    case: &'a FormulaAuditCase,
+    judged: Judged,
+    parse: impl Fn(&str, &BTreeMap<String, RatFn>, &[String]) -> Result<RatFn>,
+) -> Result<Vec<Read<'a>>> {
+    let mut defs = BTreeMap::new();
     for d in &case.definitions {
-        let v = defs.parse(&d.printed, &[])?;
-        defs.0.insert(d.name.clone(), v);
+        let v = parse(&d.printed, &defs, &[])?;
+        defs.insert(d.name.clone(), v);
     }
     let mut work = Vec::new();
     for f in &case.formulas {
-        let parse = |t: &Option<String>| -> Result<Option<RatFn>> {
-            t.as_deref().map(|t| defs.parse(t, &f.symbols)).transpose()
+        let form = |t: &Option<String>| -> Result<Option<RatFn>> {
+            t.as_deref()
+                .map(|t| parse(t, &defs, &f.symbols))
+                .transpose()
         };
         let defined = match judged(f) {
             true => {
-                let (p, c) = (parse(&f.printed)?, parse(&f.corrected)?);
+                let (p, c) = (form(&f.printed)?, form(&f.corrected)?);
                 let defined = c.clone().or_else(|| p.clone());
                 work.push((f, p, c));
                 defined
             }
             false if f.defines.is_some() => {
-                parse(f.corrected.as_ref().map_or(&f.printed, |_| &f.corrected))?
+                form(f.corrected.as_ref().map_or(&f.printed, |_| &f.corrected))?
             }
             false => None,
         };
         if let (Some(name), Some(v)) = (&f.defines, defined) {
-            defs.0.insert(name.clone(), v);
+            defs.insert(name.clone(), v);
         }
     }
+    Ok(work)
+}
+
+/// Every formula of the case that `judged` selects, in order (later formulas may use names
+/// earlier ones define, which are read whether judged or not). The parses run in order; the
+/// checks, independent of each other, in parallel.
+pub fn formulas(case: &FormulaAuditCase, judged: Judged) -> Result<Vec<FormulaFinding>> {
+    let work = read_in_order(case, judged, parse_keeping)?;
     let (points, seed) = (case.evaluation_points, case.seed);
     // every formula computed, then the first error in case order (whichever finished first)
     let found: Vec<Result<FormulaFinding>> = work

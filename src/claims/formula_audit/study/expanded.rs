@@ -10,7 +10,7 @@ use num_rational::BigRational;
 use num_traits::One;
 use rayon::prelude::*;
 
-use super::{accepted_quadratic, flip_one_term, Form, Judged};
+use super::{accepted_quadratic, flip_one_term, read_in_order, Form, Judged};
 use crate::algebra::modp::{agree_mod_p, proportional_mod_p, ModPAgreement};
 use crate::algebra::{Monomial, Poly, RatFn};
 use crate::claims::formula_audit::{FormulaAuditCase, FormulaItem, Relation};
@@ -146,7 +146,10 @@ fn linear_coefficient(p: &Poly, e: usize) -> Poly {
 /// parses run in order (a formula reads what earlier ones define); each formula's expansion
 /// and checks are independent of the others' and run in parallel.
 pub fn expanded(case: &FormulaAuditCase, judged: Judged) -> Result<Vec<ExpandedFinding>> {
-    let (expansions, work) = rayon::join(|| Expansions::new(case), || parsed(case, judged));
+    let (expansions, work) = rayon::join(
+        || Expansions::new(case),
+        || read_in_order(case, judged, |t, defs, _| parse(t, defs)),
+    );
     // every formula computed, then the first error in case order (whichever finished first)
     let found: Vec<Result<ExpandedFinding>> = work?
         .into_par_iter()
@@ -160,39 +163,8 @@ pub fn expanded(case: &FormulaAuditCase, judged: Judged) -> Result<Vec<ExpandedF
     found.into_iter().collect()
 }
 
-/// A formula with its printed and corrected forms read.
-type Read<'a> = (&'a FormulaItem, Option<RatFn>, Option<RatFn>);
-
-/// Each formula `judged` selects with its printed and corrected forms read, in order.
-fn parsed<'a>(case: &'a FormulaAuditCase, judged: Judged) -> Result<Vec<Read<'a>>> {
-    let mut defs: BTreeMap<String, RatFn> = BTreeMap::new();
-    for d in &case.definitions {
-        let v = parse(&d.printed, &defs)?;
-        defs.insert(d.name.clone(), v);
-    }
-    let mut work = Vec::new();
-    for f in &case.formulas {
-        let form = |t: &Option<String>| t.as_deref().map(|t| parse(t, &defs)).transpose();
-        // what `f` defines is its corrected form when it has one, read once
-        let defined = match judged(f) {
-            true => {
-                let (p, c) = (form(&f.printed)?, form(&f.corrected)?);
-                let defined = c.clone().or_else(|| p.clone());
-                work.push((f, p, c));
-                defined
-            }
-            false if f.defines.is_some() => {
-                form(f.corrected.as_ref().map_or(&f.printed, |_| &f.corrected))?
-            }
-            false => None,
-        };
-        if let (Some(name), Some(v)) = (&f.defines, defined) {
-            defs.insert(name.clone(), v);
-        }
-    }
-    Ok(work)
-}
-
+/// `text` read with every name defined so far substituted (the expanded level leaves no
+/// symbol free).
 fn parse(text: &str, defs: &BTreeMap<String, RatFn>) -> Result<RatFn> {
     RatFn::parse_with(text, defs).map_err(|source| Error::Formula {
         formula: text.to_string(),
