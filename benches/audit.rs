@@ -10,6 +10,13 @@ fn audit(c: &mut Criterion) {
         .expect("the paper cases load");
     let mut g = c.benchmark_group("audit");
     g.sample_size(10);
+    // the fixed cost of every command: reading, parsing and validating the case files
+    g.bench_function("load_cases", |b| {
+        b.iter(|| {
+            cases::load_all::<orthocheck::claims::Check>(&orthocheck_benches::paper_cases())
+                .expect("the paper cases load")
+        })
+    });
     g.bench_function("whole_audit", |b| {
         b.iter(|| audit_all(&all, Wanted::All).expect("the audit runs"))
     });

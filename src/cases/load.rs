@@ -2,6 +2,7 @@
 
 use std::path::{Path, PathBuf};
 
+use super::plain_numbers::Tagged;
 use super::{validate::validate, Case, CaseOrigin, LatexSource, Schema};
 use crate::error::{Error, InputLocation, Result};
 
@@ -14,16 +15,18 @@ pub fn load_case<C: Schema>(path: &Path) -> Result<Case<C>> {
 /// lines of the source.
 pub fn load_case_with<C: Schema>(path: &Path, latex: Option<&LatexSource>) -> Result<Case<C>> {
     let text = read_case_text(path)?;
-    case_from_text(&text, path, latex)
+    case_from_text(&text, &Tagged::new(&text), path, latex)
 }
 
-/// Parse, validate and complete one case read from `path`.
+/// Parse, validate and complete one case read from `path`, `tagged` its text tagged.
 fn case_from_text<C: Schema>(
     text: &str,
+    tagged: &Tagged,
     path: &Path,
     latex: Option<&LatexSource>,
 ) -> Result<Case<C>> {
-    let mut case: Case<C> = parse_case(text, path)?;
+    let mut case: Case<C> = parse_tagged(tagged, path, &case_budget())?;
+    validate(&case, text, path)?;
     if let Some(latex) = latex {
         case.check.attach_source(text, path, latex)?;
     }
@@ -80,10 +83,18 @@ fn parse_yaml_budget<T: serde::de::DeserializeOwned>(
     path: &Path,
     budget: &serde_saphyr::Budget,
 ) -> Result<T> {
+    parse_tagged(&Tagged::new(text), path, budget)
+}
+
+/// [`parse_yaml_budget`] of a text already tagged.
+fn parse_tagged<T: serde::de::DeserializeOwned>(
+    tagged: &Tagged,
+    path: &Path,
+    budget: &serde_saphyr::Budget,
+) -> Result<T> {
     let limits = budget.clone();
     let options = serde_saphyr::options! { with_snippet: false, budget: Some(budget.clone()) };
     let mut field: Option<String> = None;
-    let tagged = super::plain_numbers::Tagged::new(text);
     let parsed =
         serde_saphyr::with_deserializer_from_str_with_options(&tagged.text, options, |de| {
             serde_path_to_error::deserialize(de).map_err(|e| {
@@ -289,11 +300,11 @@ pub fn load_cases<C: Schema>(
     let read = origin.case_texts()?;
     // the files parse independently, on every core; their errors are then taken in file
     // order, so that the first bad file is the one named, whatever finished first
-    let parsed: Vec<(Result<Case<C>>, Result<Names>)> = read
+    let parsed: Vec<(Result<Case<C>>, Names)> = read
         .par_iter()
         .map(|(p, text)| {
-            let named = parse_yaml_budget::<Claims>(text, p, &case_budget());
-            (case_from_text(text, p, latex), named.map(|c| c.named))
+            let tagged = Tagged::new(text);
+            (case_from_text(text, &tagged, p, latex), tagged.claims)
         })
         .collect();
     let mut cases = Vec::new();
@@ -301,7 +312,7 @@ pub fn load_cases<C: Schema>(
     let mut named = Vec::new();
     for ((p, text), (case, claims)) in read.into_iter().zip(parsed) {
         let case: Case<C> = case?;
-        named.push(claims?);
+        named.push(claims);
         if let Some(first) = cases.iter().position(|c: &Case<C>| c.id == case.id) {
             let other = cases[first].file.as_deref().unwrap_or(Path::new("?"));
             return Err(invalid(
@@ -421,89 +432,6 @@ fn known_restated_claims<C: Schema>(
         }
     }
     Ok(())
-}
-
-/// The string values of every `claim` key anywhere in a YAML tree (aliases resolved by the
-/// parser), nothing else kept: a case file's claims without building its whole tree.
-#[derive(Default)]
-struct Claims {
-    named: std::collections::BTreeSet<String>,
-    /// The node itself when it is a string (a `claim:` value is one).
-    text: Option<String>,
-}
-
-impl<'de> serde::Deserialize<'de> for Claims {
-    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> std::result::Result<Self, D::Error> {
-        d.deserialize_any(ClaimsVisitor)
-    }
-}
-
-impl Claims {
-    /// A scalar that may be a `claim:` value.
-    fn scalar(text: String) -> Claims {
-        Claims {
-            text: Some(text),
-            ..Claims::default()
-        }
-    }
-}
-
-struct ClaimsVisitor;
-
-impl<'de> serde::de::Visitor<'de> for ClaimsVisitor {
-    type Value = Claims;
-
-    fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
-        f.write_str("any YAML value")
-    }
-    fn visit_str<E>(self, v: &str) -> std::result::Result<Claims, E> {
-        Ok(Claims::scalar(v.to_string()))
-    }
-    fn visit_bool<E>(self, v: bool) -> std::result::Result<Claims, E> {
-        Ok(Claims::scalar(v.to_string()))
-    }
-    // a number or a YAML 1.1 boolean where a name belongs (`claim: 12`, `claim: yes`) is
-    // read as a name by the case, so it is one here too: the inventory check refuses it
-    fn visit_i64<E>(self, v: i64) -> std::result::Result<Claims, E> {
-        Ok(Claims::scalar(v.to_string()))
-    }
-    fn visit_u64<E>(self, v: u64) -> std::result::Result<Claims, E> {
-        Ok(Claims::scalar(v.to_string()))
-    }
-    fn visit_f64<E>(self, v: f64) -> std::result::Result<Claims, E> {
-        Ok(Claims::scalar(v.to_string()))
-    }
-    fn visit_unit<E>(self) -> std::result::Result<Claims, E> {
-        Ok(Claims::default())
-    }
-    fn visit_none<E>(self) -> std::result::Result<Claims, E> {
-        Ok(Claims::default())
-    }
-    fn visit_seq<A: serde::de::SeqAccess<'de>>(
-        self,
-        mut seq: A,
-    ) -> std::result::Result<Claims, A::Error> {
-        let mut out = Claims::default();
-        while let Some(x) = seq.next_element::<Claims>()? {
-            out.named.extend(x.named);
-        }
-        Ok(out)
-    }
-    fn visit_map<A: serde::de::MapAccess<'de>>(
-        self,
-        mut map: A,
-    ) -> std::result::Result<Claims, A::Error> {
-        let mut out = Claims::default();
-        while let Some((k, v)) = map.next_entry::<Claims, Claims>()? {
-            match (k.text.as_deref(), v.text) {
-                (Some("claim"), Some(id)) => {
-                    out.named.insert(id);
-                }
-                _ => out.named.extend(v.named),
-            }
-        }
-        Ok(out)
-    }
 }
 
 #[cfg(test)]

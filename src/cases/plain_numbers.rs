@@ -7,6 +7,11 @@
 //! digits, a radix prefix, digit separators) is tagged `!!str`. A text field reads it as the
 //! same text, so nothing changes there; a number field refuses it, and the refusal is
 //! translated back to the scalar as the user wrote it.
+//!
+//! The same pass over the parser's events collects the file's `claim:` names, so that a
+//! case file is parsed twice in all (here, and typed), not once more for its names.
+
+use std::collections::{BTreeMap, BTreeSet};
 
 use granit_parser::{Event, Parser, ScalarStyle};
 
@@ -31,6 +36,70 @@ pub(super) struct Tagged {
     /// The rewritten text: the original where nothing was marked.
     pub text: String,
     marked: Vec<Marked>,
+    /// The value of every `claim` key anywhere in the file, as written (a scalar alias
+    /// resolved): up to the first syntax error, which the typed parse then reports.
+    pub claims: BTreeSet<String>,
+}
+
+/// Where the parser stands in a collection: a sequence, or a mapping about to read a key or
+/// the value of the key it read (`claim` or another).
+enum Frame {
+    Sequence,
+    Key,
+    Value { claim: bool },
+}
+
+/// The `claim:` values of a stream of events.
+#[derive(Default)]
+struct ClaimNames {
+    frames: Vec<Frame>,
+    /// Anchored scalars, for a `claim: *name`.
+    anchored: BTreeMap<usize, String>,
+    names: BTreeSet<String>,
+}
+
+impl ClaimNames {
+    /// Take one event; `scalar` is the text of a scalar node or of the scalar an alias names.
+    fn event(&mut self, event: &Event) {
+        let scalar = match event {
+            Event::Scalar(value, style, anchor, _) => {
+                if *anchor != 0 {
+                    self.anchored.insert(*anchor, value.to_string());
+                }
+                // a null value names no claim (the typed case refuses it)
+                let null = *style == ScalarStyle::Plain
+                    && matches!(value.as_ref(), "" | "~" | "null" | "Null" | "NULL");
+                (!null).then_some(value.as_ref())
+            }
+            Event::Alias(id) => self.anchored.get(id).map(String::as_str),
+            Event::SequenceStart(..) | Event::MappingStart(..) => None,
+            Event::SequenceEnd | Event::MappingEnd => {
+                self.frames.pop();
+                return;
+            }
+            _ => return,
+        };
+        let next = match self.frames.last_mut() {
+            Some(Frame::Key) => Some(Frame::Value {
+                claim: scalar == Some("claim"),
+            }),
+            Some(Frame::Value { claim }) => {
+                if let (true, Some(name)) = (*claim, scalar) {
+                    self.names.insert(name.to_string());
+                }
+                Some(Frame::Key)
+            }
+            _ => None,
+        };
+        if let (Some(next), Some(top)) = (next, self.frames.last_mut()) {
+            *top = next;
+        }
+        match event {
+            Event::SequenceStart(..) => self.frames.push(Frame::Sequence),
+            Event::MappingStart(..) => self.frames.push(Frame::Key),
+            _ => {}
+        }
+    }
 }
 
 impl Tagged {
@@ -38,11 +107,13 @@ impl Tagged {
     /// so that the deserializer reports the syntax error in its own words.
     pub fn new(text: &str) -> Tagged {
         let mut inserts = Vec::new();
+        let mut claims = ClaimNames::default();
         for event in Parser::new_from_str(text) {
-            let (value, style, span) = match event {
-                Ok((Event::Scalar(value, style, _, None), span)) => (value, style, span),
-                Ok(_) => continue,
-                Err(_) => break,
+            let Ok((event, span)) = event else { break };
+            claims.event(&event);
+            let (value, style) = match event {
+                Event::Scalar(value, style, _, None) => (value, style),
+                _ => continue,
             };
             let quoted = matches!(style, ScalarStyle::SingleQuoted | ScalarStyle::DoubleQuoted);
             let lenient = match style {
@@ -54,7 +125,10 @@ impl Tagged {
                 inserts.push((range.start, range.end, quoted));
             }
         }
-        Tagged::rewrite(text, &inserts)
+        Tagged {
+            claims: claims.names,
+            ..Tagged::rewrite(text, &inserts)
+        }
     }
 
     fn rewrite(text: &str, inserts: &[(usize, usize, bool)]) -> Tagged {
@@ -80,7 +154,11 @@ impl Tagged {
             done = start;
         }
         out.push_str(&text[done..]);
-        Tagged { text: out, marked }
+        Tagged {
+            text: out,
+            marked,
+            claims: BTreeSet::new(),
+        }
     }
 
     /// The column in the original text of a column of the rewritten one, on `line`.
@@ -169,6 +247,16 @@ mod tests {
         assert!(t.refusal(2, 4).unwrap().contains("`0xC8`"));
         assert!(t.refusal(5, 19).unwrap().contains("'9'"));
         assert_eq!(t.refusal(3, 4), None);
+    }
+
+    #[test]
+    fn claim_names_are_collected_wherever_a_claim_key_is() {
+        let t = Tagged::new(
+            "claim: a\nlist:\n  - {claim: b, x: [claim, 1]}\n  - claim: &c c\n  - claim: *c\n\
+             m: {claim: [d]}\nn: {? [claim]\n   : e, claim: 1.0}\no: {claim: ~}\n",
+        );
+        let names: Vec<&str> = t.claims.iter().map(String::as_str).collect();
+        assert_eq!(names, ["1.0", "a", "b", "c"]);
     }
 
     #[test]

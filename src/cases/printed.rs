@@ -45,14 +45,16 @@ impl Printed {
             return None;
         }
         let mantissa_value = parse_decimal(mantissa)?;
-        let scale = BigRational::from_integer(num_traits::pow(
-            BigInt::from(10),
-            exponent.unsigned_abs() as usize,
-        ));
-        let value = if exponent >= 0 {
-            mantissa_value * scale
-        } else {
-            mantissa_value / scale
+        let scale = || {
+            BigRational::from_integer(num_traits::pow(
+                BigInt::from(10),
+                exponent.unsigned_abs() as usize,
+            ))
+        };
+        let value = match exponent.signum() {
+            0 => mantissa_value,
+            1 => mantissa_value * scale(),
+            _ => mantissa_value / scale(),
         };
         let decimals = mantissa.split_once('.').map_or(0, |(_, f)| f.len() as i32) - exponent;
         // an exact value f64 cannot hold (overflow, or a non-zero number underflowing to 0)

@@ -89,11 +89,35 @@ pub fn parse_decimal(s: &str) -> Option<BigRational> {
     {
         return None;
     }
-    let digits = format!("{int}{frac}");
-    let num: BigInt = digits.parse().ok()?;
-    let den = num_traits::pow(BigInt::from(10), frac.len());
-    let v = BigRational::new(num, den);
+    let v = match decimal_in_words(int, frac) {
+        Some((num, den)) => BigRational::new_raw(num.into(), den.into()),
+        None => {
+            let num: BigInt = format!("{int}{frac}").parse().ok()?;
+            BigRational::new(num, num_traits::pow(BigInt::from(10), frac.len()))
+        }
+    };
     Some(if neg { -v } else { v })
+}
+
+/// `int.frac` (ASCII digits) as a reduced fraction of machine words, when its digits fit:
+/// the denominator is 2^a·5^b, so reducing is dividing out those factors alone, and the
+/// big-integer gcd of the general case is not needed for the printed numbers of a case.
+fn decimal_in_words(int: &str, frac: &str) -> Option<(u64, u64)> {
+    // 10^19 > u64::MAX, so up to 18 fractional digits and 19 digits in all
+    if frac.len() > 18 || int.len() + frac.len() > 19 {
+        return None;
+    }
+    let mut num = 0u64;
+    for b in int.bytes().chain(frac.bytes()) {
+        num = num.checked_mul(10)?.checked_add(u64::from(b - b'0'))?;
+    }
+    let mut den = 10u64.pow(frac.len() as u32);
+    for p in [2, 5] {
+        while den % p == 0 && num % p == 0 {
+            (num, den) = (num / p, den / p);
+        }
+    }
+    Some(if num == 0 { (0, 1) } else { (num, den) })
 }
 
 struct Parser<'a> {

@@ -53,6 +53,19 @@ proptest! {
     }
 
     #[test]
+    fn a_decimal_is_its_digits_over_a_power_of_ten(
+        neg in any::<bool>(), int in "[0-9]{0,21}", frac in "[0-9]{0,21}",
+    ) {
+        prop_assume!(!(int.is_empty() && frac.is_empty()));
+        let digits: num_bigint::BigInt = format!("0{int}{frac}").parse().unwrap();
+        let ten = num_traits::pow(num_bigint::BigInt::from(10), frac.len());
+        let sign = if neg { "-" } else { "" };
+        let v = orthocheck_core::algebra::parse_decimal(&format!("{sign}{int}.{frac}")).unwrap();
+        let want = BigRational::new(digits, ten);
+        prop_assert_eq!(v, if neg { -want } else { want });
+    }
+
+    #[test]
     fn printing_round_trips(a in poly()) {
         prop_assert_eq!(Poly::parse(&a.to_string()).unwrap(), a);
     }
