@@ -113,7 +113,7 @@ fn decimal_in_words(int: &str, frac: &str) -> Option<(u64, u64)> {
     }
     let mut den = 10u64.pow(frac.len() as u32);
     for p in [2, 5] {
-        while den % p == 0 && num % p == 0 {
+        while den.is_multiple_of(p) && num.is_multiple_of(p) {
             (num, den) = (num / p, den / p);
         }
     }

@@ -330,6 +330,39 @@ impl Poly {
         out
     }
 
+    /// The polynomial with its variables renamed at once by `to` (`(from, to)` pairs; a name
+    /// not listed keeps its name): one pass over the terms, where substituting one variable
+    /// after another would multiply polynomials. Names renamed to one name multiply
+    /// (x·y with x, y → z is z²).
+    pub fn rename(&self, to: &[(&str, &str)]) -> Poly {
+        if self.is_zero() {
+            return Poly::zero();
+        }
+        let names: Vec<&str> = self
+            .ring
+            .names()
+            .iter()
+            .map(|n| {
+                to.iter()
+                    .find(|(f, _)| **f == **n)
+                    .map_or(&**n, |(_, t)| *t)
+            })
+            .collect();
+        let ring = Ring::new(&names);
+        let at: Vec<usize> = names.iter().filter_map(|n| ring.index(n)).collect();
+        let terms = (0..self.prim.len())
+            .map(|t| {
+                let mut e = vec![0u32; ring.nvars()];
+                for (i, k) in self.prim.exponents(t).into_iter().enumerate() {
+                    e[at[i]] += k;
+                }
+                (e, self.prim.coef(t).clone())
+            })
+            .collect();
+        let p = MPoly::from_terms(ring.nvars(), terms);
+        Poly::from_parts(Arc::new(ring), self.content.clone(), p)
+    }
+
     /// Evaluate at a rational point; `None` if a variable has no value.
     pub fn eval(&self, values: &BTreeMap<String, BigRational>) -> Option<BigRational> {
         let at: Vec<&BigRational> = self

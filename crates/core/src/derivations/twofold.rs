@@ -62,6 +62,22 @@ fn square_out(p: &Poly, radical: &str, rads: &[(&str, Poly)]) -> Poly {
 /// assert_eq!(p.degree(), 4);
 /// ```
 pub fn twofold_squared(signs: [i64; 3]) -> Poly {
+    // derived once per sign pattern: the audit and the census ask for the same few
+    static DERIVED: Mutex<Vec<([i64; 3], Poly)>> = Mutex::new(Vec::new());
+    let cache = || {
+        DERIVED
+            .lock()
+            .unwrap_or_else(std::sync::PoisonError::into_inner)
+    };
+    if let Some((_, p)) = cache().iter().find(|(k, _)| *k == signs) {
+        return p.clone();
+    }
+    let p = derive_twofold_squared(signs);
+    cache().push((signs, p.clone()));
+    p
+}
+
+fn derive_twofold_squared(signs: [i64; 3]) -> Poly {
     let rads = radicals();
     let relation = ["rA", "rB", "rC"]
         .iter()
@@ -104,29 +120,24 @@ fn derive_frame_equation(edges: [&str; 3], frame: &str) -> Poly {
     if frame == "i" {
         return p;
     }
-    edges.iter().fold(p, |q, e| {
-        q.substitute(&format!("{e}_i"), &Poly::var(&format!("{e}_{frame}")))
-    })
+    let names = edges.map(|e| (format!("{e}_i"), format!("{e}_{frame}")));
+    let to: Vec<(&str, &str)> = names.iter().map(|(f, t)| (&**f, &**t)).collect();
+    p.rename(&to)
 }
 
 /// `s₀√(e₀² − e₀ᵢ²) + s₁√(e₁² − e₁ᵢ²) + s₂√(e₂² − e₂ᵢ²) = 0` squared twice, in the edge
 /// letters `edges` and frame `i`.
 pub fn relation_squared(edges: [&str; 3], signs: [i64; 3]) -> Poly {
-    let mut p = twofold_squared(signs);
-    for (k, (from, from_i)) in [("a", "a_i"), ("b", "b_i"), ("c", "c_i")]
-        .iter()
-        .enumerate()
-    {
-        p = p
-            .substitute(from, &Poly::var(&format!("#e{k}")))
-            .substitute(from_i, &Poly::var(&format!("#p{k}")));
-    }
-    for (k, e) in edges.iter().enumerate() {
-        p = p
-            .substitute(&format!("#e{k}"), &Poly::var(e))
-            .substitute(&format!("#p{k}"), &Poly::var(&format!("{e}_i")));
-    }
-    p
+    let projections = edges.map(|e| format!("{e}_i"));
+    let to = [
+        ("a", edges[0]),
+        ("b", edges[1]),
+        ("c", edges[2]),
+        ("a_i", &*projections[0]),
+        ("b_i", &*projections[1]),
+        ("c_i", &*projections[2]),
+    ];
+    twofold_squared(signs).rename(&to)
 }
 
 /// The product of `√A ± √B ± √C` over the four sign classes, reduced: the radical-free norm

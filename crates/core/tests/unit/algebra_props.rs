@@ -66,6 +66,16 @@ proptest! {
     }
 
     #[test]
+    fn renaming_is_substituting_the_new_names(a in poly(), to in prop::sample::select(vec![
+        [("x", "y"), ("y", "x")], [("x", "w"), ("z", "x")], [("x", "z"), ("y", "z")], [("y", "v"), ("w", "x")],
+    ])) {
+        // one at a time through fresh names, so that a swap does not clash
+        let fresh = to.iter().fold(a.clone(), |p, (f, _)| p.substitute(f, &Poly::var(&format!("#{f}"))));
+        let want = to.iter().fold(fresh, |p, (f, t)| p.substitute(&format!("#{f}"), &Poly::var(t)));
+        prop_assert_eq!(a.rename(&to), want);
+    }
+
+    #[test]
     fn printing_round_trips(a in poly()) {
         prop_assert_eq!(Poly::parse(&a.to_string()).unwrap(), a);
     }
