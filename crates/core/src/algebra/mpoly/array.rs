@@ -9,6 +9,11 @@
 //! descending lexicographic order, so one stable pass by total degree puts the product in
 //! the ring's graded order, with no sort.
 //!
+//! Where both operands' terms fill at least half of their rows along the last variable (a
+//! dense product such as Fateman's), a pair of groups is multiplied row by row: two terms of
+//! one row sweep the other, so the two products that meet in a slot are summed in registers
+//! and the slots are written in order. Otherwise each product is added at its own index.
+//!
 //! Coefficients are machine words, so every product fits an i128. A slot is an i128 when
 //! the sums provably fit it (max|a| · max|b| · min(m, n) < 2¹²⁶), else an i128 and a count
 //! of its overflows (FLINT's three-limb accumulator): the count is at most the number of
@@ -30,8 +35,12 @@ const MAX_ENTRIES: usize = 1 << 23;
 trait Slot: Copy + Default {
     /// Add a product of two words.
     fn add(&mut self, p: i128);
-    /// The sum, `None` for zero.
-    fn coef(self) -> Option<Coef>;
+    /// Add two products of two words that meet in this slot.
+    fn add2(&mut self, p: i128, q: i128);
+    /// Whether the sum is zero.
+    fn is_zero(&self) -> bool;
+    /// The sum.
+    fn coef(self) -> Coef;
 }
 
 impl Slot for i128 {
@@ -39,8 +48,16 @@ impl Slot for i128 {
     fn add(&mut self, p: i128) {
         *self += p;
     }
-    fn coef(self) -> Option<Coef> {
-        (self != 0).then(|| Coef::from_i128(self))
+    #[inline(always)]
+    fn add2(&mut self, p: i128, q: i128) {
+        // every partial sum of a slot's products fits: the plan bounded their magnitudes' sum
+        *self += p + q;
+    }
+    fn is_zero(&self) -> bool {
+        *self == 0
+    }
+    fn coef(self) -> Coef {
+        Coef::from_i128(self)
     }
 }
 
@@ -59,13 +76,19 @@ impl Slot for Wide {
         // an overflow wraps by 2¹²⁸ in the direction of p's sign
         self.wraps += i64::from(over) * ((p >> 127) as i64 | 1);
     }
-    fn coef(self) -> Option<Coef> {
+    #[inline(always)]
+    fn add2(&mut self, p: i128, q: i128) {
+        self.add(p);
+        self.add(q);
+    }
+    fn is_zero(&self) -> bool {
+        self.lo == 0 && self.wraps == 0
+    }
+    fn coef(self) -> Coef {
         if self.wraps == 0 {
-            return Slot::coef(self.lo);
+            return Coef::from_i128(self.lo);
         }
-        Some(Coef::from_big(
-            (BigInt::from(self.wraps) << 128u32) + BigInt::from(self.lo),
-        ))
+        Coef::from_big((BigInt::from(self.wraps) << 128u32) + BigInt::from(self.lo))
     }
 }
 
@@ -211,29 +234,113 @@ fn accumulate<S: Slot>(chunk: &mut [S], a: &[(usize, i64)], b: &[(usize, i64)]) 
     }
 }
 
-/// The product's terms as drained, chunk after chunk (descending lexicographic order).
-struct Drained {
+/// One operand's groups as rows along the last variable: each row the coefficients of
+/// consecutive exponents of that variable (a gap filled with zeros), with the chunk index of
+/// its first one. Group `o` holds rows `start[o]..start[o + 1]`.
+struct Rows {
+    start: Vec<u32>,
+    /// (chunk index of the first coefficient, offset into `coefs`, length)
+    rows: Vec<(usize, usize, usize)>,
+    coefs: Vec<i64>,
+}
+
+impl Rows {
+    /// The rows of `g`, `last` the size of the last variable's dimension.
+    fn new(g: &Groups, last: usize) -> Rows {
+        let groups = g.start.len() - 1;
+        let mut out = Rows {
+            start: Vec::with_capacity(groups + 1),
+            rows: Vec::new(),
+            coefs: Vec::with_capacity(g.terms.len()),
+        };
+        out.start.push(0);
+        for o in 0..groups {
+            let first = out.rows.len();
+            for &(i, c) in g.terms(o) {
+                match out.rows[first..].last_mut() {
+                    // the same exponents but the last: the row goes on (terms ascend)
+                    Some(r) if r.0 / last == i / last => {
+                        let gap = i - r.0 - r.2;
+                        out.coefs.extend(std::iter::repeat_n(0, gap));
+                        r.2 += gap + 1;
+                    }
+                    _ => out.rows.push((i, out.coefs.len(), 1)),
+                }
+                out.coefs.push(c);
+            }
+            out.start.push(out.rows.len() as u32);
+        }
+        out
+    }
+
+    fn group(&self, o: usize) -> &[(usize, usize, usize)] {
+        &self.rows[self.start[o] as usize..self.start[o + 1] as usize]
+    }
+
+    fn coefs(&self, r: &(usize, usize, usize)) -> &[i64] {
+        &self.coefs[r.1..r.1 + r.2]
+    }
+}
+
+/// `chunk[at + i + j] += a[i] · b[j]`: the product of two rows (neither empty). Two terms
+/// of the shorter row at a time sweep the longer one, the two products that meet in a slot
+/// summed in registers: a slot is written once per two products, at consecutive places, so
+/// no index is computed per product.
+#[inline]
+fn convolve<S: Slot>(chunk: &mut [S], at: usize, a: &[i64], b: &[i64]) {
+    let (a, b) = if a.len() <= b.len() { (a, b) } else { (b, a) };
+    // the rows' exponents add up inside the box, so the slots are the chunk's
+    let out = &mut chunk[at..at + a.len() + b.len() - 1];
+    let mut pairs = a.chunks_exact(2);
+    let mut k = 0;
+    for two in &mut pairs {
+        let (x0, x1) = (i128::from(two[0]), i128::from(two[1]));
+        let run = &mut out[k..=k + b.len()];
+        // b[j] meets x0 in slot j and x1 in slot j + 1; `prev` is a word, not an i128, so
+        // that each product stays one widening multiplication
+        let mut prev = 0i64;
+        for (slot, &y) in run.iter_mut().zip(b) {
+            slot.add2(x0 * i128::from(y), x1 * i128::from(prev));
+            prev = y;
+        }
+        if let Some(s) = run.last_mut() {
+            s.add(x1 * i128::from(prev));
+        }
+        k += 2;
+    }
+    for &x in pairs.remainder() {
+        let x = i128::from(x);
+        for (slot, &y) in out[k..].iter_mut().zip(b) {
+            slot.add(x * i128::from(y));
+        }
+    }
+}
+
+/// The product's terms as drained, chunk after chunk (descending lexicographic order), their
+/// sums kept as accumulated until they take their place in the graded order.
+struct Drained<S> {
     pack: Packing,
     degree: Vec<u32>,
     exps: Vec<u64>,
-    coefs: Vec<Coef>,
+    sums: Vec<S>,
 }
 
-impl Drained {
+impl<S: Slot> Drained<S> {
     /// Move the non-zero slots of `chunk` (outer exponents in `e[..split]`) out, zeroing it.
-    fn drain<S: Slot>(&mut self, chunk: &mut [S], e: &mut [u32], split: usize, inner: &[usize]) {
+    fn drain(&mut self, chunk: &mut [S], e: &mut [u32], split: usize, inner: &[usize]) {
         let stride = strides(inner);
         let mut w = vec![0u64; self.pack.words];
         let size: usize = inner.iter().product();
         for k in (0..size).rev() {
-            let Some(c) = std::mem::take(&mut chunk[k]).coef() else {
+            let c = std::mem::take(&mut chunk[k]);
+            if c.is_zero() {
                 continue;
-            };
+            }
             decode(k, &stride, inner, &mut e[split..]);
             self.pack.pack_into(e, &mut w);
             self.degree.push(self.pack.degree(&w) as u32);
             self.exps.extend_from_slice(&w);
-            self.coefs.push(c);
+            self.sums.push(c);
         }
     }
 
@@ -248,12 +355,12 @@ impl Drained {
             first[i] += first[i - 1];
         }
         let mut exps = vec![0u64; self.exps.len()];
-        let mut coefs = vec![Coef::Small(0); self.coefs.len()];
-        for (t, (&d, c)) in self.degree.iter().zip(self.coefs).enumerate() {
+        let mut coefs = vec![Coef::Small(0); self.sums.len()];
+        for (t, (&d, c)) in self.degree.iter().zip(self.sums).enumerate() {
             let slot = &mut first[max_degree - d as usize];
             exps[*slot * words..(*slot + 1) * words]
                 .copy_from_slice(&self.exps[t * words..(t + 1) * words]);
-            coefs[*slot] = c;
+            coefs[*slot] = c.coef();
             *slot += 1;
         }
         MPoly {
@@ -283,9 +390,13 @@ fn product_in<S: Slot>(a: &MPoly, b: &MPoly, dims: &[usize], split: usize, pack:
         pack,
         degree: Vec::new(),
         exps: Vec::new(),
-        coefs: Vec::new(),
+        sums: Vec::new(),
     };
     let mut e = vec![0u32; dims.len()];
+    let last = inner.last().copied().unwrap_or(1);
+    let (ra, rb) = (Rows::new(&ga, last), Rows::new(&gb, last));
+    // rows at least half full: their zeros cost less than an index per product
+    let dense = ra.coefs.len() <= 2 * a.len() && rb.coefs.len() <= 2 * b.len();
     for o in (0..outer.iter().product::<usize>()).rev() {
         decode(o, &so, outer, &mut e[..split]);
         let mut touched = false;
@@ -295,9 +406,18 @@ fn product_in<S: Slot>(a: &MPoly, b: &MPoly, dims: &[usize], split: usize, pack:
                 continue;
             }
             let tb = gb.terms(o - pa);
-            if !tb.is_empty() {
+            if tb.is_empty() {
+                continue;
+            }
+            touched = true;
+            if dense {
+                for x in ra.group(*pa) {
+                    for y in rb.group(o - pa) {
+                        convolve(&mut chunk, x.0 + y.0, ra.coefs(x), rb.coefs(y));
+                    }
+                }
+            } else {
                 accumulate(&mut chunk, ga.terms(*pa), tb);
-                touched = true;
             }
         }
         if touched {

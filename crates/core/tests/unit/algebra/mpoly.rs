@@ -109,6 +109,26 @@ mod array_against_heap {
             .boxed()
     }
 
+    /// Every exponent vector below `e` in `n` variables, coefficients of up to `bits` bits,
+    /// about one in seven of them zero.
+    fn full_box(n: u32, e: u32, bits: u32) -> BoxedStrategy<MPoly> {
+        let c = (1i64 << (bits - 1)) - 1;
+        let len = e.pow(n) as usize;
+        prop::collection::vec(prop::option::weighted(0.85, -c..=c), len)
+            .prop_map(move |cs| {
+                let t = cs
+                    .into_iter()
+                    .enumerate()
+                    .map(|(k, c)| {
+                        let x = (0..n).map(|i| (k as u32 / e.pow(i)) % e).collect();
+                        (x, Coef::Small(c.unwrap_or(0)))
+                    })
+                    .collect();
+                MPoly::from_terms(n as usize, t)
+            })
+            .boxed()
+    }
+
     /// The array applies (the shapes below are dense enough) and gives the heap's product.
     fn agree(a: &MPoly, b: &MPoly) -> Result<(), TestCaseError> {
         let p = mul_array(a, b);
@@ -159,6 +179,19 @@ mod array_against_heap {
                   c in terms(4, 500..700, 11, 50), d in terms(4, 500..700, 11, 50)) {
             agree(&a, &b)?;
             agree(&c, &d)?;
+        }
+
+        // rows at least half full (the products row by row): every exponent of a box, about
+        // one coefficient in seven zero (gaps inside the rows), one to four variables, one
+        // chunk or several, sums within an i128 or beyond; b's exponents one lower, so that
+        // the box's sides are even (a power of two among them, whose last slot ends the chunk)
+        #[test]
+        fn dense_rows((a, b) in (1u32..5, 3u32..10, prop::sample::select(vec![40u32, 62]))
+            .prop_flat_map(|(n, e, bits)| {
+                let e = match n { 1 => e.max(5), 4 => e.min(6), _ => e };
+                (full_box(n, e, bits), full_box(n, e - 1, bits))
+            })) {
+            agree(&a, &b)?;
         }
 
         // word-sized coefficients: the slots that count their overflows
