@@ -24,8 +24,10 @@ use crate::studies::points::{agree_at_points, PointCheck};
 
 mod expanded;
 mod export;
+mod reading;
 pub use expanded::{expanded, ExpandedFinding, Screened};
 pub use export::{sympy_scripts, Script};
+use reading::{Reading, Text};
 
 /// Which form of a formula was accepted.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -82,74 +84,27 @@ pub struct FormulaFinding {
     pub accepted: Option<Accepted>,
 }
 
-/// `text` read with the names defined so far substituted, but for those in `keep` (the
-/// symbols a macro-level formula leaves free).
-fn parse_keeping(text: &str, defs: &BTreeMap<String, RatFn>, keep: &[String]) -> Result<RatFn> {
-    let mut map = defs.clone();
-    map.retain(|k, _| !keep.contains(k));
-    RatFn::parse_with(text, &map).map_err(|source| Error::Formula {
-        formula: text.to_string(),
-        source,
-    })
-}
-
 /// Which formulas of a case a study computes (the others only lend later ones what they
 /// define).
 pub type Judged<'a> = &'a (dyn Fn(&FormulaItem) -> bool + Sync);
 
-/// A formula with its printed and corrected forms read.
-pub(super) type Read<'a> = (&'a FormulaItem, Option<RatFn>, Option<RatFn>);
-
-/// Each formula `judged` selects with its printed and corrected forms read by `parse` (the
-/// text, the names defined so far, the formula's free symbols), in order. What every formula
-/// defines, judged or not (its corrected form when it has one), is read once, for the
-/// formulas after it.
-pub(super) fn read_in_order<'a>(
-    case: &'a FormulaAuditCase,
-    judged: Judged,
-    parse: impl Fn(&str, &BTreeMap<String, RatFn>, &[String]) -> Result<RatFn>,
-) -> Result<Vec<Read<'a>>> {
-    let mut defs = BTreeMap::new();
-    for d in &case.definitions {
-        let v = parse(&d.printed, &defs, &[])?;
-        defs.insert(d.name.clone(), v);
-    }
-    let mut work = Vec::new();
-    for f in &case.formulas {
-        let form = |t: &Option<String>| -> Result<Option<RatFn>> {
-            t.as_deref()
-                .map(|t| parse(t, &defs, &f.symbols))
-                .transpose()
-        };
-        let defined = match judged(f) {
-            true => {
-                let (p, c) = (form(&f.printed)?, form(&f.corrected)?);
-                let defined = c.clone().or_else(|| p.clone());
-                work.push((f, p, c));
-                defined
-            }
-            false if f.defines.is_some() => {
-                form(f.corrected.as_ref().map_or(&f.printed, |_| &f.corrected))?
-            }
-            false => None,
-        };
-        if let (Some(name), Some(v)) = (&f.defines, defined) {
-            defs.insert(name.clone(), v);
-        }
-    }
-    Ok(work)
-}
-
-/// Every formula of the case that `judged` selects, in order (later formulas may use names
-/// earlier ones define, which are read whether judged or not). The parses run in order; the
-/// checks, independent of each other, in parallel.
+/// Every formula of the case that `judged` selects, in order, each with the names bound
+/// before it substituted but its free symbols (read when a formula needs them, once). The
+/// formulas are read and checked in parallel.
 pub fn formulas(case: &FormulaAuditCase, judged: Judged) -> Result<Vec<FormulaFinding>> {
-    let work = read_in_order(case, judged, parse_keeping)?;
+    let reading = Reading::new(case, true);
     let (points, seed) = (case.evaluation_points, case.seed);
     // every formula computed, then the first error in case order (whichever finished first)
-    let found: Vec<Result<FormulaFinding>> = work
-        .into_par_iter()
-        .map(|(f, printed, corrected)| formula(f, printed, corrected, points, seed))
+    let found: Vec<Result<FormulaFinding>> = case
+        .formulas
+        .par_iter()
+        .enumerate()
+        .filter(|(_, f)| judged(f))
+        .map(|(i, f)| {
+            let printed = reading.read(Text::Printed(i))?;
+            let corrected = reading.read(Text::Corrected(i))?;
+            formula(f, printed, corrected, points, seed)
+        })
         .collect();
     found.into_iter().collect()
 }

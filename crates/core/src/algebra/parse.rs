@@ -10,16 +10,24 @@ use num_traits::ToPrimitive;
 use super::{Poly, RatFn};
 use crate::error::ParseError;
 
+/// What an identifier stands for, if it has a definition.
+pub(crate) type Lookup<'a> = &'a dyn Fn(&str) -> Option<&'a RatFn>;
+
 /// Parse into a rational function; identifiers with a definition stand for it.
 pub(crate) fn parse_rational(
     text: &str,
     defs: &BTreeMap<String, RatFn>,
 ) -> Result<RatFn, ParseError> {
+    parse_looking_up(text, &|name| defs.get(name))
+}
+
+/// Parse into a rational function; an identifier stands for what `lookup` gives it.
+pub(crate) fn parse_looking_up(text: &str, lookup: Lookup) -> Result<RatFn, ParseError> {
     let tokens = tokenize(text)?;
     let mut parser = Parser {
         tokens,
         pos: 0,
-        defs,
+        lookup,
     };
     let p = parser.sum()?;
     if parser.pos != parser.tokens.len() {
@@ -120,10 +128,23 @@ fn decimal_in_words(int: &str, frac: &str) -> Option<(u64, u64)> {
     Some(if num == 0 { (0, 1) } else { (num, den) })
 }
 
+/// The identifiers of `text`, in order of first appearance.
+pub(crate) fn identifiers(text: &str) -> Result<Vec<String>, ParseError> {
+    let mut out: Vec<String> = Vec::new();
+    for (_, t) in tokenize(text)? {
+        if let Token::Ident(name) = t
+            && !out.contains(&name)
+        {
+            out.push(name);
+        }
+    }
+    Ok(out)
+}
+
 struct Parser<'a> {
     tokens: Vec<(usize, Token)>,
     pos: usize,
-    defs: &'a BTreeMap<String, RatFn>,
+    lookup: Lookup<'a>,
 }
 
 impl Parser<'_> {
@@ -217,7 +238,7 @@ impl Parser<'_> {
             }
             Some(Token::Ident(name)) => {
                 self.pos += 1;
-                Ok(match self.defs.get(&name) {
+                Ok(match (self.lookup)(&name) {
                     Some(d) => d.clone(),
                     None => RatFn::var(&name),
                 })

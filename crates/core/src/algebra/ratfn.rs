@@ -57,6 +57,21 @@ impl RatFn {
         super::parse::parse_rational(text, defs)
     }
 
+    /// Parse with the definitions `lookup` gives: an identifier stands for its definition
+    /// when it has one, else for a variable.
+    pub fn parse_looking_up<'a>(
+        text: &str,
+        lookup: &'a dyn Fn(&str) -> Option<&'a RatFn>,
+    ) -> Result<RatFn, ParseError> {
+        super::parse::parse_looking_up(text, lookup)
+    }
+
+    /// The identifiers of `text` (the names [`RatFn::parse_with`] looks up), in order of
+    /// first appearance; an error where the text does not tokenize.
+    pub fn identifiers(text: &str) -> Result<Vec<String>, ParseError> {
+        super::parse::identifiers(text)
+    }
+
     /// Whether the two are the same rational function: n₁d₂ = n₂d₁ exactly. Where the
     /// denominators are proportional, d₂ = c·d₁, that is c·n₁ = n₂: no product is formed.
     pub fn equals(&self, other: &RatFn) -> bool {

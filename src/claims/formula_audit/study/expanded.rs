@@ -5,12 +5,14 @@
 //! that passes the screen is compared exactly, and the exact comparison decides.
 
 use std::collections::BTreeMap;
+use std::sync::OnceLock;
 
 use num_rational::BigRational;
 use num_traits::One;
 use rayon::prelude::*;
 
-use super::{accepted_quadratic, flip_one_term, read_in_order, Form, Judged};
+use super::reading::{Reading, Text};
+use super::{accepted_quadratic, flip_one_term, Form, Judged};
 use crate::algebra::modp::{agree_mod_p, proportional_mod_p, ModPAgreement};
 use crate::algebra::{Monomial, Poly, RatFn};
 use crate::claims::formula_audit::{FormulaAuditCase, FormulaItem, Relation};
@@ -61,50 +63,88 @@ pub struct ExpandedFinding {
 }
 
 /// The names a macro-level formula may leave free, each with its own derivation expanded:
-/// the paper's macros from the frame equations, the others from [`derived`].
-pub(super) struct Expansions(BTreeMap<String, RatFn>);
+/// the paper's macros from the frame equations, the others from [`derived`]. A name's
+/// expansion is computed when first asked for, once.
+///
+/// A name's derivation may use other names (A_c is in the d's). Its expansion substitutes
+/// them level by level: first the names whose derivations use no name (level 0), then those
+/// that use only names of level 0, and so on, each level in one substitution, then reduces
+/// it to lowest terms.
+pub(super) struct Expansions {
+    /// Every name of the case, with its reduced derivation and its expansion (with its level),
+    /// each computed when first asked for; `None` where the name has no derivation.
+    names: std::collections::BTreeMap<String, Expansion>,
+}
+
+#[derive(Default)]
+struct Expansion {
+    derivation: OnceLock<Option<RatFn>>,
+    expanded: OnceLock<Option<(RatFn, usize)>>,
+}
 
 impl Expansions {
     pub(super) fn new(case: &FormulaAuditCase) -> Expansions {
-        let mut names: Vec<String> = case.definitions.iter().map(|d| d.name.clone()).collect();
+        let mut names: Vec<&String> = case.definitions.iter().map(|d| &d.name).collect();
         for f in &case.formulas {
-            names.extend(f.symbols.iter().cloned());
-            names.extend(f.defines.iter().cloned());
+            names.extend(&f.symbols);
+            names.extend(&f.defines);
         }
-        names.sort();
-        names.dedup();
-        let mut out = Expansions(BTreeMap::new());
-        // a name's derivation may use other names (A_c is in the d's): expand until no
-        // name is left, at most once per name
-        let mut pending: Vec<(String, RatFn)> = names
-            .iter()
-            // lowest terms while the derivation is still small (in the d's, not expanded)
-            .filter_map(|n| macro_derivation(n).map(|v| (n.clone(), v.reduced())))
-            .collect();
-        let known: Vec<String> = pending.iter().map(|(n, _)| n.clone()).collect();
-        for _ in 0..=known.len() {
-            let (ready, rest): (Vec<_>, Vec<_>) = pending
+        Expansions {
+            names: names
                 .into_iter()
-                .partition(|(_, v)| v.variables().iter().all(|x| !known.contains(x)));
-            for (n, v) in ready {
-                out.0.insert(n, v.reduced());
-            }
-            pending = rest
-                .into_iter()
-                .map(|(n, v)| {
-                    let e = v.substitute_all(&out.0);
-                    (n, e)
-                })
-                .collect();
-            if pending.is_empty() {
-                break;
-            }
+                .map(|n| (n.clone(), Expansion::default()))
+                .collect(),
         }
-        out
     }
 
+    /// The name's derivation in lowest terms (while still small: in the d's, not expanded).
+    fn derivation(&self, name: &str) -> Option<&RatFn> {
+        let e = self.names.get(name)?;
+        e.derivation
+            .get_or_init(|| macro_derivation(name).map(|v| v.reduced()))
+            .as_ref()
+    }
+
+    /// The name's expansion and its level.
+    fn expansion(&self, name: &str) -> Option<&(RatFn, usize)> {
+        let e = self.names.get(name)?;
+        e.expanded
+            .get_or_init(|| {
+                let mut v = self.derivation(name)?.clone();
+                let used: Vec<(String, &(RatFn, usize))> = v
+                    .variables()
+                    .into_iter()
+                    .filter(|x| self.derivation(x).is_some())
+                    .map(|x| self.expansion(&x).map(|e| (x, e)))
+                    .collect::<Option<_>>()?;
+                let top = used
+                    .iter()
+                    .map(|(_, (_, level))| level + 1)
+                    .max()
+                    .unwrap_or(0);
+                for level in 0..top {
+                    let at: BTreeMap<String, RatFn> = used
+                        .iter()
+                        .filter(|(_, (_, l))| *l == level)
+                        .map(|(x, (value, _))| (x.clone(), value.clone()))
+                        .collect();
+                    if !at.is_empty() {
+                        v = v.substitute_all(&at);
+                    }
+                }
+                Some((v.reduced(), top))
+            })
+            .as_ref()
+    }
+
+    /// `f` with every name of the case it uses replaced by its expansion (at once).
     pub(super) fn expand(&self, f: &RatFn) -> RatFn {
-        f.substitute_all(&self.0)
+        let values: BTreeMap<String, RatFn> = f
+            .variables()
+            .into_iter()
+            .filter_map(|x| self.expansion(&x).map(|(v, _)| (x, v.clone())))
+            .collect();
+        f.substitute_all(&values)
     }
 }
 
@@ -142,18 +182,20 @@ fn linear_coefficient(p: &Poly, e: usize) -> Poly {
     pick(&pick(&pick(&s, "x", k(0)), "y", k(1)), "z", k(2))
 }
 
-/// Every formula of the case that `judged` selects, expanded to the end, in order. The
-/// parses run in order (a formula reads what earlier ones define); each formula's expansion
-/// and checks are independent of the others' and run in parallel.
+/// Every formula of the case that `judged` selects, expanded to the end, in order. Each
+/// formula reads, expands and checks what it needs (each text and each name's expansion is
+/// computed once, by whichever formula needs it first), in parallel.
 pub fn expanded(case: &FormulaAuditCase, judged: Judged) -> Result<Vec<ExpandedFinding>> {
-    let (expansions, work) = rayon::join(
-        || Expansions::new(case),
-        || read_in_order(case, judged, |t, defs, _| parse(t, defs)),
-    );
+    let (expansions, reading) = (Expansions::new(case), Reading::new(case, false));
     // every formula computed, then the first error in case order (whichever finished first)
-    let found: Vec<Result<ExpandedFinding>> = work?
-        .into_par_iter()
-        .map(|(f, printed, corrected)| {
+    let found: Vec<Result<ExpandedFinding>> = case
+        .formulas
+        .par_iter()
+        .enumerate()
+        .filter(|(_, f)| judged(f))
+        .map(|(i, f)| {
+            let printed = reading.read(Text::Printed(i))?;
+            let corrected = reading.read(Text::Corrected(i))?;
             let target = derived(&f.derived)
                 .ok_or_else(|| Error::InvalidInput(format!("no derivation `{}`", f.derived)))?;
             let target = expansions.expand(&target);
@@ -161,15 +203,6 @@ pub fn expanded(case: &FormulaAuditCase, judged: Judged) -> Result<Vec<ExpandedF
         })
         .collect();
     found.into_iter().collect()
-}
-
-/// `text` read with every name defined so far substituted (the expanded level leaves no
-/// symbol free).
-fn parse(text: &str, defs: &BTreeMap<String, RatFn>) -> Result<RatFn> {
-    RatFn::parse_with(text, defs).map_err(|source| Error::Formula {
-        formula: text.to_string(),
-        source,
-    })
 }
 
 fn one(
