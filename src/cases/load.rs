@@ -290,14 +290,88 @@ pub fn load_all<C: Schema>(dir: &Path) -> Result<Vec<Case<C>>> {
 /// The `claim:` names of one case file.
 type Names = std::collections::BTreeSet<String>;
 
+/// Which case files a command reads.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Kinds<'a> {
+    /// Every file.
+    All,
+    /// The files whose check is one of these kinds (a file whose kind its first lines do
+    /// not tell is read too, so that its error is reported).
+    Only(&'a [&'a str]),
+}
+
+impl Kinds<'_> {
+    fn reads(&self, text: &str) -> bool {
+        match self {
+            Kinds::All => true,
+            Kinds::Only(kinds) => kind_of(text).is_none_or(|k| kinds.contains(&k.as_str())),
+        }
+    }
+}
+
+/// The key under a case file's top-level `check:` (its kind), read from the parser's events
+/// as far as that key; `None` where the text does not tell it there (no mapping at the top,
+/// a syntax error before it, `check` not a mapping).
+fn kind_of(text: &str) -> Option<String> {
+    use granit_parser::{Event, Parser};
+    // depth 1 is the document's mapping; `key`: its next node is a key; `check`: the key
+    // just read there is `check`
+    let (mut depth, mut key, mut check) = (0usize, true, false);
+    let mut events = Parser::new_from_str(text).map(|e| e.ok().map(|(e, _)| e));
+    while let Some(event) = events.next().flatten() {
+        match event {
+            Event::MappingStart(..) | Event::SequenceStart(..) if depth == 1 => {
+                if check {
+                    let first = events.next().flatten();
+                    return match (event, first) {
+                        (Event::MappingStart(..), Some(Event::Scalar(k, ..))) => {
+                            Some(k.to_string())
+                        }
+                        _ => None,
+                    };
+                }
+                if key {
+                    return None;
+                }
+                (depth, key) = (2, true);
+            }
+            Event::SequenceStart(..) if depth == 0 => return None,
+            Event::MappingStart(..) | Event::SequenceStart(..) => depth += 1,
+            Event::MappingEnd | Event::SequenceEnd => {
+                depth = depth.checked_sub(1).filter(|d| *d > 0)?;
+            }
+            Event::Scalar(..) | Event::Alias(..) if depth == 1 => {
+                if check {
+                    return None;
+                }
+                check = key && matches!(&event, Event::Scalar(v, ..) if v == "check");
+                key = !key;
+            }
+            _ => {}
+        }
+    }
+    None
+}
+
 /// Load every case: each file valid on its own, no id twice, and every claim a restatement
 /// restates checked by some case. With `latex`, the errata's quotes are verified against it.
 pub fn load_cases<C: Schema>(
     origin: &CaseOrigin,
     latex: Option<&LatexSource>,
 ) -> Result<Vec<Case<C>>> {
+    load_cases_of(origin, latex, Kinds::All)
+}
+
+/// [`load_cases`] of the files of some kinds: the checks across files (ids, restated claims,
+/// the inventory) hold among those.
+pub fn load_cases_of<C: Schema>(
+    origin: &CaseOrigin,
+    latex: Option<&LatexSource>,
+    kinds: Kinds,
+) -> Result<Vec<Case<C>>> {
     use rayon::prelude::*;
-    let read = origin.case_texts()?;
+    let mut read = origin.case_texts()?;
+    read.retain(|(_, text)| kinds.reads(text));
     // the files parse independently, on every core; their errors are then taken in file
     // order, so that the first bad file is the one named, whatever finished first
     let parsed: Vec<(Result<Case<C>>, Names)> = read
@@ -440,6 +514,39 @@ mod tests {
     use std::collections::BTreeMap;
 
     type Any = BTreeMap<String, serde::de::IgnoredAny>;
+
+    #[test]
+    fn the_kind_is_read_from_the_first_lines() {
+        let kind = |t: &str| kind_of(t);
+        assert_eq!(
+            kind("id: x\ncheck:\n  formula_audit:\n    seed: 1\n").as_deref(),
+            Some("formula_audit")
+        );
+        // after collections of any depth, in flow style, behind an anchor
+        assert_eq!(
+            kind("id: x\nsource: {section: \"2\", lines: [1, {a: [2]}]}\nl:\n  - [a, {b: c}]\ncheck: {dof_count: {p: 3}}\n").as_deref(),
+            Some("dof_count")
+        );
+        assert_eq!(
+            kind("check: &k\n  twofold_squared: {}\n").as_deref(),
+            Some("twofold_squared")
+        );
+        // not told: no check, check not a mapping, a sequence or a scalar at the top, a
+        // syntax error first, a collection as a key, `check` only nested
+        for t in [
+            "id: x\n",
+            "check: formula_audit\n",
+            "check: [formula_audit]\n",
+            "check: {}\n",
+            "- check:\n    formula_audit: {}\n",
+            "check",
+            "id: [\ncheck:\n  formula_audit: {}\n",
+            "? [a]\n: 1\ncheck:\n  formula_audit: {}\n",
+            "source:\n  check:\n    formula_audit: {}\n",
+        ] {
+            assert_eq!(kind(t), None, "{t}");
+        }
+    }
 
     #[test]
     fn an_alias_bomb_is_refused_naming_the_limit_set() {

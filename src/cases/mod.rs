@@ -22,8 +22,8 @@ pub use latex::{sha256_hex, source_path, LatexSource, SourceRecord, PAPER_ENV};
 pub(crate) use load::invalid;
 pub(crate) use load::line_of;
 pub use load::{
-    case_files, load_all, load_case, load_case_with, load_cases, parse_case, parse_yaml,
-    parse_yaml_limited,
+    case_files, load_all, load_case, load_case_with, load_cases, load_cases_of, parse_case,
+    parse_yaml, parse_yaml_limited, Kinds,
 };
 pub use origin::CaseOrigin;
 pub use paper::{load_paper, paper_of, parse_paper, Paper, SectionTitle, PAPER_FILE};
@@ -31,7 +31,9 @@ pub use printed::{contradicting_square, Printed};
 pub use quote::{parse_lines, quote_at, quote_within, SourceText};
 pub use source::{ClaimRef, Source};
 pub use validate::Validator;
-pub use verify::{load_inputs, unverified_sentence, verify, PaperInputs, Verification};
+pub use verify::{
+    load_inputs, load_inputs_of, unverified_sentence, verify, PaperInputs, Verification,
+};
 
 use std::path::PathBuf;
 

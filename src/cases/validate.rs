@@ -129,8 +129,8 @@ impl<'a> Validator<'a> {
     /// The rational function at `field` must parse.
     pub fn rat_formula(&self, field: &str, f: &str) -> Result<()> {
         self.formula_size(field, f, &Default::default())?;
-        match crate::algebra::RatFn::parse(f) {
-            Ok(_) => Ok(()),
+        match crate::algebra::RatFn::check(f) {
+            Ok(()) => Ok(()),
             Err(e) => self.err(field, format!("formula does not parse: {e}")),
         }
     }

@@ -7,7 +7,7 @@ use std::path::Path;
 
 use super::load::invalid;
 use super::quote::{parse_lines, quote_within};
-use super::{parse_yaml, CaseOrigin, LatexSource, Paper, PAPER_FILE};
+use super::{parse_yaml, CaseOrigin, Kinds, LatexSource, Paper, PAPER_FILE};
 use crate::error::{Error, InputLocation, Result};
 
 /// What the source confirmed.
@@ -201,8 +201,19 @@ pub fn load_inputs<C: super::Schema>(
     origin: &CaseOrigin,
     latex: Option<&Path>,
 ) -> Result<PaperInputs<C>> {
+    load_inputs_of(origin, latex, Kinds::All)
+}
+
+/// [`load_inputs`] reading the case files of `kinds` only, unless `latex` is given: the
+/// transcription is verified whole.
+pub fn load_inputs_of<C: super::Schema>(
+    origin: &CaseOrigin,
+    latex: Option<&Path>,
+    kinds: Kinds,
+) -> Result<PaperInputs<C>> {
+    let kinds = if latex.is_some() { Kinds::All } else { kinds };
     // the cases first: a malformed case is the first thing a user hears of
-    let unverified = super::load_cases::<C>(origin, None)?;
+    let unverified = super::load_cases_of::<C>(origin, None, kinds)?;
     let source = match latex {
         None => None,
         Some(p) => {

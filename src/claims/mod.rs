@@ -71,6 +71,15 @@ pub trait ClaimKind {
         Vec::new()
     }
 
+    /// Whether the kind has items for `orthocheck audit` ([`ClaimKind::audit_items`]): the
+    /// command reads the case files of these kinds only.
+    fn audited() -> bool
+    where
+        Self: Sized,
+    {
+        false
+    }
+
     /// The items `orthocheck audit` shows: formulas and text the kind audits, each with what
     /// it shows beside its result, those `wanted` asks for (and only those computed). Most
     /// kinds audit nothing.
@@ -119,6 +128,15 @@ macro_rules! kinds {
 
         /// Every registered kind: its name and its variant's name.
         pub const KINDS: &[(&str, &str)] = &[$((stringify!($name), stringify!($variant))),*];
+
+        /// The kinds whose case files `orthocheck audit` reads ([`ClaimKind::audited`]).
+        pub fn audited_kinds() -> Vec<&'static str> {
+            let mut kinds = Vec::new();
+            $(if <$ty as ClaimKind>::audited() {
+                kinds.push(stringify!($name));
+            })*
+            kinds
+        }
     };
 }
 

@@ -126,8 +126,14 @@ fn twofold_case<'a>(loaded: &'a [Case], id: &str) -> Option<&'a TwofoldCase> {
 /// One twofold-squared case in full, the errata list, or the items an id names.
 pub fn run(a: Args) -> Result<(), Error> {
     let origin = cases::CaseOrigin::from_arg(a.cases.as_deref());
+    let audited = orthocheck::claims::audited_kinds();
     let source = cases::source_path(a.paper.as_deref());
-    let loaded = cases::load_inputs::<Check>(&origin, source.as_deref())?.cases;
+    // the errata list runs the whole paper; the items need the audited kinds' cases only
+    let kinds = match a.markdown {
+        true => cases::Kinds::All,
+        false => cases::Kinds::Only(&audited),
+    };
+    let loaded = cases::load_inputs_of::<Check>(&origin, source.as_deref(), kinds)?.cases;
     if let Some(dir) = &a.out {
         return export(&loaded, &a, dir);
     }

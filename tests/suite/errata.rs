@@ -63,3 +63,22 @@ fn one_item_of_the_audit_is_its_line_in_the_whole() {
         assert_eq!(one, expected, "{id}");
     }
 }
+
+/// `orthocheck audit` reads the case files of the audited kinds alone: their items are
+/// those of every case (no other kind has audit items).
+#[test]
+fn the_audit_reads_the_audited_kinds_alone() {
+    use orthocheck::cases::{load_cases_of, CaseOrigin, Kinds};
+    use orthocheck::claims::audit::{audit_all, Wanted};
+    let kinds = orthocheck::claims::audited_kinds();
+    assert_eq!(kinds, ["twofold_squared", "formula_audit", "source_errata"]);
+    let origin = CaseOrigin::Folder(Path::new(env!("CARGO_MANIFEST_DIR")).join("paper_cases"));
+    let some =
+        load_cases_of::<orthocheck::claims::Check>(&origin, None, Kinds::Only(&kinds)).unwrap();
+    assert_eq!(some.len(), kinds.len());
+    let ids = |cases: &[orthocheck::claims::Case]| -> Vec<String> {
+        let items = audit_all(cases, Wanted::All).unwrap();
+        items.into_iter().map(|(r, _)| r.id).collect()
+    };
+    assert_eq!(ids(&some), ids(common::cases().unwrap()));
+}

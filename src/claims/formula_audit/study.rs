@@ -189,7 +189,7 @@ fn accepted_quadratic(e: &RatFn, f: &FormulaItem) -> Vec<(Vec<String>, bool)> {
 /// The formula with the sign of the first term of its numerator flipped (a single-term
 /// numerator gets `+1` instead, so that a proportional check cannot absorb the change).
 pub fn flip_one_term(e: &RatFn) -> Option<(Monomial, RatFn)> {
-    let (m, c) = e.num.terms().next()?;
+    let (m, c) = e.num.first_term()?;
     let term = &Poly::from_monomial(m.clone()).scale(&c);
     let num = if e.num.len() == 1 {
         &e.num + &Poly::int(1)

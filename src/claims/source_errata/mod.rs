@@ -38,6 +38,10 @@ impl ClaimKind for SourceErrataCase {
         case::attach_source(self, text, path, latex)
     }
 
+    fn audited() -> bool {
+        true
+    }
+
     fn audit_items(
         &self,
         b: &ResultBuilder,

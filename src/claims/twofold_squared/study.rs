@@ -52,10 +52,7 @@ impl TwofoldMutant {
 
 /// Whether every exponent of a, b, c is even and the degree in their squares at most 2.
 fn quadratic(p: &Poly) -> bool {
-    p.terms().all(|(m, _)| {
-        let e: Vec<u32> = ["a", "b", "c"].iter().map(|v| m.exponent(v)).collect();
-        e.iter().all(|x| x % 2 == 0) && e.iter().sum::<u32>() <= 4
-    })
+    crate::derivations::formulas::quadratic_in_squares(p, &["a", "b", "c"])
 }
 
 /// Compare the printed polynomial (text) with the twofold squaring of each pattern.

@@ -1,5 +1,6 @@
 //! The expression parser shared by [`Poly::parse`] and [`RatFn::parse`]: `+ - * / ^`,
-//! parentheses, exact decimals and identifiers; juxtaposition multiplies.
+//! parentheses, exact decimals and identifiers; juxtaposition multiplies. The same parser
+//! evaluates at a point modulo a prime, which tells cheaply whether a text parses.
 
 use std::collections::BTreeMap;
 
@@ -23,17 +24,150 @@ pub(crate) fn parse_rational(
 
 /// Parse into a rational function; an identifier stands for what `lookup` gives it.
 pub(crate) fn parse_looking_up(text: &str, lookup: Lookup) -> Result<RatFn, ParseError> {
+    let leaf = |name: &str| lookup(name).cloned().unwrap_or_else(|| RatFn::var(name));
+    evaluate(text, &leaf)
+}
+
+/// Whether `text` parses, with the errors [`parse_rational`] gives (no definitions): the
+/// expression is evaluated at a point modulo 2⁶¹ − 1, where a divisor that is not zero as a
+/// polynomial rarely vanishes; only where one does is the text parsed exactly, to tell.
+pub(crate) fn check(text: &str) -> Result<(), ParseError> {
+    match evaluate(text, &Residue::at) {
+        Err(e) if e.message == DIVISION_BY_ZERO => parse_rational(text, &BTreeMap::new()).map(drop),
+        r => r.map(drop),
+    }
+}
+
+/// The text's value, an identifier standing for `leaf(name)`.
+fn evaluate<V: Operand>(text: &str, leaf: &dyn Fn(&str) -> V) -> Result<V, ParseError> {
     let tokens = tokenize(text)?;
     let mut parser = Parser {
         tokens,
         pos: 0,
-        lookup,
+        leaf,
     };
     let p = parser.sum()?;
     if parser.pos != parser.tokens.len() {
         return Err(parser.error("unexpected input after the expression"));
     }
     Ok(p)
+}
+
+const DIVISION_BY_ZERO: &str = "division by zero";
+
+/// What the parser computes with.
+trait Operand: Sized {
+    fn number(n: &BigRational) -> Self;
+    fn add(&self, o: &Self) -> Self;
+    fn sub(&self, o: &Self) -> Self;
+    fn mul(&self, o: &Self) -> Self;
+    /// `None` when dividing by zero.
+    fn div(&self, o: &Self) -> Option<Self>;
+    fn neg(&self) -> Self;
+    fn pow(&self, e: u32) -> Self;
+}
+
+impl Operand for RatFn {
+    fn number(n: &BigRational) -> Self {
+        Poly::constant(n.clone()).into()
+    }
+    fn add(&self, o: &Self) -> Self {
+        self + o
+    }
+    fn sub(&self, o: &Self) -> Self {
+        self - o
+    }
+    fn mul(&self, o: &Self) -> Self {
+        self * o
+    }
+    fn div(&self, o: &Self) -> Option<Self> {
+        self / o
+    }
+    fn neg(&self) -> Self {
+        -self
+    }
+    fn pow(&self, e: u32) -> Self {
+        RatFn::pow(self, e)
+    }
+}
+
+/// A value modulo the prime 2⁶¹ − 1, `None` where it is not known (a number whose
+/// denominator the prime divides, a quotient by zero).
+#[derive(Clone, Copy)]
+struct Residue(Option<u64>);
+
+const P: u64 = (1 << 61) - 1;
+
+impl Residue {
+    /// An identifier's value: a hash of its name (FNV-1a), the same at every run.
+    fn at(name: &str) -> Residue {
+        let h = name.bytes().fold(0xcbf2_9ce4_8422_2325u64, |h, b| {
+            (h ^ u64::from(b)).wrapping_mul(0x100_0000_01b3)
+        });
+        Residue(Some(h % P))
+    }
+
+    fn of(n: &BigInt) -> u64 {
+        let r = n % BigInt::from(P);
+        let r = r.to_i64().unwrap_or(0);
+        r.rem_euclid(P as i64) as u64
+    }
+
+    fn both(&self, o: &Self, f: impl Fn(u64, u64) -> u64) -> Self {
+        Residue(self.0.zip(o.0).map(|(a, b)| f(a, b)))
+    }
+
+    fn mul_mod(a: u64, b: u64) -> u64 {
+        ((u128::from(a) * u128::from(b)) % u128::from(P)) as u64
+    }
+
+    fn pow_mod(mut a: u64, mut e: u64) -> u64 {
+        let mut r = 1;
+        while e > 0 {
+            if e & 1 == 1 {
+                r = Residue::mul_mod(r, a);
+            }
+            a = Residue::mul_mod(a, a);
+            e >>= 1;
+        }
+        r
+    }
+
+    /// The inverse of a non-zero residue (Fermat).
+    fn inv(a: u64) -> u64 {
+        Residue::pow_mod(a, P - 2)
+    }
+}
+
+impl Operand for Residue {
+    fn number(n: &BigRational) -> Self {
+        let d = Residue::of(n.denom());
+        Residue((d != 0).then(|| Residue::mul_mod(Residue::of(n.numer()), Residue::inv(d))))
+    }
+    fn add(&self, o: &Self) -> Self {
+        self.both(o, |a, b| (a + b) % P)
+    }
+    fn sub(&self, o: &Self) -> Self {
+        self.both(o, |a, b| (a + P - b) % P)
+    }
+    fn mul(&self, o: &Self) -> Self {
+        self.both(o, Residue::mul_mod)
+    }
+    fn div(&self, o: &Self) -> Option<Self> {
+        match o.0 {
+            // zero here: the exact parse tells whether the divisor is zero
+            Some(0) | None => None,
+            Some(b) => Some(Residue(
+                self.0.map(|a| Residue::mul_mod(a, Residue::inv(b))),
+            )),
+        }
+    }
+    fn neg(&self) -> Self {
+        Residue(self.0.map(|a| (P - a) % P))
+    }
+    fn pow(&self, e: u32) -> Self {
+        Residue(self.0.map(|a| Residue::pow_mod(a, u64::from(e))))
+    }
 }
 
 #[derive(Clone, Debug, PartialEq)]
@@ -141,13 +275,13 @@ pub(crate) fn identifiers(text: &str) -> Result<Vec<String>, ParseError> {
     Ok(out)
 }
 
-struct Parser<'a> {
+struct Parser<'a, V> {
     tokens: Vec<(usize, Token)>,
     pos: usize,
-    lookup: Lookup<'a>,
+    leaf: &'a dyn Fn(&str) -> V,
 }
 
-impl Parser<'_> {
+impl<V: Operand> Parser<'_, V> {
     fn peek(&self) -> Option<&Token> {
         self.tokens.get(self.pos).map(|(_, t)| t)
     }
@@ -163,11 +297,11 @@ impl Parser<'_> {
         }
     }
 
-    fn sum(&mut self) -> Result<RatFn, ParseError> {
+    fn sum(&mut self) -> Result<V, ParseError> {
         let mut acc = match self.peek() {
             Some(Token::Op('-')) => {
                 self.pos += 1;
-                -&self.product()?
+                self.product()?.neg()
             }
             Some(Token::Op('+')) => {
                 self.pos += 1;
@@ -179,39 +313,39 @@ impl Parser<'_> {
             match self.peek() {
                 Some(Token::Op('+')) => {
                     self.pos += 1;
-                    acc = &acc + &self.product()?;
+                    acc = acc.add(&self.product()?);
                 }
                 Some(Token::Op('-')) => {
                     self.pos += 1;
-                    acc = &acc - &self.product()?;
+                    acc = acc.sub(&self.product()?);
                 }
                 _ => return Ok(acc),
             }
         }
     }
 
-    fn product(&mut self) -> Result<RatFn, ParseError> {
+    fn product(&mut self) -> Result<V, ParseError> {
         let mut acc = self.power()?;
         loop {
             match self.peek() {
                 Some(Token::Op('*')) => {
                     self.pos += 1;
-                    acc = &acc * &self.power()?;
+                    acc = acc.mul(&self.power()?);
                 }
                 Some(Token::Op('/')) => {
                     self.pos += 1;
                     let d = self.power()?;
-                    acc = (&acc / &d).ok_or_else(|| self.error("division by zero"))?;
+                    acc = acc.div(&d).ok_or_else(|| self.error(DIVISION_BY_ZERO))?;
                 }
                 Some(Token::Num(_)) | Some(Token::Ident(_)) | Some(Token::Op('(')) => {
-                    acc = &acc * &self.power()?;
+                    acc = acc.mul(&self.power()?);
                 }
                 _ => return Ok(acc),
             }
         }
     }
 
-    fn power(&mut self) -> Result<RatFn, ParseError> {
+    fn power(&mut self) -> Result<V, ParseError> {
         let base = self.primary()?;
         if let Some(Token::Op('^')) = self.peek() {
             self.pos += 1;
@@ -230,18 +364,15 @@ impl Parser<'_> {
         Ok(base)
     }
 
-    fn primary(&mut self) -> Result<RatFn, ParseError> {
+    fn primary(&mut self) -> Result<V, ParseError> {
         match self.peek().cloned() {
             Some(Token::Num(n)) => {
                 self.pos += 1;
-                Ok(Poly::constant(n).into())
+                Ok(V::number(&n))
             }
             Some(Token::Ident(name)) => {
                 self.pos += 1;
-                Ok(match (self.lookup)(&name) {
-                    Some(d) => d.clone(),
-                    None => RatFn::var(&name),
-                })
+                Ok((self.leaf)(&name))
             }
             Some(Token::Op('(')) => {
                 self.pos += 1;
@@ -256,7 +387,7 @@ impl Parser<'_> {
             }
             Some(Token::Op('-')) => {
                 self.pos += 1;
-                Ok(-&self.power()?)
+                Ok(self.power()?.neg())
             }
             _ => Err(self.error("expected a number, a variable or '('")),
         }

@@ -183,6 +183,25 @@ impl Poly {
         t.into_iter()
     }
 
+    /// The first term in canonical order (what `terms().next()` gives), found without
+    /// listing the others.
+    pub fn first_term(&self) -> Option<(Monomial, BigRational)> {
+        // a monomial's factors in the ring's order (the names' order): the canonical order
+        // compares them pair by pair, a variable's name first, then its exponent
+        let factors = |e: &[u32]| {
+            e.iter()
+                .copied()
+                .enumerate()
+                .filter(|(_, k)| *k > 0)
+                .collect::<Vec<_>>()
+        };
+        let first = (0..self.len())
+            .map(|t| (t, factors(&self.prim.exponents(t))))
+            .min_by(|a, b| a.1.cmp(&b.1))?
+            .0;
+        Some((self.monomial(first), self.coefficient(first)))
+    }
+
     fn monomial(&self, i: usize) -> Monomial {
         let e = self.prim.exponents(i);
         Monomial(

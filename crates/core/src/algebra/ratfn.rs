@@ -66,6 +66,21 @@ impl RatFn {
         super::parse::parse_looking_up(text, lookup)
     }
 
+    /// Whether `text` parses, with the error [`RatFn::parse`] would give, without its
+    /// algebra: the expression is evaluated at a point modulo a prime, and parsed exactly
+    /// only where a divisor vanishes there (to tell a zero divisor from a root).
+    ///
+    /// # Example
+    /// ```
+    /// use orthocheck_core::algebra::RatFn;
+    /// assert!(RatFn::check("(a^2 - b^2) / (a - b)").is_ok());
+    /// assert!(RatFn::check("1 / (a - a)").is_err());
+    /// assert_eq!(RatFn::check("(a"), RatFn::parse("(a").map(drop));
+    /// ```
+    pub fn check(text: &str) -> Result<(), ParseError> {
+        super::parse::check(text)
+    }
+
     /// The identifiers of `text` (the names [`RatFn::parse_with`] looks up), in order of
     /// first appearance; an error where the text does not tokenize.
     pub fn identifiers(text: &str) -> Result<Vec<String>, ParseError> {
@@ -97,9 +112,8 @@ impl RatFn {
 
     /// The polynomial, when the denominator is a constant.
     pub fn to_poly(&self) -> Option<Poly> {
-        let mut t = self.den.terms();
-        match (t.next(), t.next()) {
-            (Some((m, c)), None) if m.degree() == 0 => Some(self.num.scale(&c.recip())),
+        match (self.den.len(), self.den.first_term()) {
+            (1, Some((m, c))) if m.degree() == 0 => Some(self.num.scale(&c.recip())),
             _ => None,
         }
     }

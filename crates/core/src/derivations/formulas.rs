@@ -159,9 +159,11 @@ pub fn derived(name: &str) -> Option<RatFn> {
 /// Whether `p` is at most quadratic in the squares of each of `vars` (only even powers, at
 /// most the fourth).
 pub fn quadratic_in_squares(p: &Poly, vars: &[&str]) -> bool {
-    p.terms().all(|(m, _)| {
-        vars.iter().all(|v| m.exponent(v) % 2 == 0)
-            && vars.iter().map(|v| m.exponent(v)).sum::<u32>() <= 4
+    let at: Vec<usize> = vars.iter().filter_map(|v| p.ring().index(v)).collect();
+    let prim = p.primitive().1;
+    (0..prim.len()).all(|t| {
+        let e = prim.exponents(t);
+        at.iter().all(|&i| e[i] % 2 == 0) && at.iter().map(|&i| e[i]).sum::<u32>() <= 4
     })
 }
 

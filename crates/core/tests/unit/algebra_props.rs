@@ -1,7 +1,7 @@
 use std::collections::BTreeMap;
 
 use num_rational::BigRational;
-use orthocheck_core::algebra::{exact_rank, rat, svd_rank, Poly, UPoly};
+use orthocheck_core::algebra::{exact_rank, rat, svd_rank, Poly, RatFn, UPoly};
 use proptest::prelude::*;
 
 /// A random polynomial in x, y, z: up to 5 terms, exponents ≤ 3, coefficients in [−9, 9]/[1, 4].
@@ -18,6 +18,30 @@ fn poly() -> impl Strategy<Value = Poly> {
                 &acc + &t.scale(&rat(n, d))
             })
     })
+}
+
+/// A random expression text: sums, products, quotients (often by a difference that is zero)
+/// and powers of numbers and variables, with now and then a stray character or parenthesis.
+fn expression() -> impl Strategy<Value = String> {
+    let leaf =
+        prop::sample::select(vec!["x", "y", "2", "0.5", "0", "x_1", "3y"]).prop_map(String::from);
+    let tree = leaf.prop_recursive(4, 24, 2, |inner| {
+        (
+            inner.clone(),
+            prop::sample::select(vec!["+", "-", "*", "/", " ", "^2"]),
+            inner,
+        )
+            .prop_map(|(a, op, b)| match op {
+                "/" => format!("({a})/({b} - {b})"),
+                "^2" => format!("({a})^2"),
+                _ => format!("({a}){op}({b})"),
+            })
+    });
+    (
+        tree,
+        prop::sample::select(vec!["", ")", "(", "#", "^x", "/ 0", " / (x - y)"]),
+    )
+        .prop_map(|(t, tail)| format!("{t}{tail}"))
 }
 
 fn point() -> impl Strategy<Value = BTreeMap<String, BigRational>> {
@@ -73,6 +97,16 @@ proptest! {
         let fresh = to.iter().fold(a.clone(), |p, (f, _)| p.substitute(f, &Poly::var(&format!("#{f}"))));
         let want = to.iter().fold(fresh, |p, (f, t)| p.substitute(&format!("#{f}"), &Poly::var(t)));
         prop_assert_eq!(a.rename(&to), want);
+    }
+
+    #[test]
+    fn checking_a_text_gives_the_parse_s_verdict(text in expression()) {
+        prop_assert_eq!(RatFn::check(&text), RatFn::parse(&text).map(drop), "{}", text);
+    }
+
+    #[test]
+    fn the_first_term_is_the_first_of_the_terms(a in poly()) {
+        prop_assert_eq!(a.first_term(), a.terms().next());
     }
 
     #[test]
