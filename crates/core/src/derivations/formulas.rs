@@ -163,7 +163,7 @@ pub fn quadratic_in_squares(p: &Poly, vars: &[&str]) -> bool {
     let prim = p.primitive().1;
     (0..prim.len()).all(|t| {
         let e = prim.exponents(t);
-        at.iter().all(|&i| e[i] % 2 == 0) && at.iter().map(|&i| e[i]).sum::<u32>() <= 4
+        at.iter().all(|&i| e[i].is_multiple_of(2)) && at.iter().map(|&i| e[i]).sum::<u32>() <= 4
     })
 }
 
