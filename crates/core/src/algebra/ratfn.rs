@@ -87,22 +87,44 @@ impl RatFn {
         super::parse::identifiers(text)
     }
 
-    /// Whether the two are the same rational function: n₁d₂ = n₂d₁ exactly. Where the
-    /// denominators are proportional, d₂ = c·d₁, that is c·n₁ = n₂: no product is formed.
+    /// Whether the two are the same rational function: n₁d₂ = n₂d₁ exactly. Where one
+    /// denominator divides the other, d₂ = q·d₁, that is n₁q = n₂: the smaller product.
     pub fn equals(&self, other: &RatFn) -> bool {
-        match other.den.ratio_to(&self.den) {
-            Some(c) => self.num.scale(&c) == other.num,
-            None => &self.num * &other.den == &other.num * &self.den,
+        self.is_multiple(other, &BigRational::one())
+    }
+
+    /// Whether `self = k · other`: n₁d₂ = k·n₂d₁, through the quotient of the denominators
+    /// where one divides the other.
+    pub fn is_multiple(&self, other: &RatFn, k: &BigRational) -> bool {
+        match self.cross(other) {
+            Cross::Proportional(c) => self.num.scale(&c) == other.num.scale(k),
+            Cross::Quotient(n1, n2) => n1 == n2.scale(k),
         }
     }
 
     /// If `self = k · other` for a non-zero rational `k`, return `k`; with d₂ = c·d₁,
     /// k = c · (n₁ / n₂).
     pub fn ratio_to(&self, other: &RatFn) -> Option<BigRational> {
-        match other.den.ratio_to(&self.den) {
-            Some(c) => self.num.ratio_to(&other.num).map(|k| k * c),
-            None => (&self.num * &other.den).ratio_to(&(&other.num * &self.den)),
+        match self.cross(other) {
+            Cross::Proportional(c) => self.num.ratio_to(&other.num).map(|k| k * c),
+            Cross::Quotient(n1, n2) => n1.ratio_to(&n2),
         }
+    }
+
+    /// The two numerators over a common denominator: scaled (denominators proportional,
+    /// d₂ = c·d₁: n₁·c against n₂), or multiplied by a quotient of the denominators where one
+    /// divides the other, else crosswise (n₁d₂ against n₂d₁).
+    fn cross(&self, other: &RatFn) -> Cross {
+        if let Some(c) = other.den.ratio_to(&self.den) {
+            return Cross::Proportional(c);
+        }
+        if let Some(q) = other.den.div_exact(&self.den) {
+            return Cross::Quotient(&self.num * &q, other.num.clone());
+        }
+        if let Some(q) = self.den.div_exact(&other.den) {
+            return Cross::Quotient(self.num.clone(), &other.num * &q);
+        }
+        Cross::Quotient(&self.num * &other.den, &other.num * &self.den)
     }
 
     /// Whether this is zero.
@@ -243,6 +265,14 @@ impl Default for RatFn {
     fn default() -> Self {
         Poly::zero().into()
     }
+}
+
+/// Two numerators over a common denominator ([`RatFn::cross`]).
+enum Cross {
+    /// The denominators are proportional, d₂ = c·d₁: the first numerator is to be scaled by c.
+    Proportional(BigRational),
+    /// The numerators, each multiplied as needed.
+    Quotient(Poly, Poly),
 }
 
 /// Solve the square linear system `m · x = rhs` over rational functions by Gaussian

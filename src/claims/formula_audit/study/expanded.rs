@@ -260,9 +260,7 @@ fn screened(
     let exact_run = screen.agreeing == screen.points;
     let ratio = exact_run
         .then(|| match (ratio, relation) {
-            (Some(k), _) => {
-                (&e.num * &target.den == (&target.num * &e.den).scale(k)).then(|| k.clone())
-            }
+            (Some(k), _) => e.is_multiple(target, k).then(|| k.clone()),
             (None, Relation::Equal) => e.equals(target).then_some(one),
             (None, Relation::Proportional) => e.ratio_to(target),
         })

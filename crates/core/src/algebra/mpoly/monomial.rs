@@ -138,6 +138,15 @@ pub trait Key: Clone + Ord {
     fn add(&self, o: &Self) -> Self;
     /// Monomial quotient, when `o` divides `self` (`mask`: the guard bits).
     fn sub_guarded(&self, o: &Self, mask: &Self) -> Option<Self>;
+    /// The words.
+    fn words(&self) -> &[u64];
+    /// A hash of the words (multiply and rotate: the packed exponents' bits spread).
+    #[inline]
+    fn hash(&self) -> u64 {
+        self.words().iter().fold(0u64, |h, w| {
+            (h ^ w).wrapping_mul(0x9e37_79b9_7f4a_7c15).rotate_left(29)
+        })
+    }
 }
 
 impl<const W: usize> Key for [u64; W] {
@@ -162,6 +171,10 @@ impl<const W: usize> Key for [u64; W] {
         let mut k = *self;
         div_into(self, o, mask, &mut k).then_some(k)
     }
+    #[inline]
+    fn words(&self) -> &[u64] {
+        self
+    }
 }
 
 impl Key for Vec<u64> {
@@ -179,6 +192,9 @@ impl Key for Vec<u64> {
     fn sub_guarded(&self, o: &Self, mask: &Self) -> Option<Self> {
         let mut k = self.clone();
         div_into(self, o, mask, &mut k).then_some(k)
+    }
+    fn words(&self) -> &[u64] {
+        self
     }
 }
 

@@ -1,7 +1,13 @@
 //! Multiplication: a heap over the shorter operand (Johnson, with Monagan and Pearce's
-//! row-by-row insertion so the heap never holds more than one entry per row), or, when the
-//! product is dense and its coefficients are words, an array of accumulators indexed by the
-//! Kronecker substitution (FLINT's `mul_array`, in the `array` module).
+//! row-by-row insertion so the heap never holds more than one entry per row), a hash table
+//! of the product's monomials sorted once at the end, or, when the product is dense and its
+//! coefficients are words, an array of accumulators indexed by the Kronecker substitution
+//! (FLINT's `mul_array`, in the `array` module).
+//!
+//! The heap pops every product through about log₂ m comparisons of unrelated monomials,
+//! which a processor mispredicts half the time; the table adds each product where its
+//! monomial hashes, and sorts only the distinct monomials. The heap is kept for a short
+//! operand, whose heap is shallow.
 
 use super::coeff::{Acc, Coef};
 use super::heap::Heap;
@@ -11,10 +17,13 @@ use super::MPoly;
 /// How to multiply.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum MulMethod {
-    /// The array when it fits and the product is dense, else the heap.
+    /// The array when it fits and the product is dense, else the table, or the heap for a
+    /// short operand.
     Auto,
     /// Always the heap.
     Heap,
+    /// Always the hash table.
+    Hash,
 }
 
 /// `a · b` with the method chosen by shape.
@@ -32,21 +41,122 @@ pub fn mul_with(a: &MPoly, b: &MPoly, method: MulMethod) -> MPoly {
     {
         return p;
     }
-    mul_heap(a, b)
-}
-
-/// `a · b` by the heap method.
-pub fn mul_heap(a: &MPoly, b: &MPoly) -> MPoly {
-    if a.is_zero() || b.is_zero() {
-        return MPoly::zero(a.nvars());
-    }
     let (a, b) = MPoly::common_packing(a, b, a.degree() + b.degree());
     let (a, b) = if a.len() <= b.len() {
         (&a, &b)
     } else {
         (&b, &a)
     };
-    with_key!(a.pack.words, heap_kernel(a, b))
+    let hash = match method {
+        MulMethod::Auto => a.len() >= HASH_ROWS,
+        MulMethod::Heap => false,
+        MulMethod::Hash => true,
+    };
+    match hash {
+        true => with_key!(a.pack.words, hash_kernel(a, b)),
+        false => with_key!(a.pack.words, heap_kernel(a, b)),
+    }
+}
+
+/// `a · b` by the heap method.
+pub fn mul_heap(a: &MPoly, b: &MPoly) -> MPoly {
+    mul_with(a, b, MulMethod::Heap)
+}
+
+/// Rows of the shorter operand from which the hash table replaces the heap.
+const HASH_ROWS: usize = 8;
+
+/// Marks an empty place of the table.
+const EMPTY: u32 = u32::MAX;
+
+/// The hash kernel: each product added at its monomial's place of an open-addressing table
+/// (linear probing, at most half full), the distinct monomials then sorted once. `a` and `b`
+/// share a packing that holds the product.
+fn hash_kernel<K: Key>(a: &MPoly, b: &MPoly) -> MPoly {
+    let ak: Vec<K> = (0..a.len()).map(|i| K::load(a.packed(i))).collect();
+    let bk: Vec<K> = (0..b.len()).map(|j| K::load(b.packed(j))).collect();
+    let mut table = Table::<K>::with_room((a.len() + b.len()) * 2);
+    for (i, x) in ak.iter().enumerate() {
+        for (j, y) in bk.iter().enumerate() {
+            let e = table.entry(x.add(y));
+            table.sums[e].add_mul(&a.coefs[i], &b.coefs[j]);
+        }
+    }
+    table.into_poly(a.pack)
+}
+
+/// Monomials with their running sums, found through an index of places.
+struct Table<K> {
+    /// Per place, the entry there or [`EMPTY`].
+    places: Vec<u32>,
+    keys: Vec<K>,
+    sums: Vec<Acc>,
+}
+
+impl<K: Key> Table<K> {
+    /// A table for about `n` monomials before it grows.
+    fn with_room(n: usize) -> Self {
+        Table {
+            places: vec![EMPTY; (2 * n).next_power_of_two()],
+            keys: Vec::with_capacity(n),
+            sums: Vec::with_capacity(n),
+        }
+    }
+
+    /// The entry of monomial `k`, a new one (its sum zero) when `k` is new.
+    #[inline]
+    fn entry(&mut self, k: K) -> usize {
+        let mask = self.places.len() - 1;
+        let mut h = k.hash() as usize & mask;
+        loop {
+            match self.places[h] {
+                EMPTY => break,
+                e if self.keys[e as usize] == k => return e as usize,
+                _ => h = (h + 1) & mask,
+            }
+        }
+        let e = self.keys.len();
+        self.places[h] = e as u32;
+        self.keys.push(k);
+        self.sums.push(Acc::default());
+        if 2 * self.keys.len() > self.places.len() {
+            self.grow();
+        }
+        e
+    }
+
+    /// Twice the places, every entry placed again.
+    fn grow(&mut self) {
+        let mask = 2 * self.places.len() - 1;
+        self.places = vec![EMPTY; mask + 1];
+        for (e, k) in self.keys.iter().enumerate() {
+            let mut h = k.hash() as usize & mask;
+            while self.places[h] != EMPTY {
+                h = (h + 1) & mask;
+            }
+            self.places[h] = e as u32;
+        }
+    }
+
+    /// The non-zero sums in descending monomial order.
+    fn into_poly(self, pack: super::monomial::Packing) -> MPoly {
+        let mut order: Vec<(K, u32)> = self.keys.into_iter().zip(0u32..).collect();
+        order.sort_unstable_by(|x, y| y.0.cmp(&x.0));
+        let mut sums = self.sums;
+        let mut out = MPoly {
+            pack,
+            exps: Vec::with_capacity(order.len() * pack.words),
+            coefs: Vec::with_capacity(order.len()),
+        };
+        for (k, e) in order {
+            let c = sums[e as usize].take();
+            if !c.is_zero() {
+                k.store(&mut out.exps);
+                out.coefs.push(c);
+            }
+        }
+        out
+    }
 }
 
 /// The heap kernel: `a` is the shorter operand; both share a packing that holds the product.

@@ -1,7 +1,7 @@
 //! Tests of `orthocheck_core::algebra::mpoly`.
 
 use orthocheck_core::algebra::mpoly::coeff::Coef;
-use orthocheck_core::algebra::mpoly::mul::{mul_array, mul_heap};
+use orthocheck_core::algebra::mpoly::mul::{mul_array, mul_heap, mul_with, MulMethod};
 use orthocheck_core::algebra::mpoly::ring::Ring;
 mod coeff;
 mod monomial;
@@ -192,6 +192,20 @@ mod array_against_heap {
                 (full_box(n, e, bits), full_box(n, e - 1, bits))
             })) {
             agree(&a, &b)?;
+        }
+
+        // the hash table against the heap: one word of exponents, two, more than four (a
+        // vector), small coefficients, and big ones (sums past an i128 among them)
+        #[test]
+        fn hash_and_heap_agree((a, b) in (prop::sample::select(vec![2usize, 9, 40]), prop::sample::select(vec![12u32, 62]))
+                                   .prop_flat_map(|(n, bits)| (terms(n, 8..60, 4, bits), terms(n, 8..60, 4, bits))),
+                               big in any::<bool>()) {
+            // a coefficient beyond a word multiplies into the big-integer path
+            let a = match big {
+                true => &a * &MPoly::constant(a.nvars(), Coef::from_big(BigInt::from(1u8) << 70)),
+                false => a,
+            };
+            prop_assert_eq!(mul_with(&a, &b, MulMethod::Hash), mul_with(&a, &b, MulMethod::Heap));
         }
 
         // word-sized coefficients: the slots that count their overflows
