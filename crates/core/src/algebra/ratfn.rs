@@ -1,6 +1,7 @@
 //! Rational functions over ℚ: a numerator and a denominator polynomial, compared by
 //! cross-multiplication (no cancellation needed to decide equality).
 
+use std::borrow::Cow;
 use std::collections::BTreeMap;
 use std::ops::{Add, Div, Mul, Neg, Sub};
 
@@ -96,35 +97,37 @@ impl RatFn {
     /// Whether `self = k · other`: n₁d₂ = k·n₂d₁, through the quotient of the denominators
     /// where one divides the other.
     pub fn is_multiple(&self, other: &RatFn, k: &BigRational) -> bool {
-        match self.cross(other) {
-            Cross::Proportional(c) => self.num.scale(&c) == other.num.scale(k),
-            Cross::Quotient(n1, n2) => n1 == n2.scale(k),
-        }
+        let (left, right, c) = self.cross(other);
+        left.scale(&c) == right.scale(k)
     }
 
     /// If `self = k · other` for a non-zero rational `k`, return `k`; with d₂ = c·d₁,
     /// k = c · (n₁ / n₂).
     pub fn ratio_to(&self, other: &RatFn) -> Option<BigRational> {
-        match self.cross(other) {
-            Cross::Proportional(c) => self.num.ratio_to(&other.num).map(|k| k * c),
-            Cross::Quotient(n1, n2) => n1.ratio_to(&n2),
-        }
+        let (left, right, c) = self.cross(other);
+        left.ratio_to(&right).map(|k| k * c)
     }
 
-    /// The two numerators over a common denominator: scaled (denominators proportional,
-    /// d₂ = c·d₁: n₁·c against n₂), or multiplied by a quotient of the denominators where one
-    /// divides the other, else crosswise (n₁d₂ against n₂d₁).
-    fn cross(&self, other: &RatFn) -> Cross {
+    /// The two numerators over a common denominator, the first to be scaled by the
+    /// rational: n₁·c against n₂ where the denominators are proportional (d₂ = c·d₁); where
+    /// one divides the other, each numerator multiplied by what its denominator lacks (n₁q
+    /// against n₂ for d₂ = q·d₁); else crosswise, n₁d₂ against n₂d₁.
+    fn cross<'a>(&'a self, other: &'a RatFn) -> (Cow<'a, Poly>, Cow<'a, Poly>, BigRational) {
+        let one = BigRational::one();
         if let Some(c) = other.den.ratio_to(&self.den) {
-            return Cross::Proportional(c);
+            return (Cow::Borrowed(&self.num), Cow::Borrowed(&other.num), c);
         }
-        if let Some(q) = other.den.div_exact(&self.den) {
-            return Cross::Quotient(&self.num * &q, other.num.clone());
-        }
-        if let Some(q) = self.den.div_exact(&other.den) {
-            return Cross::Quotient(self.num.clone(), &other.num * &q);
-        }
-        Cross::Quotient(&self.num * &other.den, &other.num * &self.den)
+        let (left, right) = if let Some(q) = other.den.div_exact(&self.den) {
+            (Cow::Owned(&self.num * &q), Cow::Borrowed(&other.num))
+        } else if let Some(q) = self.den.div_exact(&other.den) {
+            (Cow::Borrowed(&self.num), Cow::Owned(&other.num * &q))
+        } else {
+            (
+                Cow::Owned(&self.num * &other.den),
+                Cow::Owned(&other.num * &self.den),
+            )
+        };
+        (left, right, one)
     }
 
     /// Whether this is zero.
@@ -265,14 +268,6 @@ impl Default for RatFn {
     fn default() -> Self {
         Poly::zero().into()
     }
-}
-
-/// Two numerators over a common denominator ([`RatFn::cross`]).
-enum Cross {
-    /// The denominators are proportional, d₂ = c·d₁: the first numerator is to be scaled by c.
-    Proportional(BigRational),
-    /// The numerators, each multiplied as needed.
-    Quotient(Poly, Poly),
 }
 
 /// Solve the square linear system `m · x = rhs` over rational functions by Gaussian
