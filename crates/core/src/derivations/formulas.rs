@@ -104,6 +104,15 @@ fn in_c2(f: &RatFn, k: usize) -> RatFn {
 /// assert!(d.equals(&printed));
 /// ```
 pub fn derived(name: &str) -> Option<RatFn> {
+    // each derived once per process: the audit's two levels, its expansions and the census
+    // ask for the same ones
+    static DERIVED: std::sync::LazyLock<Vec<std::sync::OnceLock<Option<RatFn>>>> =
+        std::sync::LazyLock::new(|| NAMES.iter().map(|_| std::sync::OnceLock::new()).collect());
+    let at = NAMES.iter().position(|(n, _)| *n == name)?;
+    DERIVED[at].get_or_init(|| derive(name)).clone()
+}
+
+fn derive(name: &str) -> Option<RatFn> {
     let diff = |i: &str, j: &str| &abc(i) - &abc(j);
     let tri = |e: [&str; 3]| &frame_equation(e, "i") - &frame_equation(e, "1");
     let app = eliminate_symbolic;

@@ -73,7 +73,10 @@ pub struct ExpandedFinding {
 pub(super) struct Expansions {
     /// Every name of the case, with its reduced derivation and its expansion (with its level),
     /// each computed when first asked for; `None` where the name has no derivation.
-    names: std::collections::BTreeMap<String, Expansion>,
+    names: BTreeMap<String, Expansion>,
+    /// The derivations the formulas are compared with, expanded, each once (two formulas
+    /// may share one).
+    targets: BTreeMap<String, OnceLock<Option<RatFn>>>,
 }
 
 #[derive(Default)]
@@ -94,7 +97,20 @@ impl Expansions {
                 .into_iter()
                 .map(|n| (n.clone(), Expansion::default()))
                 .collect(),
+            targets: case
+                .formulas
+                .iter()
+                .map(|f| (f.derived.clone(), OnceLock::new()))
+                .collect(),
         }
+    }
+
+    /// The derivation `name` (of [`derived`]) expanded, `None` for an unknown one.
+    pub(super) fn target(&self, name: &str) -> Option<&RatFn> {
+        self.targets
+            .get(name)?
+            .get_or_init(|| derived(name).map(|t| self.expand(&t)))
+            .as_ref()
     }
 
     /// The name's derivation in lowest terms (while still small: in the d's, not expanded).
@@ -194,12 +210,20 @@ pub fn expanded(case: &FormulaAuditCase, judged: Judged) -> Result<Vec<ExpandedF
         .enumerate()
         .filter(|(_, f)| judged(f))
         .map(|(i, f)| {
-            let printed = reading.read(Text::Printed(i))?;
-            let corrected = reading.read(Text::Corrected(i))?;
-            let target = derived(&f.derived)
+            // the formula's forms and its target are independent
+            let (forms, target) = rayon::join(
+                || -> Result<_> {
+                    Ok((
+                        reading.read(Text::Printed(i))?,
+                        reading.read(Text::Corrected(i))?,
+                    ))
+                },
+                || expansions.target(&f.derived),
+            );
+            let (printed, corrected) = forms?;
+            let target = target
                 .ok_or_else(|| Error::InvalidInput(format!("no derivation `{}`", f.derived)))?;
-            let target = expansions.expand(&target);
-            Ok(one(f, &target, printed, corrected, case))
+            Ok(one(f, target, printed, corrected, case))
         })
         .collect();
     found.into_iter().collect()
