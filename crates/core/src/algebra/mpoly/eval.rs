@@ -101,32 +101,52 @@ impl MPoly {
     }
 
     /// The values at several points, the coefficients' images given (`coefs[t]` the image
-    /// of term t's coefficient, so that each is reduced once, not once per point): each term's
-    /// exponents are decoded once for all points.
+    /// of term t's coefficient, so that each is reduced once, not once per point). Each
+    /// term's exponents are decoded once, into places in a point's table of powers; then
+    /// point after point, its table in the nearest cache, every term is one product per
+    /// variable it contains.
     pub fn eval_points<T: Scalar>(&self, coefs: &[T], points: &[Vec<T>]) -> Vec<T> {
         // each degree found once (a pass over the terms), not once per point
         let degrees: Vec<usize> = (0..self.nvars())
             .map(|i| self.degree_in(i) as usize)
             .collect();
-        let tables: Vec<Vec<Vec<T>>> = points.iter().map(|at| powers(&degrees, at)).collect();
-        let mut sums = vec![T::zero(); points.len()];
-        let mut factors: Vec<(usize, usize)> = Vec::with_capacity(self.nvars());
-        // one image per term: fewer is a caller's error, and indexing says so
-        for (t, c) in coefs[..self.len()].iter().enumerate() {
+        // variable i's powers start at `first[i]` of a point's table
+        let first: Vec<usize> = degrees
+            .iter()
+            .scan(0, |at, d| {
+                let here = *at;
+                *at += d + 1;
+                Some(here)
+            })
+            .collect();
+        let (mut places, mut ends) = (Vec::new(), Vec::with_capacity(self.len()));
+        for t in 0..self.len() {
             let m = self.packed(t);
-            factors.clear();
-            factors.extend((0..self.nvars()).filter_map(|i| {
+            for (i, at) in first.iter().enumerate() {
                 let e = self.pack.exponent(m, i) as usize;
-                (e > 0).then_some((i, e))
-            }));
-            for (sum, pw) in sums.iter_mut().zip(&tables) {
-                let v = factors
-                    .iter()
-                    .fold(c.clone(), |v, &(i, e)| v.mul(&pw[i][e]));
-                *sum = sum.add(&v);
+                if e > 0 {
+                    places.push(at + e);
+                }
             }
+            ends.push(places.len());
         }
-        sums
+        points
+            .iter()
+            .map(|at| {
+                let table: Vec<T> = powers(&degrees, at).into_iter().flatten().collect();
+                let mut sum = T::zero();
+                let mut start = 0;
+                // one image per term: fewer is a caller's error, and indexing says so
+                for (c, &end) in coefs[..self.len()].iter().zip(&ends) {
+                    let v = places[start..end]
+                        .iter()
+                        .fold(c.clone(), |v, &k| v.mul(&table[k]));
+                    sum = sum.add(&v);
+                    start = end;
+                }
+                sum
+            })
+            .collect()
     }
 
     /// The image of every coefficient, in term order (for [`MPoly::eval_points`]).
