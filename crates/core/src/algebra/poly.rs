@@ -97,7 +97,7 @@ impl Poly {
         if p.is_zero() || scale.is_zero() {
             return Poly::zero();
         }
-        let (g, pp) = p.primitive();
+        let (g, pp) = p.into_primitive();
         let used = pp.used();
         let (ring, pp) = if used.iter().all(|u| *u) {
             (ring, pp)
@@ -237,7 +237,7 @@ impl Poly {
     }
 
     /// `self + sign · other` over a common denominator of the contents.
-    fn combine(&self, other: &Poly, negate: bool) -> Poly {
+    fn combine<'a>(&'a self, other: &'a Poly, negate: bool) -> Poly {
         let cb = if negate {
             -&other.content
         } else {
@@ -259,14 +259,11 @@ impl Poly {
         let fb = cb.numer() * (&l / cb.denom());
         let g = fa.gcd(&fb);
         let (fa, fb) = (Coef::from_big(fa / &g), Coef::from_big(fb / &g));
-        let scaled = |p: &MPoly, f: &Coef| {
-            if *f == Coef::Small(1) {
-                p.clone()
-            } else {
-                p.scale(f)
-            }
+        let scaled = |p: Cow<'a, MPoly>, f: &Coef| match *f == Coef::Small(1) {
+            true => p,
+            false => Cow::Owned(p.scale(f)),
         };
-        let sum = &scaled(&pa, &fa) + &scaled(&pb, &fb);
+        let sum = &*scaled(pa, &fa) + &*scaled(pb, &fb);
         Poly::from_parts(ring, BigRational::new(g, l), sum)
     }
 

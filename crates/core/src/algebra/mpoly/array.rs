@@ -130,6 +130,15 @@ fn fits_i128(a: &MPoly, b: &MPoly) -> bool {
     max_bits(a) + max_bits(b) + u64::from(64 - shorter.leading_zeros()) <= 126
 }
 
+/// Whether the array method applies to `a · b` (see [`plan`]).
+pub(super) fn applies(a: &MPoly, b: &MPoly) -> bool {
+    let slot = match fits_i128(a, b) {
+        true => size_of::<i128>(),
+        false => size_of::<Wide>(),
+    };
+    plan(a, b, slot).is_some()
+}
+
 /// `a · b` by the array method, or `None` when it does not apply (see [`plan`]).
 pub(super) fn product(a: &MPoly, b: &MPoly) -> Option<MPoly> {
     let pack = Packing::for_degree(a.nvars(), a.degree() + b.degree());

@@ -24,7 +24,7 @@ pub mod ring;
 pub use coeff::{content, Acc, Coef};
 pub use eval::Scalar;
 pub use monomial::Packing;
-pub use mul::{mul_array, mul_heap, mul_with, MulMethod};
+pub use mul::{mul_array, mul_heap, mul_with, square, MulMethod};
 pub use ring::Ring;
 
 /// A polynomial with integer coefficients in `nvars` variables (the variables are named by

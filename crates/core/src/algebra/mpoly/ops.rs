@@ -141,6 +141,20 @@ impl MPoly {
         }
     }
 
+    /// [`MPoly::primitive`] of an owned polynomial: its coefficients divided in place, and
+    /// nothing copied when the content is one.
+    pub fn into_primitive(mut self) -> (Coef, MPoly) {
+        let g = self.content();
+        if g.is_zero() || g == Coef::Small(1) {
+            return (if g.is_zero() { Coef::Small(0) } else { g }, self);
+        }
+        let divided: Option<Vec<Coef>> = self.coefs.iter().map(|k| k.div_exact(&g)).collect();
+        if let Some(c) = divided {
+            self.coefs = c;
+        }
+        (g, self)
+    }
+
     /// `(content, primitive part)`: the primitive part has a positive leading coefficient.
     pub fn primitive(&self) -> (Coef, MPoly) {
         let g = self.content();
@@ -151,21 +165,24 @@ impl MPoly {
         (g, p)
     }
 
-    /// `self^e` by repeated squaring.
+    /// `self^e` by repeated squaring (each square through [`super::mul::square`]).
     pub fn pow(&self, e: u32) -> MPoly {
-        let mut result = MPoly::constant(self.nvars(), Coef::Small(1));
-        let mut base = self.clone();
+        let mut result: Option<MPoly> = None;
+        let mut base = std::borrow::Cow::Borrowed(self);
         let mut e = e;
         while e > 0 {
             if e & 1 == 1 {
-                result = &result * &base;
+                result = Some(match result {
+                    None => base.clone().into_owned(),
+                    Some(r) => &r * &*base,
+                });
             }
             e >>= 1;
             if e > 0 {
-                base = &base * &base;
+                base = std::borrow::Cow::Owned(super::mul::square(&base));
             }
         }
-        result
+        result.unwrap_or_else(|| MPoly::constant(self.nvars(), Coef::Small(1)))
     }
 
     /// `self = Σₑ out[e] · xᵢᵉ`: the coefficients with respect to variable `i` (each still in

@@ -206,6 +206,10 @@ mod array_against_heap {
                 false => a,
             };
             prop_assert_eq!(mul_with(&a, &b, MulMethod::Hash), mul_with(&a, &b, MulMethod::Heap));
+            // a square over the pairs i ≤ j, and powers by squaring
+            prop_assert_eq!(orthocheck_core::algebra::mpoly::square(&b), mul_with(&b, &b, MulMethod::Heap));
+            let cube = mul_with(&mul_with(&b, &b, MulMethod::Heap), &b, MulMethod::Heap);
+            prop_assert_eq!(b.pow(3), cube);
         }
 
         // word-sized coefficients: the slots that count their overflows
