@@ -7,13 +7,21 @@
 //! attempt repeats. The images grow by a factor of the degree per variable, so a size
 //! limit gives up rather than compute with huge integers; [`MPoly::gcd`] then falls back to
 //! the primitive remainder sequences of [`super::prs`], which always answer.
+//!
+//! Before either, a test modulo a prime settles the common case of coprime inputs: for each
+//! variable both use, the two are evaluated at a point in the others, and the univariate gcd
+//! of the images has degree zero. Where the first input's leading coefficient in that
+//! variable does not vanish at the point, the true gcd keeps its degree in the image, so it
+//! has degree zero in every variable: it is a constant.
 
 use num_bigint::BigInt;
 use num_integer::Integer;
 use num_traits::{Signed, Zero};
 
 use super::coeff::Coef;
+use super::eval::Scalar;
 use super::MPoly;
+use crate::algebra::modp::Fp;
 
 /// Largest coefficient (in bits) an evaluated image may reach.
 const IMAGE_BITS: u64 = 1 << 14;
@@ -62,9 +70,77 @@ impl MPoly {
         }
         let (ca, a) = self.primitive();
         let (cb, b) = other.primitive();
-        let g = heu(&a, &b)?;
+        let g = match coprime(&a, &b) {
+            true => MPoly::constant(a.nvars(), Coef::Small(1)),
+            false => heu(&a, &b)?,
+        };
         Some(g.scale(&ca.gcd(&cb)))
     }
+}
+
+/// Whether `a` and `b` (of one ring) are proven coprime up to a constant, by the test of
+/// the module's doc modulo 2⁶¹ − 1; `false` says nothing.
+fn coprime(a: &MPoly, b: &MPoly) -> bool {
+    let (ua, ub) = (a.used(), b.used());
+    let n = a.nvars();
+    // the points: fixed residues, the same at every run
+    let at: Vec<Fp> = (0..n as u64)
+        .map(|k| {
+            Fp::from_coef(&Coef::Small(
+                (0x2545_f491_4f6c_dd1d_u64.wrapping_mul(k + 7) >> 4) as i64,
+            ))
+        })
+        .collect();
+    (0..n).filter(|&i| ua[i] && ub[i]).all(|i| {
+        let (ea, eb) = (image(a, i, &at), image(b, i, &at));
+        // the leading coefficient must survive, for the gcd's degree to survive
+        ea.last().is_some_and(|c| c.0 != 0) && gcd_degree(ea, eb) == 0
+    })
+}
+
+/// `p` with every variable but `i` set to its residue in `at`: a polynomial in xᵢ, its
+/// coefficients from the constant up (as many as xᵢ's degree in `p` plus one).
+fn image(p: &MPoly, i: usize, at: &[Fp]) -> Vec<Fp> {
+    let mut out = vec![Fp::zero(); p.degree_in(i) as usize + 1];
+    for t in 0..p.len() {
+        let e = p.exponents(t);
+        let v = e
+            .iter()
+            .enumerate()
+            .filter(|&(k, &x)| k != i && x > 0)
+            .fold(Fp::from_coef(p.coef(t)), |v, (k, &x)| {
+                v.mul(&at[k].pow(u64::from(x)))
+            });
+        let slot = &mut out[e[i] as usize];
+        *slot = slot.add(&v);
+    }
+    out
+}
+
+/// The degree of the gcd of two univariate polynomials modulo the prime (coefficients from
+/// the constant up; a zero polynomial has no degree, and the gcd is then the other).
+fn gcd_degree(mut a: Vec<Fp>, mut b: Vec<Fp>) -> usize {
+    let trim = |p: &mut Vec<Fp>| {
+        while p.last().is_some_and(|c| c.0 == 0) {
+            p.pop();
+        }
+    };
+    trim(&mut a);
+    trim(&mut b);
+    while !b.is_empty() {
+        // a mod b
+        let inv = b.last().and_then(|c| c.inv()).unwrap_or(Fp::zero());
+        while a.len() >= b.len() {
+            let f = a.last().map_or(Fp::zero(), |c| c.mul(&inv));
+            let shift = a.len() - b.len();
+            for (k, c) in b.iter().enumerate() {
+                a[shift + k] = a[shift + k].sub(&f.mul(c));
+            }
+            trim(&mut a);
+        }
+        std::mem::swap(&mut a, &mut b);
+    }
+    a.len().saturating_sub(1)
 }
 
 /// gcd of two primitive polynomials with positive leading coefficients.
