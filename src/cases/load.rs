@@ -94,6 +94,11 @@ fn parse_tagged<T: serde::de::DeserializeOwned>(
 ) -> Result<T> {
     let limits = budget.clone();
     let options = serde_saphyr::options! { with_snippet: false, budget: Some(budget.clone()) };
+    // the common case first, without tracking the field path; a file that fails is read
+    // again with it, for the error to name its field
+    if let Ok(v) = serde_saphyr::from_str_with_options(&tagged.text, options.clone()) {
+        return Ok(v);
+    }
     let mut field: Option<String> = None;
     let parsed =
         serde_saphyr::with_deserializer_from_str_with_options(&tagged.text, options, |de| {
