@@ -20,14 +20,16 @@ fn audit(c: &mut Criterion) {
     g.bench_function("whole_audit", |b| {
         b.iter(|| audit_all(&all, Wanted::All).expect("the audit runs"))
     });
-    // one formula item of §2.2, eq. p3f3sqr (the twofold squaring), and an Appendix A
-    // coefficient (its expansion in the projections, among the dearest items); the
+    // one formula item of §2.2, eq. p3f3sqr (the twofold squaring), an Appendix A
+    // coefficient (its expansion in the projections), and the dearest item, §2.2's
+    // substitution of the linear solution into F₃ (its own work half the audit's); the
     // derived frame equations and the symbolic elimination are kept once derived (once per
     // process), so after the first iteration these are warm figures
     for id in [
         "p3f3-differences/equation-1",
         "p3f3sqr",
         "appA-coefficients/f_b",
+        "p3f3-quadratic/substitution",
     ] {
         g.bench_function(format!("one_item/{id}"), |b| {
             b.iter(|| audit_all(&all, Wanted::Id(id)).expect("the audit runs"))

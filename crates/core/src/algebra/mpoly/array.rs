@@ -337,20 +337,37 @@ struct Drained<S> {
 impl<S: Slot> Drained<S> {
     /// Move the non-zero slots of `chunk` (outer exponents in `e[..split]`) out, zeroing it.
     fn drain(&mut self, chunk: &mut [S], e: &mut [u32], split: usize, inner: &[usize]) {
-        let stride = strides(inner);
         let mut w = vec![0u64; self.pack.words];
         let size: usize = inner.iter().product();
+        // the inner exponents of slot k, counted down with k (no division per slot)
+        let inner_e = &mut e[split..];
+        for (x, d) in inner_e.iter_mut().zip(inner) {
+            *x = *d as u32 - 1;
+        }
         for k in (0..size).rev() {
             let c = std::mem::take(&mut chunk[k]);
-            if c.is_zero() {
-                continue;
+            if !c.is_zero() {
+                self.pack.pack_into(e, &mut w);
+                self.degree.push(self.pack.degree(&w) as u32);
+                self.exps.extend_from_slice(&w);
+                self.sums.push(c);
             }
-            decode(k, &stride, inner, &mut e[split..]);
-            self.pack.pack_into(e, &mut w);
-            self.degree.push(self.pack.degree(&w) as u32);
-            self.exps.extend_from_slice(&w);
-            self.sums.push(c);
+            for (x, d) in e[split..].iter_mut().zip(inner).rev() {
+                if *x > 0 {
+                    *x -= 1;
+                    break;
+                }
+                *x = *d as u32 - 1;
+            }
         }
+    }
+
+    /// `self`'s terms followed by `next`'s.
+    fn append(mut self, next: Drained<S>) -> Drained<S> {
+        self.degree.extend(next.degree);
+        self.exps.extend(next.exps);
+        self.sums.extend(next.sums);
+        self
     }
 
     /// The terms in graded order: a stable counting pass by descending total degree.
@@ -380,58 +397,126 @@ impl<S: Slot> Drained<S> {
     }
 }
 
-/// `a · b` over the box `dims` in chunks of the variables after `split`, accumulated in
-/// `S`; `pack` holds the product's degree.
-fn product_in<S: Slot>(a: &MPoly, b: &MPoly, dims: &[usize], split: usize, pack: Packing) -> MPoly {
-    let (outer, inner) = dims.split_at(split);
-    let so = strides(outer);
-    let (ga, gb) = (Groups::new(a, dims, split), Groups::new(b, dims, split));
-    let a_groups: Vec<(usize, Vec<u32>)> = ga
-        .occupied()
-        .map(|o| {
-            let mut v = vec![0u32; split];
-            decode(o, &so, outer, &mut v);
-            (o, v)
-        })
-        .collect();
-    let mut chunk = vec![S::default(); inner.iter().product::<usize>().next_power_of_two()];
-    let mut out = Drained {
-        pack,
-        degree: Vec::new(),
-        exps: Vec::new(),
-        sums: Vec::new(),
-    };
-    let mut e = vec![0u32; dims.len()];
-    let last = inner.last().copied().unwrap_or(1);
-    let (ra, rb) = (Rows::new(&ga, last), Rows::new(&gb, last));
-    // rows at least half full: their zeros cost less than an index per product
-    let dense = ra.coefs.len() <= 2 * a.len() && rb.coefs.len() <= 2 * b.len();
-    for o in (0..outer.iter().product::<usize>()).rev() {
-        decode(o, &so, outer, &mut e[..split]);
+/// Term products from which a product's chunks are computed on every core: below, the
+/// threads' start and the chunks' buffers cost more than they share.
+const PARALLEL_PRODUCTS: usize = 1 << 22;
+
+/// What every chunk of `a · b` reads: both operands grouped by their outer exponents, as
+/// terms and as rows.
+struct Operands<'p> {
+    outer: &'p [usize],
+    inner: &'p [usize],
+    ga: Groups,
+    gb: Groups,
+    ra: Rows,
+    rb: Rows,
+    /// `a`'s occupied groups with their outer exponents.
+    a_groups: Vec<(usize, Vec<u32>)>,
+    /// Both operands' rows at least half full: their zeros cost less than an index per
+    /// product.
+    dense: bool,
+}
+
+impl<'p> Operands<'p> {
+    fn new(a: &MPoly, b: &MPoly, dims: &'p [usize], split: usize) -> Operands<'p> {
+        let (outer, inner) = dims.split_at(split);
+        let so = strides(outer);
+        let (ga, gb) = (Groups::new(a, dims, split), Groups::new(b, dims, split));
+        let a_groups = ga
+            .occupied()
+            .map(|o| {
+                let mut v = vec![0u32; split];
+                decode(o, &so, outer, &mut v);
+                (o, v)
+            })
+            .collect();
+        let last = inner.last().copied().unwrap_or(1);
+        let (ra, rb) = (Rows::new(&ga, last), Rows::new(&gb, last));
+        let dense = ra.coefs.len() <= 2 * a.len() && rb.coefs.len() <= 2 * b.len();
+        Operands {
+            outer,
+            inner,
+            ga,
+            gb,
+            ra,
+            rb,
+            a_groups,
+            dense,
+        }
+    }
+
+    /// Chunk `o` of the product, drained into `out`; `chunk` is zero and stays so, `e` is
+    /// scratch for the exponents.
+    fn chunk_into<S: Slot>(&self, o: usize, chunk: &mut [S], e: &mut [u32], out: &mut Drained<S>) {
+        let split = self.outer.len();
+        decode(o, &strides(self.outer), self.outer, &mut e[..split]);
         let mut touched = false;
-        for (pa, va) in a_groups.iter().take_while(|g| g.0 <= o) {
+        for (pa, va) in self.a_groups.iter().take_while(|g| g.0 <= o) {
             // the leading exponents of b's group are o's less a's, when none is negative
             if va.iter().zip(&e[..split]).any(|(x, y)| x > y) {
                 continue;
             }
-            let tb = gb.terms(o - pa);
+            let tb = self.gb.terms(o - pa);
             if tb.is_empty() {
                 continue;
             }
             touched = true;
-            if dense {
-                for x in ra.group(*pa) {
-                    for y in rb.group(o - pa) {
-                        convolve(&mut chunk, x.0 + y.0, ra.coefs(x), rb.coefs(y));
+            if self.dense {
+                for x in self.ra.group(*pa) {
+                    for y in self.rb.group(o - pa) {
+                        convolve(chunk, x.0 + y.0, self.ra.coefs(x), self.rb.coefs(y));
                     }
                 }
             } else {
-                accumulate(&mut chunk, ga.terms(*pa), tb);
+                accumulate(chunk, self.ga.terms(*pa), tb);
             }
         }
         if touched {
-            out.drain(&mut chunk, &mut e, split, inner);
+            out.drain(chunk, e, split, self.inner);
         }
     }
-    out.into_poly((a.degree() + b.degree()) as usize)
+}
+
+/// `a · b` over the box `dims` in chunks of the variables after `split`, accumulated in
+/// `S`; `pack` holds the product's degree. The chunks are taken in descending order, on every
+/// core for a large product: each worker drains a run of consecutive chunks, and the runs
+/// are joined in order, so the terms are the same whatever the number of threads.
+fn product_in<S: Slot + Send>(
+    a: &MPoly,
+    b: &MPoly,
+    dims: &[usize],
+    split: usize,
+    pack: Packing,
+) -> MPoly {
+    use rayon::prelude::*;
+    let ops = Operands::new(a, b, dims, split);
+    let size = ops.inner.iter().product::<usize>().next_power_of_two();
+    let start = || {
+        let out = Drained {
+            pack,
+            degree: Vec::new(),
+            exps: Vec::new(),
+            sums: Vec::new(),
+        };
+        (vec![S::default(); size], vec![0u32; dims.len()], out)
+    };
+    let step = |(mut chunk, mut e, mut out): (Vec<S>, Vec<u32>, Drained<S>), o: usize| {
+        ops.chunk_into(o, &mut chunk, &mut e, &mut out);
+        (chunk, e, out)
+    };
+    let chunks = 0..ops.outer.iter().product::<usize>();
+    let drained = if a.len().saturating_mul(b.len()) < PARALLEL_PRODUCTS {
+        chunks.rev().fold(start(), step).2
+    } else {
+        let runs: Vec<Drained<S>> = chunks
+            .into_par_iter()
+            .rev()
+            .fold(start, step)
+            .map(|run| run.2)
+            .collect();
+        runs.into_iter()
+            .reduce(Drained::append)
+            .unwrap_or_else(|| start().2)
+    };
+    drained.into_poly((a.degree() + b.degree()) as usize)
 }

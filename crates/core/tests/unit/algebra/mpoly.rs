@@ -34,6 +34,24 @@ fn heap_and_array_products_agree() {
 }
 
 #[test]
+fn a_large_array_product_is_the_same_on_any_number_of_threads() {
+    // 2380² term products: above the size from which the chunks are shared by the threads
+    let p = fateman(13);
+    let q = &p + &MPoly::constant(4, Coef::Small(1));
+    let on = |threads: usize| {
+        rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .unwrap()
+            .install(|| mul_array(&p, &q).unwrap())
+    };
+    let one = on(1);
+    assert_eq!(one, on(2));
+    assert_eq!(one, mul_with(&p, &q, MulMethod::Hash));
+    assert_eq!(one.len(), 27405); // the monomials of degree ≤ 26 in four variables
+}
+
+#[test]
 fn big_coefficients_multiply_and_divide() {
     let r = Ring::new(&["x", "y"]);
     let x = r.var("x").unwrap();
