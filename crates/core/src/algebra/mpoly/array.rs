@@ -340,8 +340,7 @@ impl<S: Slot> Drained<S> {
         let mut w = vec![0u64; self.pack.words];
         let size: usize = inner.iter().product();
         // the inner exponents of slot k, counted down with k (no division per slot)
-        let inner_e = &mut e[split..];
-        for (x, d) in inner_e.iter_mut().zip(inner) {
+        for (x, d) in e[split..].iter_mut().zip(inner) {
             *x = *d as u32 - 1;
         }
         for k in (0..size).rev() {
@@ -405,6 +404,8 @@ const PARALLEL_PRODUCTS: usize = 1 << 22;
 /// terms and as rows.
 struct Operands<'p> {
     outer: &'p [usize],
+    /// Strides of the outer index.
+    outer_strides: Vec<usize>,
     inner: &'p [usize],
     ga: Groups,
     gb: Groups,
@@ -420,13 +421,13 @@ struct Operands<'p> {
 impl<'p> Operands<'p> {
     fn new(a: &MPoly, b: &MPoly, dims: &'p [usize], split: usize) -> Operands<'p> {
         let (outer, inner) = dims.split_at(split);
-        let so = strides(outer);
+        let outer_strides = strides(outer);
         let (ga, gb) = (Groups::new(a, dims, split), Groups::new(b, dims, split));
         let a_groups = ga
             .occupied()
             .map(|o| {
                 let mut v = vec![0u32; split];
-                decode(o, &so, outer, &mut v);
+                decode(o, &outer_strides, outer, &mut v);
                 (o, v)
             })
             .collect();
@@ -435,6 +436,7 @@ impl<'p> Operands<'p> {
         let dense = ra.coefs.len() <= 2 * a.len() && rb.coefs.len() <= 2 * b.len();
         Operands {
             outer,
+            outer_strides,
             inner,
             ga,
             gb,
@@ -449,7 +451,7 @@ impl<'p> Operands<'p> {
     /// scratch for the exponents.
     fn chunk_into<S: Slot>(&self, o: usize, chunk: &mut [S], e: &mut [u32], out: &mut Drained<S>) {
         let split = self.outer.len();
-        decode(o, &strides(self.outer), self.outer, &mut e[..split]);
+        decode(o, &self.outer_strides, self.outer, &mut e[..split]);
         let mut touched = false;
         for (pa, va) in self.a_groups.iter().take_while(|g| g.0 <= o) {
             // the leading exponents of b's group are o's less a's, when none is negative
