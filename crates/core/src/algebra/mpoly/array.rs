@@ -7,7 +7,10 @@
 //! add up to its own. One slot per point of the whole box instead touches a new cache line
 //! with nearly every product, and its memory grows with the box. Chunks are drained in
 //! descending lexicographic order, so one stable pass by total degree puts the product in
-//! the ring's graded order, with no sort.
+//! the ring's graded order, with no sort. Each line of a chunk (its slots that share every
+//! exponent but the last) keeps the span its products touched, and a drain reads those
+//! spans alone: most of a dense product's box is never touched (4.8 % of Fateman's n = 20
+//! box holds a term).
 //!
 //! Where both operands' terms fill at least half of their rows along the last variable (a
 //! dense product such as Fateman's), a pair of groups is multiplied row by row: two terms of
@@ -248,9 +251,21 @@ fn accumulate<S: Slot>(chunk: &mut [S], a: &[(usize, i64)], b: &[(usize, i64)]) 
 /// its first one. Group `o` holds rows `start[o]..start[o + 1]`.
 struct Rows {
     start: Vec<u32>,
-    /// (chunk index of the first coefficient, offset into `coefs`, length)
-    rows: Vec<(usize, usize, usize)>,
+    rows: Vec<Row>,
     coefs: Vec<i64>,
+}
+
+/// A row of coefficients in a chunk.
+#[derive(Clone, Copy)]
+struct Row {
+    /// Chunk index of the first coefficient.
+    at: usize,
+    /// Its line (the index over the inner exponents but the last) and last exponent.
+    line: usize,
+    t: usize,
+    /// Offset into the coefficients, and length.
+    off: usize,
+    len: usize,
 }
 
 impl Rows {
@@ -268,12 +283,18 @@ impl Rows {
             for &(i, c) in g.terms(o) {
                 match out.rows[first..].last_mut() {
                     // the same exponents but the last: the row goes on (terms ascend)
-                    Some(r) if r.0 / last == i / last => {
-                        let gap = i - r.0 - r.2;
+                    Some(r) if r.line == i / last => {
+                        let gap = i - r.at - r.len;
                         out.coefs.extend(std::iter::repeat_n(0, gap));
-                        r.2 += gap + 1;
+                        r.len += gap + 1;
                     }
-                    _ => out.rows.push((i, out.coefs.len(), 1)),
+                    _ => out.rows.push(Row {
+                        at: i,
+                        line: i / last,
+                        t: i % last,
+                        off: out.coefs.len(),
+                        len: 1,
+                    }),
                 }
                 out.coefs.push(c);
             }
@@ -282,12 +303,12 @@ impl Rows {
         out
     }
 
-    fn group(&self, o: usize) -> &[(usize, usize, usize)] {
+    fn group(&self, o: usize) -> &[Row] {
         &self.rows[self.start[o] as usize..self.start[o + 1] as usize]
     }
 
-    fn coefs(&self, r: &(usize, usize, usize)) -> &[i64] {
-        &self.coefs[r.1..r.1 + r.2]
+    fn coefs(&self, r: &Row) -> &[i64] {
+        &self.coefs[r.off..r.off + r.len]
     }
 }
 
@@ -335,28 +356,46 @@ struct Drained<S> {
 }
 
 impl<S: Slot> Drained<S> {
-    /// Move the non-zero slots of `chunk` (outer exponents in `e[..split]`) out, zeroing it.
-    fn drain(&mut self, chunk: &mut [S], e: &mut [u32], split: usize, inner: &[usize]) {
-        let mut w = vec![0u64; self.pack.words];
-        let size: usize = inner.iter().product();
-        // the inner exponents of slot k, counted down with k (no division per slot)
-        for (x, d) in e[split..].iter_mut().zip(inner) {
-            *x = *d as u32 - 1;
+    /// Move the non-zero slots of a chunk (outer exponents in `s.e[..split]`) out, zeroing
+    /// it: line by line, descending, each line only over its span of touched slots.
+    fn drain(&mut self, s: &mut Scratch<S>, split: usize, inner: &[usize]) {
+        let n = s.e.len();
+        let last = inner.last().copied().unwrap_or(1);
+        let lines = &inner[..inner.len().saturating_sub(1)];
+        let line_strides = strides(lines);
+        // a slot's exponents are its line's plus t in the last variable: packing is linear
+        let mut unit = vec![0u64; self.pack.words];
+        if n > split {
+            let mut e1 = vec![0u32; n];
+            e1[n - 1] = 1;
+            self.pack.pack_into(&e1, &mut unit);
         }
-        for k in (0..size).rev() {
-            let c = std::mem::take(&mut chunk[k]);
-            if !c.is_zero() {
-                self.pack.pack_into(e, &mut w);
-                self.degree.push(self.pack.degree(&w) as u32);
-                self.exps.extend_from_slice(&w);
-                self.sums.push(c);
+        let mut base = vec![0u64; self.pack.words];
+        for line in (0..s.spans.len()).rev() {
+            let (lo, hi) = std::mem::replace(&mut s.spans[line], EMPTY);
+            if lo >= hi {
+                continue;
             }
-            for (x, d) in e[split..].iter_mut().zip(inner).rev() {
-                if *x > 0 {
-                    *x -= 1;
-                    break;
+            decode(
+                line,
+                &line_strides,
+                lines,
+                &mut s.e[split..split + lines.len()],
+            );
+            if n > split {
+                s.e[n - 1] = 0;
+            }
+            self.pack.pack_into(&s.e, &mut base);
+            let degree = self.pack.degree(&base) as u32;
+            for t in (lo..hi).rev() {
+                let c = std::mem::take(&mut s.chunk[line * last + t]);
+                if !c.is_zero() {
+                    let t64 = t as u64;
+                    let word = base.iter().zip(&unit);
+                    self.exps.extend(word.map(|(b, u)| b.wrapping_add(t64 * u)));
+                    self.degree.push(degree + t as u32);
+                    self.sums.push(c);
                 }
-                *x = *d as u32 - 1;
             }
         }
     }
@@ -394,6 +433,17 @@ impl<S: Slot> Drained<S> {
             coefs,
         }
     }
+}
+
+/// A line's span of touched slots when none is.
+const EMPTY: (usize, usize) = (usize::MAX, 0);
+
+/// A chunk being accumulated: its slots, the touched span of each line (the slots that
+/// share all inner exponents but the last), and the exponents of a slot.
+struct Scratch<S> {
+    chunk: Vec<S>,
+    spans: Vec<(usize, usize)>,
+    e: Vec<u32>,
 }
 
 /// Term products from which a product's chunks are computed on every core: below, the
@@ -447,15 +497,14 @@ impl<'p> Operands<'p> {
         }
     }
 
-    /// Chunk `o` of the product, drained into `out`; `chunk` is zero and stays so, `e` is
-    /// scratch for the exponents.
-    fn chunk_into<S: Slot>(&self, o: usize, chunk: &mut [S], e: &mut [u32], out: &mut Drained<S>) {
+    /// Chunk `o` of the product, drained into `out`; `s` is zero and stays so.
+    fn chunk_into<S: Slot>(&self, o: usize, s: &mut Scratch<S>, out: &mut Drained<S>) {
         let split = self.outer.len();
-        decode(o, &self.outer_strides, self.outer, &mut e[..split]);
+        decode(o, &self.outer_strides, self.outer, &mut s.e[..split]);
         let mut touched = false;
         for (pa, va) in self.a_groups.iter().take_while(|g| g.0 <= o) {
             // the leading exponents of b's group are o's less a's, when none is negative
-            if va.iter().zip(&e[..split]).any(|(x, y)| x > y) {
+            if va.iter().zip(&s.e[..split]).any(|(x, y)| x > y) {
                 continue;
             }
             let tb = self.gb.terms(o - pa);
@@ -466,15 +515,25 @@ impl<'p> Operands<'p> {
             if self.dense {
                 for x in self.ra.group(*pa) {
                     for y in self.rb.group(o - pa) {
-                        convolve(chunk, x.0 + y.0, self.ra.coefs(x), self.rb.coefs(y));
+                        convolve(
+                            &mut s.chunk,
+                            x.at + y.at,
+                            self.ra.coefs(x),
+                            self.rb.coefs(y),
+                        );
+                        let span = &mut s.spans[x.line + y.line];
+                        span.0 = span.0.min(x.t + y.t);
+                        span.1 = span.1.max(x.t + y.t + x.len + y.len - 1);
                     }
                 }
             } else {
-                accumulate(chunk, self.ga.terms(*pa), tb);
+                accumulate(&mut s.chunk, self.ga.terms(*pa), tb);
+                let last = self.inner.last().copied().unwrap_or(1);
+                s.spans.iter_mut().for_each(|span| *span = (0, last));
             }
         }
         if touched {
-            out.drain(chunk, e, split, self.inner);
+            out.drain(s, split, self.inner);
         }
     }
 }
@@ -492,7 +551,8 @@ fn product_in<S: Slot + Send>(
 ) -> MPoly {
     use rayon::prelude::*;
     let ops = Operands::new(a, b, dims, split);
-    let size = ops.inner.iter().product::<usize>().next_power_of_two();
+    let inner = ops.inner.iter().product::<usize>();
+    let lines = inner / ops.inner.last().copied().unwrap_or(1);
     let start = || {
         let out = Drained {
             pack,
@@ -500,25 +560,30 @@ fn product_in<S: Slot + Send>(
             exps: Vec::new(),
             sums: Vec::new(),
         };
-        (vec![S::default(); size], vec![0u32; dims.len()], out)
+        let s = Scratch {
+            chunk: vec![S::default(); inner.next_power_of_two()],
+            spans: vec![EMPTY; lines],
+            e: vec![0u32; dims.len()],
+        };
+        (s, out)
     };
-    let step = |(mut chunk, mut e, mut out): (Vec<S>, Vec<u32>, Drained<S>), o: usize| {
-        ops.chunk_into(o, &mut chunk, &mut e, &mut out);
-        (chunk, e, out)
+    let step = |(mut s, mut out): (Scratch<S>, Drained<S>), o: usize| {
+        ops.chunk_into(o, &mut s, &mut out);
+        (s, out)
     };
     let chunks = 0..ops.outer.iter().product::<usize>();
     let drained = if a.len().saturating_mul(b.len()) < PARALLEL_PRODUCTS {
-        chunks.rev().fold(start(), step).2
+        chunks.rev().fold(start(), step).1
     } else {
         let runs: Vec<Drained<S>> = chunks
             .into_par_iter()
             .rev()
             .fold(start, step)
-            .map(|run| run.2)
+            .map(|run| run.1)
             .collect();
         runs.into_iter()
             .reduce(Drained::append)
-            .unwrap_or_else(|| start().2)
+            .unwrap_or_else(|| start().1)
     };
     drained.into_poly((a.degree() + b.degree()) as usize)
 }
