@@ -1,7 +1,7 @@
 //! Sparse polynomial products: Fateman's p · (p + 1), p = (1 + x + y + z + t)^n. For n = 10
 //! by the method the shape picks (the dense array) and by the heap; for n = 20 (sums within
-//! an i128) and n = 30 (sums beyond it) by the array, the sizes `scripts/fateman.py` runs
-//! in python-flint. And the Schwartz–Zippel screen modulo word primes: (1 + x + y + z + t)^8
+//! an i128) and n = 30 (sums beyond it) by the array on one thread, the sizes and the
+//! thread count `scripts/fateman.py` runs in python-flint, and n = 20 on every core. And the Schwartz–Zippel screen modulo word primes: (1 + x + y + z + t)^8
 //! against its expansion at 64 points, as the audit runs it.
 
 use criterion::{criterion_group, criterion_main, Criterion};
@@ -30,11 +30,25 @@ fn fateman(c: &mut Criterion) {
     g.finish();
     let mut g = c.benchmark_group("fateman");
     g.sample_size(10);
+    // one thread, as python-flint's default, and n = 20 on every core; the product is
+    // dropped untimed, as the example times it
+    let pool = |threads| {
+        rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .expect("a thread pool")
+    };
+    let (one, all) = (pool(1), pool(0));
     for n in [20, 30] {
         let (p, q) = operands(n);
         g.bench_function(format!("n{n}"), |b| {
-            b.iter(|| mul_with(&p, &q, MulMethod::Auto))
+            b.iter_with_large_drop(|| one.install(|| mul_with(&p, &q, MulMethod::Auto)))
         });
+        if n == 20 {
+            g.bench_function("n20-every-core", |b| {
+                b.iter_with_large_drop(|| all.install(|| mul_with(&p, &q, MulMethod::Auto)))
+            });
+        }
     }
     g.finish();
 }
