@@ -1,8 +1,9 @@
 //! Sparse polynomial products: Fateman's p · (p + 1), p = (1 + x + y + z + t)^n. For n = 10
 //! by the method the shape picks (the dense array) and by the heap; for n = 20 (sums within
 //! an i128) and n = 30 (sums beyond it) by the array on one thread, the sizes and the
-//! thread count `scripts/fateman.py` runs in python-flint, and n = 20 on every core. And the Schwartz–Zippel screen modulo word primes: (1 + x + y + z + t)^8
-//! against its expansion at 64 points, as the audit runs it.
+//! thread count `scripts/fateman.py` runs in python-flint, and n = 20 on every core. And
+//! the Schwartz–Zippel screen modulo word primes: (1 + x + y + z + t)^8 against its
+//! expansion at 64 points, as the audit runs it.
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use orthocheck::algebra::mpoly::{mul_with, Coef, MPoly, MulMethod, Ring};

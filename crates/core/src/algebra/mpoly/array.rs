@@ -255,11 +255,10 @@ struct Rows {
     coefs: Vec<i64>,
 }
 
-/// A row of coefficients in a chunk.
+/// A row of coefficients in a chunk: its first coefficient's chunk index is
+/// `line · last + t`.
 #[derive(Clone, Copy)]
 struct Row {
-    /// Chunk index of the first coefficient.
-    at: usize,
     /// Its line (the index over the inner exponents but the last) and last exponent.
     line: usize,
     t: usize,
@@ -284,12 +283,11 @@ impl Rows {
                 match out.rows[first..].last_mut() {
                     // the same exponents but the last: the row goes on (terms ascend)
                     Some(r) if r.line == i / last => {
-                        let gap = i - r.at - r.len;
+                        let gap = i % last - r.t - r.len;
                         out.coefs.extend(std::iter::repeat_n(0, gap));
                         r.len += gap + 1;
                     }
                     _ => out.rows.push(Row {
-                        at: i,
                         line: i / last,
                         t: i % last,
                         off: out.coefs.len(),
@@ -356,16 +354,17 @@ struct Drained<S> {
 }
 
 impl<S: Slot> Drained<S> {
-    /// Move the non-zero slots of a chunk (outer exponents in `s.e[..split]`) out, zeroing
-    /// it: line by line, descending, each line only over its span of touched slots.
-    fn drain(&mut self, s: &mut Scratch<S>, split: usize, inner: &[usize]) {
-        let n = s.e.len();
-        let last = inner.last().copied().unwrap_or(1);
-        let lines = &inner[..inner.len().saturating_sub(1)];
+    /// Move the non-zero slots of a chunk of `ops` (outer exponents in `s.e[..split]`)
+    /// out, zeroing it: line by line, descending, each line only over its span of touched
+    /// slots.
+    fn drain(&mut self, s: &mut Scratch<S>, ops: &Operands) {
+        let (n, split, last) = (s.e.len(), ops.outer.len(), ops.last);
+        let lines = &ops.inner[..ops.inner.len().saturating_sub(1)];
         let line_strides = strides(lines);
         // a slot's exponents are its line's plus t in the last variable: packing is linear
         let mut unit = vec![0u64; self.pack.words];
-        if n > split {
+        let has_last = n > split;
+        if has_last {
             let mut e1 = vec![0u32; n];
             e1[n - 1] = 1;
             self.pack.pack_into(&e1, &mut unit);
@@ -382,7 +381,7 @@ impl<S: Slot> Drained<S> {
                 lines,
                 &mut s.e[split..split + lines.len()],
             );
-            if n > split {
+            if has_last {
                 s.e[n - 1] = 0;
             }
             self.pack.pack_into(&s.e, &mut base);
@@ -457,6 +456,8 @@ struct Operands<'p> {
     /// Strides of the outer index.
     outer_strides: Vec<usize>,
     inner: &'p [usize],
+    /// The last variable's dimension (1 with no inner variable): a line's slots.
+    last: usize,
     ga: Groups,
     gb: Groups,
     ra: Rows,
@@ -488,6 +489,7 @@ impl<'p> Operands<'p> {
             outer,
             outer_strides,
             inner,
+            last,
             ga,
             gb,
             ra,
@@ -515,25 +517,24 @@ impl<'p> Operands<'p> {
             if self.dense {
                 for x in self.ra.group(*pa) {
                     for y in self.rb.group(o - pa) {
-                        convolve(
-                            &mut s.chunk,
-                            x.at + y.at,
-                            self.ra.coefs(x),
-                            self.rb.coefs(y),
-                        );
-                        let span = &mut s.spans[x.line + y.line];
-                        span.0 = span.0.min(x.t + y.t);
-                        span.1 = span.1.max(x.t + y.t + x.len + y.len - 1);
+                        let (line, t) = (x.line + y.line, x.t + y.t);
+                        let at = line * self.last + t;
+                        convolve(&mut s.chunk, at, self.ra.coefs(x), self.rb.coefs(y));
+                        let span = &mut s.spans[line];
+                        span.0 = span.0.min(t);
+                        span.1 = span.1.max(t + x.len + y.len - 1);
                     }
                 }
             } else {
                 accumulate(&mut s.chunk, self.ga.terms(*pa), tb);
-                let last = self.inner.last().copied().unwrap_or(1);
-                s.spans.iter_mut().for_each(|span| *span = (0, last));
             }
         }
+        if touched && !self.dense {
+            // products added one by one leave no spans: every line is read whole
+            s.spans.iter_mut().for_each(|span| *span = (0, self.last));
+        }
         if touched {
-            out.drain(s, split, self.inner);
+            out.drain(s, self);
         }
     }
 }
@@ -552,7 +553,7 @@ fn product_in<S: Slot + Send>(
     use rayon::prelude::*;
     let ops = Operands::new(a, b, dims, split);
     let inner = ops.inner.iter().product::<usize>();
-    let lines = inner / ops.inner.last().copied().unwrap_or(1);
+    let lines = inner / ops.last;
     let start = || {
         let out = Drained {
             pack,
