@@ -342,8 +342,8 @@ fn convolve<S: Slot>(chunk: &mut [S], at: usize, a: &[i64], b: &[i64]) {
     }
 }
 
-/// Terms of a row that sweep the other row together. Eight is the fastest of 2, 4, 6, 8
-/// and 12 on Fateman's product: more are not kept in registers.
+/// Terms of a row that sweep the other row together: eight was the fastest of 2, 4, 6, 8
+/// and 12 on Fateman's product.
 const WINDOW: usize = 8;
 
 /// `out[i + j] += x[i] · b[j]` for `N` terms `x` and a row `b` at least `N` long. The `N`
@@ -357,8 +357,8 @@ fn sweep<S: Slot, const N: usize>(out: &mut [S], x: &[i64], b: &[i64]) {
         .zip(x.iter().rev())
         .for_each(|(r, &x)| *r = x);
     let (m, out) = (b.len(), &mut out[..b.len() + N - 1]);
-    // slot j < N - 1 meets b[..=j] with x[..=j]; slot m - 1 + j meets b[m - N + j..] with
-    // x[j..] (both in reverse)
+    // the ends, where fewer than N products meet: slot j meets b[..=j] with x[..=j], and
+    // slot m + j meets b[m - N + 1 + j..] with x[j + 1..] (x in reverse), for j < N - 1
     for j in 0..N - 1 {
         out[j].add_dot(&rev[N - 1 - j..], &b[..=j]);
         out[m + j].add_dot(&rev[..N - 1 - j], &b[m - N + 1 + j..]);
