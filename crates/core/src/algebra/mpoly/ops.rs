@@ -1,5 +1,6 @@
 //! Repacking, merge-based addition, scalar operations, content, powers, splitting.
 
+use std::borrow::Cow;
 use std::cmp::Ordering;
 use std::ops::{Add, Mul, Neg, Sub};
 
@@ -69,12 +70,21 @@ impl MPoly {
         out
     }
 
-    /// Both repacked to one packing that holds total degree `deg` and both operands.
-    pub(crate) fn common_packing(a: &MPoly, b: &MPoly, deg: u64) -> (MPoly, MPoly) {
+    /// Both in one packing that holds total degree `deg` and both operands: borrowed where
+    /// one is packed so already (a copy of its terms would cost as much as the operation).
+    pub(crate) fn common_packing<'a>(
+        a: &'a MPoly,
+        b: &'a MPoly,
+        deg: u64,
+    ) -> (Cow<'a, MPoly>, Cow<'a, MPoly>) {
         let want = Packing::for_degree(a.nvars(), deg.max(a.degree()).max(b.degree()));
         let bits = want.bits.max(a.pack.bits).max(b.pack.bits);
         let pack = Packing::with_bits(a.nvars(), bits);
-        (a.repack(pack), b.repack(pack))
+        let fit = |p: &'a MPoly| match p.pack == pack {
+            true => Cow::Borrowed(p),
+            false => Cow::Owned(p.repack(pack)),
+        };
+        (fit(a), fit(b))
     }
 
     /// `self + sign · other` by merging the two sorted term arrays.
