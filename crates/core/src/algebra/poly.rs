@@ -267,6 +267,60 @@ impl Poly {
         Poly::from_parts(ring, BigRational::new(g, l), sum)
     }
 
+    /// Σₖ Πⱼ `products[k][j]` in one ring, the union of the factors' variables: each factor
+    /// is lifted into it once, and the products and their sum are taken on the integer parts
+    /// with no realignment, over one common denominator of the products' contents, with one
+    /// content for the sum. Term by term, pairwise sums of products would each align their
+    /// operands' variables, bring their contents to a common denominator and take a content.
+    pub fn sum_of_products(products: &[Vec<&Poly>]) -> Poly {
+        let nonzero = || products.iter().filter(|p| p.iter().all(|f| !f.is_zero()));
+        let names: Vec<Arc<str>> = nonzero()
+            .flatten()
+            .flat_map(|f| f.ring.names().iter().cloned())
+            .collect();
+        let ring = Ring::new(&names);
+        let degree = |p: &Vec<&Poly>| p.iter().map(|f| f.prim.degree()).sum::<u64>();
+        let pack = super::mpoly::Packing::for_degree(
+            ring.nvars(),
+            nonzero().map(degree).max().unwrap_or(0),
+        );
+        // each factor lifted once: the same power is a factor of many products
+        let mut lifted: Vec<(&Poly, MPoly)> = Vec::new();
+        let mut parts: Vec<(BigRational, MPoly)> = Vec::new();
+        for p in nonzero() {
+            let mut prim = MPoly::constant(ring.nvars(), Coef::Small(1));
+            for &f in p {
+                let at = match lifted.iter().position(|(g, _)| std::ptr::eq(*g, f)) {
+                    Some(at) => at,
+                    None => {
+                        let to: Vec<usize> = f
+                            .ring
+                            .names()
+                            .iter()
+                            .filter_map(|n| ring.index(n))
+                            .collect();
+                        lifted.push((f, f.prim.remap(&to, pack)));
+                        lifted.len() - 1
+                    }
+                };
+                prim = &prim * &lifted[at].1;
+            }
+            let content = p.iter().fold(BigRational::one(), |c, f| c * &f.content);
+            parts.push((content, prim));
+        }
+        let l = parts
+            .iter()
+            .fold(BigInt::one(), |l, (c, _)| l.lcm(c.denom()));
+        let ints = parts
+            .into_iter()
+            .map(|(c, p)| p.scale(&Coef::from_big(c.numer() * (&l / c.denom()))))
+            .collect();
+        match sum_pairwise(ints, |a, b| a + b) {
+            Some(sum) => Poly::from_parts(Arc::new(ring), BigRational::new(BigInt::one(), l), sum),
+            None => Poly::zero(),
+        }
+    }
+
     /// Multiply by a rational constant.
     pub fn scale(&self, c: &BigRational) -> Poly {
         if c.is_zero() || self.is_zero() {
@@ -549,4 +603,21 @@ impl fmt::Display for Poly {
         }
         Ok(())
     }
+}
+
+/// The sum of `parts`, added in a balanced tree (a running sum would re-merge the growing
+/// total once per part); `None` for no part.
+pub(crate) fn sum_pairwise<T>(mut parts: Vec<T>, add: impl Fn(&T, &T) -> T) -> Option<T> {
+    while parts.len() > 1 {
+        let mut next = Vec::with_capacity(parts.len().div_ceil(2));
+        let mut it = parts.into_iter();
+        while let Some(a) = it.next() {
+            next.push(match it.next() {
+                Some(b) => add(&a, &b),
+                None => a,
+            });
+        }
+        parts = next;
+    }
+    parts.pop()
 }

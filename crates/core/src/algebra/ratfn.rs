@@ -394,34 +394,37 @@ impl RatFn {
 
 /// `p` with each name of `used` (value Nⱼ / D) replaced, times D^d: (Σ cₘ·Nᵐ·D^(d−|m|), d),
 /// d the total degree of `p` in those names. The terms are grouped by their monomial m in
-/// the names first (one product per group, not per term), powers are cached, and the
-/// products are summed pairwise (a running sum re-merges the growing total once per term).
+/// the names first (one product per group, not per term), powers are computed once, and the
+/// products are summed in one ring ([`Poly::sum_of_products`]).
 fn homogenise_all(p: &Poly, used: &BTreeMap<&str, &RatFn>, d: &Poly) -> (Poly, u32) {
     let names: Vec<&str> = used.keys().copied().collect();
     let groups = split_in(p, &names);
-    let top = groups
-        .iter()
-        .map(|(m, _)| m.iter().sum::<u32>())
-        .max()
-        .unwrap_or(0);
+    let degree = |m: &[u32]| m.iter().sum::<u32>();
+    let top = groups.iter().map(|(m, _)| degree(m)).max().unwrap_or(0);
     let mut powers: BTreeMap<(usize, u32), Poly> = BTreeMap::new();
     let mut dpow: BTreeMap<u32, Poly> = BTreeMap::new();
-    let mut parts = Vec::with_capacity(groups.len());
-    for (m, c) in groups {
-        let mut t = c;
+    for (m, _) in &groups {
         for (i, &e) in m.iter().enumerate().filter(|(_, e)| **e > 0) {
-            let v = powers
+            powers
                 .entry((i, e))
                 .or_insert_with(|| used[names[i]].num.pow(e));
-            t = &t * v;
         }
-        let k = m.iter().sum::<u32>();
-        if top > k {
-            t = &t * dpow.entry(top - k).or_insert_with(|| d.pow(top - k));
+        if top > degree(m) {
+            dpow.entry(top - degree(m))
+                .or_insert_with(|| d.pow(top - degree(m)));
         }
-        parts.push(t);
     }
-    (sum_pairwise(parts), top)
+    let products: Vec<Vec<&Poly>> = groups
+        .iter()
+        .map(|(m, c)| {
+            let n = m.iter().enumerate().filter(|(_, e)| **e > 0);
+            std::iter::once(c)
+                .chain(n.map(|(i, &e)| &powers[&(i, e)]))
+                .chain(dpow.get(&(top - degree(m))))
+                .collect()
+        })
+        .collect();
+    (Poly::sum_of_products(&products), top)
 }
 
 /// `p = Σₘ cₘ · namesᵐ`: each monomial m in `names` (exponents in their order) with its
@@ -441,22 +444,6 @@ fn split_in(p: &Poly, names: &[&str]) -> Vec<(Vec<u32>, Poly)> {
         }
     }
     out
-}
-
-/// The sum of `parts`, added in a balanced tree.
-fn sum_pairwise(mut parts: Vec<Poly>) -> Poly {
-    while parts.len() > 1 {
-        let mut next = Vec::with_capacity(parts.len().div_ceil(2));
-        let mut it = parts.into_iter();
-        while let Some(a) = it.next() {
-            next.push(match it.next() {
-                Some(b) => &a + &b,
-                None => a,
-            });
-        }
-        parts = next;
-    }
-    parts.pop().unwrap_or_default()
 }
 
 /// A row of rational functions over their common denominator: polynomials, the same
