@@ -293,13 +293,7 @@ impl Poly {
                 let at = match lifted.iter().position(|(g, _)| std::ptr::eq(*g, f)) {
                     Some(at) => at,
                     None => {
-                        let to: Vec<usize> = f
-                            .ring
-                            .names()
-                            .iter()
-                            .filter_map(|n| ring.index(n))
-                            .collect();
-                        lifted.push((f, f.prim.remap(&to, pack)));
+                        lifted.push((f, f.prim.remap(&ring.place(&f.ring), pack)));
                         lifted.len() - 1
                     }
                 };

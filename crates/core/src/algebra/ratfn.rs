@@ -418,6 +418,7 @@ fn homogenise_all(p: &Poly, used: &BTreeMap<&str, &RatFn>, d: &Poly) -> (Poly, u
         .iter()
         .map(|(m, c)| {
             let n = m.iter().enumerate().filter(|(_, e)| **e > 0);
+            // no power D⁰ is kept: a group of the top degree has no factor of D
             std::iter::once(c)
                 .chain(n.map(|(i, &e)| &powers[&(i, e)]))
                 .chain(dpow.get(&(top - degree(m))))

@@ -56,9 +56,13 @@ impl Ring {
         names.sort();
         names.dedup();
         let u = Ring { names };
-        let place = |r: &Ring| r.names.iter().filter_map(|n| u.index(n)).collect();
-        let (a, b) = (place(self), place(other));
+        let (a, b) = (u.place(self), u.place(other));
         (u, a, b)
+    }
+
+    /// Where the variables of `sub` (a ring of some of these variables) go in this ring.
+    pub fn place(&self, sub: &Ring) -> Vec<usize> {
+        sub.names.iter().filter_map(|n| self.index(n)).collect()
     }
 
     /// The ring keeping only the variables marked in `keep`.
