@@ -16,7 +16,7 @@ fn report(c: &mut Criterion) {
     g.bench_function("full_report_with_html", |b| {
         b.iter(|| {
             let r = Report::from_run(
-                orthocheck::claims::run_paper(&all, &|_, _| {}).expect("the report runs"),
+                orthocheck::claims::run_cases(&all, &[], &|_, _| {}).expect("the report runs"),
                 Default::default(),
             );
             html::render(&r).len()
@@ -31,7 +31,7 @@ fn report(c: &mut Criterion) {
         assert_eq!(one.len(), 1, "{id} is among the paper cases");
         g.bench_function(name, |b| {
             b.iter(|| {
-                orthocheck::claims::run_paper(&one, &|_, _| {})
+                orthocheck::claims::run_cases(&one, &[], &|_, _| {})
                     .expect("the case runs")
                     .results
                     .len()

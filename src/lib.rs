@@ -7,6 +7,7 @@ pub mod check;
 pub mod claims;
 pub mod files;
 pub mod input;
+pub mod mathtext;
 pub mod provenance;
 pub mod report;
 pub mod seeds;

@@ -26,7 +26,7 @@ struct Cli {
 /// The exit code of a failed command.
 fn exit_code(e: &Error) -> u8 {
     match e {
-        Error::Numerical(_) | Error::Write { .. } => 1,
+        Error::Numerical(_) | Error::Write { .. } | Error::Unverified(_) => 1,
         _ => 2,
     }
 }

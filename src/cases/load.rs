@@ -3,33 +3,19 @@
 use std::path::{Path, PathBuf};
 
 use super::plain_numbers::Tagged;
-use super::{validate::validate, Case, CaseOrigin, LatexSource, Schema};
+use super::{validate::validate, Case, CaseOrigin, Schema};
 use crate::error::{Error, InputLocation, Result};
 
-/// Read and validate one case file (its quotes unverified: no LaTeX source).
+/// Read and validate one case file.
 pub fn load_case<C: Schema>(path: &Path) -> Result<Case<C>> {
-    load_case_with(path, None)
-}
-
-/// Read and validate one case file; with `latex`, its errata's quotes are verified at their
-/// lines of the source.
-pub fn load_case_with<C: Schema>(path: &Path, latex: Option<&LatexSource>) -> Result<Case<C>> {
     let text = read_case_text(path)?;
-    case_from_text(&text, &Tagged::new(&text), path, latex)
+    case_from_text(&text, &Tagged::new(&text), path)
 }
 
 /// Parse, validate and complete one case read from `path`, `tagged` its text tagged.
-fn case_from_text<C: Schema>(
-    text: &str,
-    tagged: &Tagged,
-    path: &Path,
-    latex: Option<&LatexSource>,
-) -> Result<Case<C>> {
+fn case_from_text<C: Schema>(text: &str, tagged: &Tagged, path: &Path) -> Result<Case<C>> {
     let mut case: Case<C> = parse_tagged(tagged, path, &case_budget())?;
     validate(&case, text, path)?;
-    if let Some(latex) = latex {
-        case.check.attach_source(text, path, latex)?;
-    }
     case.file = Some(path.to_path_buf());
     Ok(case)
 }
@@ -287,9 +273,9 @@ pub fn case_files(dir: &Path) -> Result<Vec<PathBuf>> {
     Ok(files)
 }
 
-/// Load every case of a folder (quotes unverified: no LaTeX source).
+/// Load every case of a folder.
 pub fn load_all<C: Schema>(dir: &Path) -> Result<Vec<Case<C>>> {
-    load_cases(&CaseOrigin::Folder(dir.to_path_buf()), None)
+    load_cases(&CaseOrigin::Folder(dir.to_path_buf()))
 }
 
 /// The `claim:` names of one case file.
@@ -359,21 +345,14 @@ fn kind_of(text: &str) -> Option<String> {
 }
 
 /// Load every case: each file valid on its own, no id twice, and every claim a restatement
-/// restates checked by some case. With `latex`, the errata's quotes are verified against it.
-pub fn load_cases<C: Schema>(
-    origin: &CaseOrigin,
-    latex: Option<&LatexSource>,
-) -> Result<Vec<Case<C>>> {
-    load_cases_of(origin, latex, Kinds::All)
+/// restates checked by some case.
+pub fn load_cases<C: Schema>(origin: &CaseOrigin) -> Result<Vec<Case<C>>> {
+    load_cases_of(origin, Kinds::All)
 }
 
 /// [`load_cases`] of the files of some kinds: the checks across files (ids, restated claims,
 /// the inventory) hold among those.
-pub fn load_cases_of<C: Schema>(
-    origin: &CaseOrigin,
-    latex: Option<&LatexSource>,
-    kinds: Kinds,
-) -> Result<Vec<Case<C>>> {
+pub fn load_cases_of<C: Schema>(origin: &CaseOrigin, kinds: Kinds) -> Result<Vec<Case<C>>> {
     use rayon::prelude::*;
     let mut read = origin.case_texts()?;
     read.retain(|(_, text)| kinds.reads(text));
@@ -383,7 +362,7 @@ pub fn load_cases_of<C: Schema>(
         .par_iter()
         .map(|(p, text)| {
             let tagged = Tagged::new(text);
-            (case_from_text(text, &tagged, p, latex), tagged.claims)
+            (case_from_text(text, &tagged, p), tagged.claims)
         })
         .collect();
     let mut cases = Vec::new();

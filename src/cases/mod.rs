@@ -7,6 +7,7 @@ mod formula_size;
 mod inventory;
 mod latex;
 mod load;
+mod normalise;
 mod origin;
 mod paper;
 mod plain_numbers;
@@ -19,20 +20,20 @@ mod verify;
 pub use formula_size::Size as FormulaSize;
 pub use inventory::{inventory_ids, refers_to_inventory, INVENTORY_FILES};
 pub use latex::{sha256_hex, source_path, LatexSource, SourceRecord, PAPER_ENV};
-pub(crate) use load::invalid;
 pub(crate) use load::line_of;
 pub use load::{
-    case_files, load_all, load_case, load_case_with, load_cases, load_cases_of, parse_case,
-    parse_yaml, parse_yaml_limited, Kinds,
+    case_files, load_all, load_case, load_cases, load_cases_of, parse_case, parse_yaml,
+    parse_yaml_limited, Kinds,
 };
 pub use origin::CaseOrigin;
 pub use paper::{load_paper, paper_of, parse_paper, Paper, SectionTitle, PAPER_FILE};
 pub use printed::{contradicting_square, Printed};
 pub use quote::{parse_lines, quote_at, quote_within, SourceText};
-pub use source::{ClaimRef, Source};
+pub use source::{ClaimPlace, ClaimRef, Source};
 pub use validate::Validator;
 pub use verify::{
-    load_inputs, load_inputs_of, unverified_sentence, verify, PaperInputs, Verification,
+    load_inputs, load_inputs_of, unverified_sentence, verify, Disagreement, PaperInputs,
+    SourceCheck, SourceFact, Verification,
 };
 
 use std::path::PathBuf;
@@ -63,13 +64,9 @@ pub trait Schema: serde::de::DeserializeOwned + Send {
     /// Counts, limits, formulas that parse; `v` names fields from the case's top level.
     fn validate(&self, v: &Validator) -> crate::error::Result<()>;
 
-    /// Verify the case against the LaTeX source as it is read.
-    fn attach_source(
-        &mut self,
-        text: &str,
-        path: &std::path::Path,
-        latex: &LatexSource,
-    ) -> crate::error::Result<()>;
+    /// The facts of the source the case records beyond its quotes (every quote is verified
+    /// anyway), checked whenever the source is given.
+    fn source_checks(&self) -> Vec<SourceCheck>;
 
     /// Claim ids the case restates, each with its field: every one must be a claim some case
     /// of the folder refers to.

@@ -59,6 +59,62 @@ fn collapse(s: &str) -> String {
     s.split_whitespace().collect::<Vec<_>>().join(" ")
 }
 
+/// How a quote reads for the comparison: its text, a function of it.
+pub type Reading<'a> = &'a dyn Fn(&str) -> String;
+
+/// The pieces of a quote abridged with "..." or "…", each read by `read` (empty ones dropped).
+fn pieces(quote: &str, read: Reading<'_>) -> Vec<String> {
+    quote
+        .split(" ... ")
+        .flat_map(|p| p.split('…'))
+        .map(read)
+        .filter(|p| !p.is_empty())
+        .collect()
+}
+
+/// Whether the pieces stand in order in `lines[first..=last]`, both read alike.
+fn holds(
+    text: &SourceText,
+    first: usize,
+    last: usize,
+    pieces: &[String],
+    read: Reading<'_>,
+) -> bool {
+    if pieces.is_empty() || first == 0 || last > text.lines.len() || first > last {
+        return false;
+    }
+    let hay = read(&text.lines[first - 1..last].join("\n"));
+    let mut from = 0;
+    pieces.iter().all(|p| match hay[from..].find(p.as_str()) {
+        Some(at) => {
+            from += at + p.len();
+            true
+        }
+        None => false,
+    })
+}
+
+/// Whether `quote` stands in `lines[first..=last]` and the range is the tightest that holds
+/// it: neither the range less its first line nor less its last holds it. A quote abridged
+/// with "..." stands there when its pieces do, in order.
+pub fn quote_tight(
+    text: &SourceText,
+    first: usize,
+    last: usize,
+    quote: &str,
+    read: Reading<'_>,
+) -> bool {
+    let p = pieces(quote, read);
+    holds(text, first, last, &p, read)
+        && (first == last
+            || (!holds(text, first + 1, last, &p, read) && !holds(text, first, last - 1, &p, read)))
+}
+
+/// The verbatim reading: white space collapsed.
+pub fn verbatim(s: &str) -> String {
+    collapse(s)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -93,5 +149,16 @@ mod tests {
         assert!(!quote_at(&t, 1, 2, "two three fours"));
         assert!(!quote_at(&t, 1, 2, "  "));
         assert!(!quote_at(&t, 3, 9, "five"));
+    }
+
+    #[test]
+    fn a_tight_range_is_found_and_a_shifted_or_wider_one_is_not() {
+        let t = text();
+        assert!(quote_tight(&t, 1, 2, "two three four", &verbatim));
+        assert!(quote_tight(&t, 1, 3, "one ... five", &verbatim));
+        // one line too many at either end, shifted by one, pieces out of order
+        assert!(!quote_tight(&t, 1, 3, "two three four", &verbatim));
+        assert!(!quote_tight(&t, 2, 3, "two three four", &verbatim));
+        assert!(!quote_tight(&t, 1, 3, "five ... one", &verbatim));
     }
 }

@@ -17,6 +17,16 @@ pub struct Source {
     pub quote: String,
 }
 
+/// Another place of the source a claim cites: its lines and its exact words.
+#[derive(Clone, Debug, Deserialize, PartialEq)]
+#[serde(deny_unknown_fields)]
+pub struct ClaimPlace {
+    /// Line range, the tightest that holds the quote.
+    pub lines: String,
+    /// The source's words there.
+    pub quote: String,
+}
+
 /// One claim of the inventory (paper_cases/claims.md) as a case refers to it.
 #[derive(Clone, Debug, Deserialize, PartialEq)]
 #[serde(deny_unknown_fields)]

@@ -1,14 +1,65 @@
 //! The transcription against the paper's LaTeX source: the section titles and macro
-//! definitions of `paper.yml` at their lines, and every quote of every case at its lines.
-//! The errata's quotes are verified (and refused when missing) as their case is read; this
-//! counts every other quote too, verbatim or a transcription into plain notation.
+//! definitions of `paper.yml` at their lines, every quote of every case at the tightest range
+//! of lines that holds it (verbatim, or a formula in plain notation by a normalised
+//! comparison), and the other facts of the source the cases record. Verdicts never read the
+//! source: what disagrees is listed, and the claims concerned are made `inconclusive`.
 
 use std::path::Path;
 
 use super::load::invalid;
-use super::quote::{parse_lines, quote_within};
-use super::{parse_yaml, CaseOrigin, Kinds, LatexSource, Paper, PAPER_FILE};
-use crate::error::{Error, InputLocation, Result};
+use super::normalise::Canonical;
+use super::quote::{parse_lines, quote_tight, quote_within, verbatim, SourceText};
+use super::{parse_yaml, CaseOrigin, Kinds, LatexSource, Paper, Schema, PAPER_FILE};
+use crate::error::{Error, Result};
+
+/// A fact of the source that a case records beyond its quotes.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct SourceCheck {
+    /// The claim that rests on it.
+    pub claim: String,
+    /// The case field that records it.
+    pub field: String,
+    /// The fact.
+    pub fact: SourceFact,
+}
+
+/// What a case records of the source.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum SourceFact {
+    /// `needle` (white space collapsed) stands within `lines`.
+    Within {
+        /// The line range.
+        lines: String,
+        /// The text.
+        needle: String,
+    },
+    /// `needle` stands nowhere in the source.
+    Absent {
+        /// The text.
+        needle: String,
+    },
+}
+
+/// A place where the transcription and the source disagree.
+#[derive(Clone, Debug, PartialEq, Eq, serde::Serialize)]
+pub struct Disagreement {
+    /// The case file.
+    pub file: String,
+    /// The case's id.
+    pub case: String,
+    /// The claim concerned (none: the case's own place in the paper).
+    pub claim: Option<String>,
+    /// The field.
+    pub field: String,
+    /// What disagrees.
+    pub message: String,
+}
+
+impl std::fmt::Display for Disagreement {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "{}: field `{}`: {}", self.file, self.field, self.message)
+    }
+}
 
 /// What the source confirmed.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -23,41 +74,56 @@ pub struct Verification {
     pub labels: usize,
     /// Quotes of the cases (every `lines` with a `quote`).
     pub quotes: usize,
-    /// Of those, the ones standing verbatim (white space aside) at their lines; the others
-    /// transcribe formulas into plain notation or abridge with "…".
+    /// Of those, the ones standing verbatim (white space aside) at the tightest range.
     pub verbatim: usize,
+    /// The ones in plain notation found by the normalised comparison at the tightest range.
+    pub normalised: usize,
+    /// The other facts of the source the cases record (pictures' coordinates, absences).
+    pub facts: usize,
+    /// Where the transcription and the source disagree.
+    pub disagreements: Vec<Disagreement>,
 }
 
 impl Verification {
     /// One sentence for the report's provenance.
     pub fn sentence(&self) -> String {
         format!(
-            "The transcription was verified against the paper's LaTeX source (SHA-256 {}): \
+            "This run verified the transcription against the paper's LaTeX source (SHA-256 {}): \
              {} section titles at their lines, {} macro definitions verbatim, {} label names, \
-             and {} of the cases' {} quotes verbatim at their lines (the other {} transcribe \
-             formulas into plain notation; every line range lies within the source).",
+             {} quotes each at the tightest range of lines that holds it ({} verbatim, {} \
+             formulas in plain notation by a normalised comparison), {} other recorded facts \
+             of the source, and {} disagreements.",
             &self.sha256[..12],
             self.sections,
             self.macros,
             self.labels,
+            self.verbatim + self.normalised,
             self.verbatim,
-            self.quotes,
-            self.quotes - self.verbatim
+            self.normalised,
+            self.facts,
+            self.disagreements.len()
         )
     }
 }
 
 /// The provenance sentence of a run without the source.
 pub fn unverified_sentence() -> String {
-    "The transcription was not verified against a source: the paper's LaTeX source was not \
-     given (--paper FILE, or ORTHOCHECK_PAPER), so the findings about the paper's wording are \
-     inconclusive; every other claim is decided from the transcription."
+    "This run did not verify the transcription: the paper's LaTeX source was not given \
+     (--paper FILE, or ORTHOCHECK_PAPER). The verdicts do not depend on it: they come from the \
+     transcription in paper_cases/, which is verified, quote by quote at the tightest lines, \
+     whenever the source of the recorded SHA-256 is given (as the test suite does)."
         .into()
 }
 
-/// Verify `paper`'s titles and macros and count the cases' quotes at their lines; a title or
-/// macro that is not in the source, or a quote whose lines lie outside it, is an error.
-pub fn verify(origin: &CaseOrigin, paper: &Paper, latex: &LatexSource) -> Result<Verification> {
+/// Verify `paper`'s titles and macros, every quote of the cases and the facts `cases` record;
+/// a title or macro that is not in the source is an error, a quote or fact that disagrees is
+/// listed.
+pub fn verify<C: Schema>(
+    origin: &CaseOrigin,
+    paper: &Paper,
+    latex: &LatexSource,
+    cases: &[super::Case<C>],
+) -> Result<Verification> {
     let (paper_path, paper_text) = origin.file(PAPER_FILE)?;
     let lines = &latex.text.lines;
     for (i, s) in paper.sections.iter().enumerate() {
@@ -104,25 +170,110 @@ pub fn verify(origin: &CaseOrigin, paper: &Paper, latex: &LatexSource) -> Result
             format!("`{l}` is not a \\label of {}", latex.path.display()),
         ));
     }
-    let (mut quotes, mut verbatim) = (0, 0);
-    for (path, text) in origin.case_texts()? {
-        let tree: serde_json::Value = parse_yaml(&text, &path)?;
-        for (lines_text, quote) in quoted(&tree) {
-            quotes += 1;
-            let Some((a, b)) = span(&lines_text).filter(|(_, b)| *b <= lines.len()) else {
-                return Err(out_of_source(&path, &lines_text, latex));
-            };
-            verbatim += usize::from(quote_within(&latex.text, a, b, &quote));
-        }
-    }
-    Ok(Verification {
+    let mut v = Verification {
         sha256: latex.sha256.clone(),
         sections: paper.sections.len(),
         macros: defs.len(),
         labels: paper.labels.len(),
-        quotes,
-        verbatim,
-    })
+        quotes: 0,
+        verbatim: 0,
+        normalised: 0,
+        facts: 0,
+        disagreements: Vec::new(),
+    };
+    let canonical = Canonical::of_source(&latex.text);
+    for (path, text) in origin.case_texts()? {
+        let tree: serde_json::Value = parse_yaml(&text, &path)?;
+        let case = tree["id"].as_str().unwrap_or_default().to_string();
+        let file = file_name(&path);
+        for q in quoted(&tree) {
+            v.quotes += 1;
+            match locate(&latex.text, &canonical, &q.lines, &q.quote) {
+                Found::Verbatim => v.verbatim += 1,
+                Found::Normalised => v.normalised += 1,
+                Found::Not(message) => v.disagreements.push(Disagreement {
+                    file: file.clone(),
+                    case: case.clone(),
+                    claim: q.claim,
+                    field: format!("{}.quote", q.field),
+                    message,
+                }),
+            }
+        }
+        if let Some(c) = cases.iter().find(|c| c.id == case) {
+            for check in c.check.source_checks() {
+                v.facts += 1;
+                if let Some(message) = fact_fails(&latex.text, &check.fact) {
+                    v.disagreements.push(Disagreement {
+                        file: file.clone(),
+                        case: case.clone(),
+                        claim: Some(check.claim),
+                        field: check.field,
+                        message,
+                    });
+                }
+            }
+        }
+    }
+    Ok(v)
+}
+
+fn file_name(path: &Path) -> String {
+    path.file_name().map_or_else(
+        || path.display().to_string(),
+        |n| format!("paper_cases/{}", n.to_string_lossy()),
+    )
+}
+
+/// How a quote was found at its lines.
+enum Found {
+    Verbatim,
+    Normalised,
+    Not(String),
+}
+
+/// The quote at the tightest range `lines` names: verbatim, else read in the canonical
+/// notation (a formula transcribed into plain notation); where it is not, where it stands.
+fn locate(text: &SourceText, canonical: &Canonical, lines: &str, quote: &str) -> Found {
+    let Some((a, b)) = span(lines).filter(|(_, b)| *b <= text.lines.len()) else {
+        return Found::Not(format!("\"{lines}\" are not lines of the source"));
+    };
+    if quote_tight(text, a, b, quote, &verbatim) {
+        return Found::Verbatim;
+    }
+    let ranges = canonical.ranges_of(quote);
+    if ranges.contains(&(a, b)) {
+        return Found::Normalised;
+    }
+    let elsewhere = match ranges.first() {
+        Some((x, y)) => format!(" (it stands at {})", range_text(*x, *y)),
+        None => " (nor anywhere else in the source)".to_string(),
+    };
+    Found::Not(format!(
+        "the quote is not at the tightest lines {lines}{elsewhere}"
+    ))
+}
+
+fn range_text(a: usize, b: usize) -> String {
+    if a == b {
+        a.to_string()
+    } else {
+        format!("{a}-{b}")
+    }
+}
+
+/// Why a recorded fact does not hold in the source, if it does not.
+fn fact_fails(text: &SourceText, fact: &SourceFact) -> Option<String> {
+    let n = text.lines.len();
+    match fact {
+        SourceFact::Within { lines, needle } => {
+            let (a, b) = parse_lines(lines)?;
+            (!quote_within(text, a, b, needle))
+                .then(|| format!("`{needle}` is not within lines {lines}"))
+        }
+        SourceFact::Absent { needle } => quote_within(text, 1, n, needle)
+            .then(|| format!("`{needle}` stands in the source, recorded as absent")),
+    }
 }
 
 /// The first and last line of "197-326, 386-391" (one range or several, comma-separated).
@@ -136,40 +287,61 @@ fn span(lines: &str) -> Option<(usize, usize)> {
     ))
 }
 
-fn out_of_source(path: &Path, lines: &str, latex: &LatexSource) -> Error {
-    Error::Input {
-        location: InputLocation::file(path),
-        message: format!(
-            "the lines \"{lines}\" of a quote are not lines of {} ({} lines)",
-            latex.path.display(),
-            latex
-                .text
-                .lines
-                .iter()
-                .rposition(|l| !l.is_empty())
-                .map_or(0, |n| n + 1)
-        ),
-    }
+/// One quote of a case: its lines, its words, the claim it belongs to and its field.
+struct Quoted {
+    lines: String,
+    quote: String,
+    claim: Option<String>,
+    field: String,
 }
 
-/// Every `(lines, quote)` pair of a parsed case, in document order.
-fn quoted(v: &serde_json::Value) -> Vec<(String, String)> {
+/// Every quote of a parsed case, in document order.
+fn quoted(v: &serde_json::Value) -> Vec<Quoted> {
     let mut out = Vec::new();
-    walk(v, &mut out);
+    walk(v, None, "", &mut out);
     out
 }
 
-fn walk(v: &serde_json::Value, out: &mut Vec<(String, String)>) {
+/// The claim an object names: its `claim:`, or its `claim.claim:` (a finding).
+fn claim_of(m: &serde_json::Map<String, serde_json::Value>) -> Option<String> {
+    match m.get("claim") {
+        Some(serde_json::Value::String(c)) => Some(c.clone()),
+        Some(serde_json::Value::Object(o)) => {
+            o.get("claim").and_then(|c| c.as_str()).map(str::to_string)
+        }
+        _ => None,
+    }
+}
+
+fn walk(v: &serde_json::Value, claim: Option<&str>, at: &str, out: &mut Vec<Quoted>) {
     match v {
         serde_json::Value::Object(m) => {
+            let named = claim_of(m);
+            let claim = named.as_deref().or(claim);
             if let (Some(l), Some(serde_json::Value::String(q))) = (m.get("lines"), m.get("quote"))
             {
-                let l = l.as_str().map_or_else(|| l.to_string(), str::to_string);
-                out.push((l, q.clone()));
+                let lines = l.as_str().map_or_else(|| l.to_string(), str::to_string);
+                out.push(Quoted {
+                    lines,
+                    quote: q.clone(),
+                    claim: claim.map(str::to_string),
+                    field: at.to_string(),
+                });
             }
-            m.values().for_each(|x| walk(x, out));
+            for (k, x) in m {
+                let here = if at.is_empty() {
+                    k.clone()
+                } else {
+                    format!("{at}.{k}")
+                };
+                walk(x, claim, &here, out);
+            }
         }
-        serde_json::Value::Array(a) => a.iter().for_each(|x| walk(x, out)),
+        serde_json::Value::Array(a) => {
+            for (i, x) in a.iter().enumerate() {
+                walk(x, claim, &format!("{at}[{i}]"), out);
+            }
+        }
         _ => {}
     }
 }
@@ -187,6 +359,13 @@ pub struct PaperInputs<C> {
 }
 
 impl<C> PaperInputs<C> {
+    /// Where the source disagreed with the transcription (none without the source).
+    pub fn disagreements(&self) -> &[Disagreement] {
+        self.verification
+            .as_ref()
+            .map_or(&[], |v| v.disagreements.as_slice())
+    }
+
     /// The provenance sentence: what the source verified, or that none was given.
     pub fn transcription_sentence(&self) -> String {
         self.verification
@@ -213,7 +392,7 @@ pub fn load_inputs_of<C: super::Schema>(
 ) -> Result<PaperInputs<C>> {
     let kinds = if latex.is_some() { Kinds::All } else { kinds };
     // the cases first: a malformed case is the first thing a user hears of
-    let unverified = super::load_cases_of::<C>(origin, None, kinds)?;
+    let cases = super::load_cases_of::<C>(origin, kinds)?;
     let source = match latex {
         None => None,
         Some(p) => {
@@ -227,13 +406,9 @@ pub fn load_inputs_of<C: super::Schema>(
             Some(LatexSource::read(p, record)?)
         }
     };
-    let cases = match &source {
-        Some(s) => super::load_cases(origin, Some(s))?,
-        None => unverified,
-    };
     let paper = super::paper_of(origin)?;
     let verification = match &source {
-        Some(s) => Some(verify(origin, &paper, s)?),
+        Some(s) => Some(verify(origin, &paper, s, &cases)?),
         None => None,
     };
     Ok(PaperInputs {

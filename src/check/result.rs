@@ -358,6 +358,19 @@ impl Quantity {
         }
     }
 
+    /// One entry of the table `table` (named "row: column").
+    pub fn entry(table: &str, row: &str, column: &str, value: impl Into<Value>) -> Quantity {
+        Quantity::with_role(
+            &format!("{row}: {column}"),
+            value,
+            Role::Entry {
+                table: table.into(),
+                row: row.into(),
+                column: column.into(),
+            },
+        )
+    }
+
     /// One cell of a table: `statistic` of `model` (named "model: statistic").
     pub fn cell(model: &str, statistic: &str, value: impl Into<Value>) -> Quantity {
         Quantity::with_role(
@@ -398,6 +411,16 @@ pub enum Role {
     Trials,
     /// A value whose name adds nothing ("paper"): alone in a line, the value is printed alone.
     ValueOnly,
+    /// One entry of a named table whose rows are not models: the readings of a sentence, the
+    /// paper's named quantities at an example. Rows and columns keep their first order.
+    Entry {
+        /// The table's caption.
+        table: String,
+        /// The row.
+        row: String,
+        /// The column.
+        column: String,
+    },
 }
 
 impl Role {
@@ -594,6 +617,19 @@ impl Evidence {
     /// One detail in `role`.
     pub fn with_role(mut self, name: &str, value: impl Into<Value>, role: Role) -> Self {
         self.details.push(Quantity::with_role(name, value, role));
+        self
+    }
+
+    /// One entry of the table `table`.
+    pub fn with_entry(
+        mut self,
+        table: &str,
+        row: &str,
+        column: &str,
+        value: impl Into<Value>,
+    ) -> Self {
+        self.details
+            .push(Quantity::entry(table, row, column, value));
         self
     }
 

@@ -6,12 +6,10 @@
 //! Every kind implements [`ClaimKind`] and is registered once, in the [`kinds!`] list below:
 //! that list is the only place where the kinds are enumerated.
 
-use std::path::Path;
-
 use serde::Deserialize;
 
-use crate::cases::{LatexSource, Schema, Validator};
-use crate::check::{figure::Figure, ClaimResult, ResultBuilder};
+use crate::cases::{Disagreement, Schema, Validator};
+use crate::check::{figure::Figure, ClaimResult, ResultBuilder, Verdict};
 use crate::error::Result;
 use crate::provenance::CaseSeeds;
 
@@ -92,9 +90,10 @@ pub trait ClaimKind {
         Ok(Vec::new())
     }
 
-    /// Attach the paper's LaTeX source as the case is read (the errata verify their quotes).
-    fn attach_source(&mut self, _text: &str, _path: &Path, _latex: &LatexSource) -> Result<()> {
-        Ok(())
+    /// The facts of the source the case records beyond its quotes (the errata's pictures and
+    /// absences), checked by the verification whenever the source is given.
+    fn source_checks(&self) -> Vec<crate::cases::SourceCheck> {
+        Vec::new()
     }
 }
 
@@ -113,10 +112,6 @@ macro_rules! kinds {
         impl Check {
             /// The kind of this check.
             pub fn kind(&self) -> &dyn ClaimKind {
-                match self { $(Check::$variant(c) => c,)* }
-            }
-
-            fn kind_mut(&mut self) -> &mut dyn ClaimKind {
                 match self { $(Check::$variant(c) => c,)* }
             }
 
@@ -188,8 +183,8 @@ impl Schema for Check {
         self.kind().validate(&v)
     }
 
-    fn attach_source(&mut self, text: &str, path: &Path, latex: &LatexSource) -> Result<()> {
-        self.kind_mut().attach_source(text, path, latex)
+    fn source_checks(&self) -> Vec<crate::cases::SourceCheck> {
+        self.kind().source_checks()
     }
 
     fn restated_ids(&self) -> Vec<(String, String)> {
@@ -227,17 +222,19 @@ pub fn run_case_full(
 
 /// Run every case: first all the others, then the restatements, decided from their results.
 pub fn run_all(cases: &[Case]) -> Result<Vec<ClaimResult>> {
-    Ok(run_all_full(cases, &|_, _| {})?.0)
+    Ok(run_all_full(cases, &[], &|_, _| {})?.0)
 }
 
-/// [`run_all`] with the figures; `progress` hears of each case as it finishes (how many
-/// finished before it, its id).
+/// [`run_all`] with the figures; the claims the source disagrees with are `inconclusive`
+/// ([`mark_disagreements`]) before the restatements read them; `progress` hears of each case
+/// as it finishes (how many finished before it, its id).
 ///
 /// The cases are independent (each seeds its own streams), so they run at once on rayon's
 /// pool; their results are kept in the cases' order, so the output does not depend on which
 /// finishes first, and the first failing case in that order is the error reported.
 pub fn run_all_full(
     cases: &[Case],
+    disagreements: &[Disagreement],
     progress: &(dyn Fn(usize, &str) + Sync),
 ) -> Result<(Vec<ClaimResult>, Vec<Figure>)> {
     use rayon::prelude::*;
@@ -264,6 +261,7 @@ pub fn run_all_full(
         out.extend(r);
         figures.extend(f);
     }
+    mark_disagreements(&mut out, disagreements);
     let mut restated = Vec::new();
     for case in cases.iter().filter(|c| c.check.kind().restates()) {
         restated.extend(run_case_full(case, &out)?.0);
@@ -283,10 +281,45 @@ pub struct PaperRun {
     pub seeds: Vec<CaseSeeds>,
 }
 
-/// Run every case of the paper; `progress` hears of each finished case (index, id). The
-/// report renders the run ([`crate::report::Report::from_run`]).
-pub fn run_paper(cases: &[Case], progress: &(dyn Fn(usize, &str) + Sync)) -> Result<PaperRun> {
-    let (results, figures) = run_all_full(cases, progress)?;
+/// Make the claims the paper's source disagrees with `inconclusive`, each saying where: a
+/// disagreement names its claim, or (the case's own quote) every claim of its case.
+pub fn mark_disagreements(results: &mut [ClaimResult], disagreements: &[Disagreement]) {
+    for r in results.iter_mut() {
+        let hit: Vec<String> = disagreements
+            .iter()
+            .filter(|d| match &d.claim {
+                Some(c) => *c == r.claim,
+                None => d.case == r.case,
+            })
+            .map(Disagreement::to_string)
+            .collect();
+        if !hit.is_empty() {
+            r.verdict = Verdict::Inconclusive;
+            r.undecided = Some(format!(
+                "the transcription disagrees with the paper's source: {}",
+                hit.join("; ")
+            ));
+        }
+    }
+}
+
+/// Run every case of `inputs`, the claims its verification found in disagreement with the
+/// source `inconclusive`; `progress` hears of each finished case (index, id). The report
+/// renders the run ([`crate::report::Report::from_run`]).
+pub fn run_paper(
+    inputs: &PaperInputs,
+    progress: &(dyn Fn(usize, &str) + Sync),
+) -> Result<PaperRun> {
+    run_cases(&inputs.cases, inputs.disagreements(), progress)
+}
+
+/// [`run_paper`] over `cases`, with the `disagreements` of their verification.
+pub fn run_cases(
+    cases: &[Case],
+    disagreements: &[Disagreement],
+    progress: &(dyn Fn(usize, &str) + Sync),
+) -> Result<PaperRun> {
+    let (results, figures) = run_all_full(cases, disagreements, progress)?;
     Ok(PaperRun {
         results,
         figures,

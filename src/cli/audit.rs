@@ -133,23 +133,24 @@ pub fn run(a: Args) -> Result<(), Error> {
         true => cases::Kinds::All,
         false => cases::Kinds::Only(&audited),
     };
-    let loaded = cases::load_inputs_of::<Check>(&origin, source.as_deref(), kinds)?.cases;
+    let inputs = cases::load_inputs_of::<Check>(&origin, source.as_deref(), kinds)?;
+    let loaded = &inputs.cases;
     if let Some(dir) = &a.out {
-        return export(&loaded, &a, dir);
+        return export(loaded, &a, dir);
     }
     if a.markdown {
-        let run = orthocheck::claims::run_paper(&loaded, &|_, _| {})?;
+        let run = orthocheck::claims::run_paper(&inputs, &|_, _| {})?;
         let r = orthocheck::report::Report::from_run(run, Default::default());
         out(&report::errata_markdown(&r.claims))?;
         return Ok(());
     }
-    if let Some(case) = a.id.as_deref().and_then(|id| twofold_case(&loaded, id)) {
+    if let Some(case) = a.id.as_deref().and_then(|id| twofold_case(loaded, id)) {
         let audit = orthocheck::claims::twofold_squared::audit(case)?;
         emit(a.json, &audit, twofold_text)?;
         return Ok(());
     }
     let wanted = a.id.as_deref().map_or(Wanted::All, Wanted::Id);
-    let mut items: Vec<AuditItem> = orthocheck::claims::audit::audit_all(&loaded, wanted)?
+    let mut items: Vec<AuditItem> = orthocheck::claims::audit::audit_all(loaded, wanted)?
         .into_iter()
         .map(|(r, s)| item(&r, s))
         .collect();

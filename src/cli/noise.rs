@@ -61,7 +61,7 @@ impl From<ModelArg> for ModelChoice {
 pub fn run(a: Args) -> Result<(), Error> {
     check_limits(&a).map_err(Error::InvalidInput)?;
     let origin = cases::CaseOrigin::from_arg(a.cases.as_deref());
-    let all = cases::load_cases::<Check>(&origin, None)?;
+    let all = cases::load_cases::<Check>(&origin)?;
     let request = NoiseRequest {
         case: a.case.clone(),
         levels: a.levels,

@@ -43,7 +43,7 @@ pub fn run(args: Args) -> Result<(), Error> {
     };
     let mut prov = provenance::report_provenance();
     prov.transcription = inputs.transcription_sentence();
-    let run = orthocheck::claims::run_paper(all, &progress)?;
+    let run = orthocheck::claims::run_paper(&inputs, &progress)?;
     let r = orthocheck::report::Report::from_run(run, prov).with_paper(inputs.paper.clone());
     if show() {
         eprintln!();
@@ -67,5 +67,12 @@ pub fn run(args: Args) -> Result<(), Error> {
             out(&format!("  {verdict}: {n}\n"))?;
         }
     }
-    Ok(())
+    let disagreements = inputs.disagreements();
+    if disagreements.is_empty() {
+        Ok(())
+    } else {
+        Err(Error::Unverified(
+            disagreements.iter().map(|d| format!("\n  {d}")).collect(),
+        ))
+    }
 }

@@ -63,14 +63,15 @@ pub fn layout(c: &ClaimResult) -> Layout<'_> {
             models.push(m.clone());
         }
     }
-    let in_table = |q: &Quantity| split(q).is_some_and(|(m, _)| models.contains(&m));
+    let entry = |q: &Quantity| matches!(q.role, Role::Entry { .. });
+    let in_table = |q: &Quantity| entry(q) || split(q).is_some_and(|(m, _)| models.contains(&m));
     let rows: Vec<&Quantity> = details.iter().filter(|q| !in_table(q)).collect();
     let grouped: Vec<(String, String, &Value)> = details
         .iter()
         .filter(|q| in_table(q))
         .filter_map(|q| split(q).map(|(m, s)| (m, s, &q.value)))
         .collect();
-    let mut tables = Vec::new();
+    let mut tables = entry_tables(details, trials);
     if !models.is_empty() {
         tables.extend(quantile_tables(&models, &grouped, trials));
         if let Some(t) = statistic_table(&models, &grouped, trials) {
@@ -82,6 +83,57 @@ pub fn layout(c: &ClaimResult) -> Layout<'_> {
         tables,
         trials,
     }
+}
+
+/// The tables of [`Role::Entry`] details, each with its rows and columns in first-seen order.
+fn entry_tables(details: &[Quantity], trials: Option<u64>) -> Vec<Table> {
+    let mut tables: Vec<Table> = Vec::new();
+    for q in details {
+        let Role::Entry { table, row, column } = &q.role else {
+            continue;
+        };
+        let at = match tables.iter().position(|t| &t.caption == table) {
+            Some(i) => i,
+            None => {
+                tables.push(Table {
+                    caption: table.clone(),
+                    corner: String::new(),
+                    columns: Vec::new(),
+                    rows: Vec::new(),
+                });
+                tables.len() - 1
+            }
+        };
+        let t = &mut tables[at];
+        let col = t
+            .columns
+            .iter()
+            .position(|c| c == column)
+            .unwrap_or_else(|| {
+                t.columns.push(column.clone());
+                t.columns.len() - 1
+            });
+        let r = t
+            .rows
+            .iter()
+            .position(|(h, _)| h == row)
+            .unwrap_or_else(|| {
+                t.rows.push((row.clone(), Vec::new()));
+                t.rows.len() - 1
+            });
+        let cells = &mut t.rows[r].1;
+        if cells.len() <= col {
+            cells.resize(col + 1, String::new());
+        }
+        cells[col] = cell(&q.value, trials);
+    }
+    for t in &mut tables {
+        let n = t.columns.len();
+        t.rows
+            .iter_mut()
+            .for_each(|(_, c)| c.resize(n, String::new()));
+    }
+    tables
 }
 
 /// One model × percentile table per quantile statistic.

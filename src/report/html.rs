@@ -15,21 +15,7 @@ use crate::check::{ClaimResult, Quantity, Role, Value, Verdict};
 
 pub use super::layout::anchor;
 
-/// HTML-escape text.
-pub fn escape(s: &str) -> String {
-    let mut out = String::with_capacity(s.len());
-    for c in s.chars() {
-        match c {
-            '&' => out.push_str("&amp;"),
-            '<' => out.push_str("&lt;"),
-            '>' => out.push_str("&gt;"),
-            '"' => out.push_str("&quot;"),
-            '\'' => out.push_str("&#39;"),
-            c => out.push(c),
-        }
-    }
-    out
-}
+pub use crate::mathtext::escape;
 
 /// What every part of the page needs: the claims in order, the ids a text may link, the
 /// paper's macros.

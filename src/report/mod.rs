@@ -7,7 +7,7 @@ pub mod glance;
 pub mod html;
 pub mod layout;
 pub mod markdown;
-pub mod math;
+pub use crate::mathtext as math;
 pub mod style;
 pub mod svg;
 pub mod values;

@@ -76,7 +76,7 @@ pub fn report() -> Result<&'static Report, String> {
                 transcription: inputs.transcription_sentence(),
                 ..Provenance::default()
             };
-            orthocheck::claims::run_paper(all, &progress)
+            orthocheck::claims::run_paper(inputs, &progress)
                 .map(|run| Report::from_run(run, provenance).with_paper(inputs.paper.clone()))
                 .map_err(|e| {
                     let at = done.lock().map(|d| *d).unwrap_or(0);

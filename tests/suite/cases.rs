@@ -4,10 +4,8 @@
 //! trailing `…` there matches any rest). `build.rs` writes one test per file; the paper runs
 //! once for the whole suite (`common::report`) and each case's test snapshots its share.
 //!
-//! The errata of the text are decided against the paper's LaTeX source (`ORTHOCHECK_PAPER`):
-//! with it their snapshot is `case__source_errata`, without it `case__source_errata__unverified`
-//! (each finding inconclusive), and likewise the restatements, which inherit their verdicts. Bad cases that start `# needs: the paper's source` are skipped,
-//! with one line, without it.
+//! The verdicts do not depend on the paper's LaTeX source: a run with it and one without
+//! give the same snapshots (`transcription.rs` compares them).
 
 use std::path::Path;
 
@@ -49,16 +47,7 @@ fn paper_case(path: &Path) -> TestResult {
         .and_then(|s| s.to_str())
         .ok_or("case file name is not UTF-8")?;
     let json = serde_json::to_string_pretty(&results)?;
-    let verified = common::inputs()?.verification.is_some();
-    let name = match case.check {
-        // the restatements inherit the errata's verdicts
-        orthocheck::claims::Check::SourceErrata(_) | orthocheck::claims::Check::Restatements(_)
-            if !verified =>
-        {
-            format!("case__{stem}__unverified")
-        }
-        _ => format!("case__{stem}"),
-    };
+    let name = format!("case__{stem}");
     snapshot_settings().bind(|| insta::assert_snapshot!(name, json));
     Ok(())
 }
@@ -70,18 +59,7 @@ fn bad_case(path: &Path) -> TestResult {
         .next()
         .and_then(|l| l.strip_prefix("# expect: "))
         .ok_or("a bad case must start with '# expect: …'")?;
-    let latex = if text.lines().nth(1) == Some("# needs: the paper's source") {
-        let Some(source) = common::paper_source() else {
-            common::skipped_without_source(&path.display().to_string());
-            return Ok(());
-        };
-        let paper = cases::paper_of(&cases::CaseOrigin::Embedded)?;
-        let record = paper.source.ok_or("paper.yml records no source")?;
-        Some(cases::LatexSource::read(&source, &record)?)
-    } else {
-        None
-    };
-    match cases::load_case_with::<orthocheck::claims::Check>(path, latex.as_ref()) {
+    match cases::load_case::<orthocheck::claims::Check>(path) {
         Ok(_) => Err(format!("{} loaded, but it must fail", path.display()).into()),
         Err(e @ Error::Input { .. }) => {
             let shown = e.to_string();

@@ -266,8 +266,9 @@ fn every_defect_is_one_erratum() {
 
 /// One reading rule for the noise sentences: a sentence that leaves its reading open decides
 /// only where every reading agrees (§3's "average performance within 20 %" fails only as the
-/// largest error in squares), and one that names its reading is judged in it alone (§4's
-/// "errors of well above 20 %", in lengths).
+/// largest error in squares; §4's "errors of well above 20 %" holds only as the largest error
+/// in squares; §4's "on average … did not exceed 1 %" holds over the printed run's edges and
+/// fails over the trials at the paper's scene), and each reading is a row of a table.
 #[test]
 fn noise_claims_follow_one_reading_rule() {
     use orthocheck::check::{Role, Value};
@@ -279,9 +280,10 @@ fn noise_claims_follow_one_reading_rule() {
             .find(|c| c.id == id)
             .unwrap_or_else(|| panic!("{id} is a claim of the report"));
         let ds = c
-            .computed
+            .evidence
+            .details
             .iter()
-            .filter(|q| matches!(&q.role, Role::Cell { statistic, .. } if statistic == "decision"))
+            .filter(|q| matches!(&q.role, Role::Entry { table, column, .. } if table == "readings" && column == "decision"))
             .map(|q| match &q.value {
                 Value::Label { text } => text.clone(),
                 v => panic!("{id}: a decision is a label, not {v:?}"),
@@ -293,9 +295,17 @@ fn noise_claims_follow_one_reading_rule() {
     assert_eq!(v, Verdict::Inconclusive);
     assert_eq!(ds, ["fails", "holds", "holds", "holds"]);
     let (v, ds) = decisions("ex4-noise-1");
-    assert_eq!(v, Verdict::StatisticalFails);
-    assert_eq!(ds.iter().filter(|d| *d == "fails").count(), 1, "{ds:?}");
+    assert_eq!(v, Verdict::Inconclusive);
+    assert_eq!(ds, ["holds", "fails", "fails", "fails"]);
+    let (v, ds) = decisions("ex4-noise-0.1");
+    assert_eq!(v, Verdict::Inconclusive);
     assert_eq!(ds.iter().filter(|d| d.starts_with("not read")).count(), 3);
+    assert_eq!(
+        ds.iter()
+            .filter(|d| !d.starts_with("not read"))
+            .collect::<Vec<_>>(),
+        ["holds", "fails"]
+    );
     let (v, ds) = decisions("ex2-noise-0.1");
     assert_eq!(v, Verdict::StatisticalHolds);
     assert!(ds.iter().all(|d| d == "holds"), "{ds:?}");

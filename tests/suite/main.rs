@@ -26,6 +26,8 @@ mod renderers;
 /// Orthographic structure from motion: `reconstruct` and the `sfm` library.
 mod sfm;
 mod sfm_tracks;
+/// One verdict set with or without the paper's source; every quote at its tightest lines.
+mod transcription;
 /// Every formula of the paper's cases, typeset: no script swallows a symbol, every symbol
 /// reaches the reader in its order; eq. p3f3sqr reads 2a²b².
 mod typesetting;

@@ -96,6 +96,12 @@ pub enum Error {
         /// The cause.
         source: ParseError,
     },
+    /// The paper's source disagrees with the transcription: the claims concerned were judged
+    /// `inconclusive`, and these are the places (one per line).
+    #[error(
+        "the paper's source disagrees with the transcription; those claims are inconclusive:{0}"
+    )]
+    Unverified(String),
     /// A numerical method failed where it should not (reported, never a panic).
     #[error("numerical failure: {0}")]
     Numerical(String),

@@ -173,6 +173,12 @@ pub enum ComputedTest {
         /// Seed of the rational scene for the ranks.
         seed: u64,
     },
+    /// §5 drops the fourth relation as dependent, then squares the other three: whether the
+    /// twofold-squared system still implies it.
+    FourthRelationSquared {
+        /// Seed of the rational scene for the ranks.
+        seed: u64,
+    },
     /// The formula for b solves the quadratic in b² (Appendix A, §5.2).
     BFormula,
     /// `√(e₀² − e₀ᵢ²) = ±√(e₁² − e₁ᵢ²) ± √(e₂² − e₂ᵢ²)`, every sign choice squared twice,
@@ -187,6 +193,9 @@ pub enum ComputedTest {
         listed: Vec<String>,
         /// The symbols the expression uses.
         used: Vec<String>,
+        /// The other places that print the same list.
+        #[serde(default)]
+        also: Vec<crate::cases::ClaimPlace>,
     },
     /// n(n−1)(n−2)(n−3) against the number of ordered choices of four of n points.
     OrderedQuadruples {

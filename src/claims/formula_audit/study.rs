@@ -233,6 +233,8 @@ pub fn arithmetic(a: &ArithmeticItem) -> ArithmeticFinding {
 pub enum ComputedFinding {
     /// The fourth relation of §5.
     FourthRelation(FourthRelation),
+    /// The fourth relation of §5 in the twofold-squared system the section solves.
+    FourthRelationSquared(FourthRelation),
     /// The quadratic formula for b² (Appendix A).
     BFormula {
         /// Both signs of the root solve the quadratic.
@@ -274,13 +276,16 @@ pub fn computed(test: &ComputedTest) -> ComputedFinding {
         ComputedTest::FourthRelation { seed } => {
             ComputedFinding::FourthRelation(fourth_relation(*seed))
         }
+        ComputedTest::FourthRelationSquared { seed } => {
+            ComputedFinding::FourthRelationSquared(fourth_relation(*seed))
+        }
         ComputedTest::BFormula => ComputedFinding::BFormula {
             solves: quadratic_formula_solves(-1, 4),
             // the same check with the sign of B in the numerator flipped
             mutant_rejected: !quadratic_formula_solves(1, 4),
         },
         ComputedTest::SignedRelation { edges } => signed_relation(edges),
-        ComputedTest::ConstantSymbols { listed, used } => ComputedFinding::ConstantSymbols {
+        ComputedTest::ConstantSymbols { listed, used, .. } => ComputedFinding::ConstantSymbols {
             missing: used
                 .iter()
                 .filter(|u| !listed.contains(u))

@@ -16,6 +16,9 @@ pub struct IdentityExampleCase {
     pub table: DistanceTable,
     /// "The first two attempts are the correct ones".
     pub correct: ClaimRef,
+    /// "b can in fact take one of two distinct values … the lower value of the distance …
+    /// shall be taken" (§5.2's procedure): what the census of seeded scenes judges.
+    pub two_values_of_b: ClaimRef,
     /// The debug printouts.
     pub debug: DebugBlocks,
     /// The figure panels (boxed: they make the case large).

@@ -11,7 +11,9 @@ use crate::check::{
     ClaimResult, Evidence, Power, ResultBuilder, Tolerance, ToleranceSource, Value, Verdict,
 };
 use crate::claims::noise_study::NoiseStudyCase;
-use crate::claims::shared::{claim_of, readings, Direction, NoiseLevel, Quantity as Symbols};
+use crate::claims::shared::{
+    claim_of, claims_of, readings, Direction, NoiseLevel, Quantity as Symbols,
+};
 use crate::derivations::noise::{LevelResult, Study, METRICS, QUANTILES};
 use crate::derivations::solver::default_edge_names;
 use crate::error::Result;
@@ -39,6 +41,7 @@ pub(super) fn check(b: &ResultBuilder, case: &NoiseStudyCase) -> Result<Vec<Clai
         trials: case.trials,
         seed: case.seed,
         setting: setting(truth.len(), case.frames),
+        scene: false,
     };
     for (i, (lv, res)) in case.levels.iter().zip(&results).enumerate() {
         // one claim quoted at several levels gets one result per level
@@ -125,6 +128,9 @@ pub(super) struct Context<'a> {
     pub seed: u64,
     /// The scene in words, for the figures' titles ("three points, four frames").
     pub setting: String,
+    /// Whether each level's last distribution is the paper's own scene (§4): the trials a
+    /// sentence about "the average" speaks of were run there.
+    pub scene: bool,
 }
 
 /// The scene of a study in words: its points (from its `edges`, all pairs) and `frames`.
@@ -191,9 +197,33 @@ impl Context<'_> {
         };
         let all: Vec<Judged> = (0..METRICS.len()).map(at).collect();
         let judged = at(metrics[0]);
+        let claims = claims_of(lv);
+        let trials = self.trial_dists(res);
+        // the other subjects the words leave open, under every metric they read
+        let extra: Vec<Judged> = claims[1..]
+            .iter()
+            .flat_map(|&c| metrics.iter().map(move |&m| (c, m)))
+            .map(|(c, metric)| {
+                let dists = if matches!(c, Claim::Median(..)) {
+                    trials
+                } else {
+                    res
+                };
+                Judged::new(
+                    c,
+                    Facts {
+                        metric,
+                        run: run.as_ref(),
+                        dists,
+                    },
+                )
+            })
+            .collect();
         let reading = Reading {
             metrics: &metrics,
             all: &all,
+            extra: &extra,
+            argued: lv.statement.as_ref().map(|s| s.argued.as_str()),
         };
         let result = self.main_result(b, lv, suffix(None), read_as, &judged, &reading, neighbour);
         b.figure(figure::figure(
@@ -235,6 +265,19 @@ impl Context<'_> {
             dist.to_lengths,
         )
         .computed("the values are", symbols_name(read_as))
+        .detail_as(
+            "defect",
+            Value::label(format!(
+                "the values are labelled {} but are {}: the printed run is nearer the true {}",
+                symbols_name(lv.labelled_as),
+                symbols_name(read_as),
+                match read_as {
+                    Symbols::Squares => "squares",
+                    Symbols::Lengths => "lengths",
+                }
+            )),
+            Role::Defect,
+        )
         .correction(symbols_name(read_as))
         .tolerance(Tolerance::exact("the nearer of the two readings"))
         .power(Power::mutant(
@@ -301,13 +344,36 @@ impl Context<'_> {
                 );
             }
         }
-        let r = reading
-            .cells(r, f.run)
+        if let (Some(words), None) = (&lv.unjudged, &lv.statement) {
+            r = r.computed(
+                "claim as read",
+                Value::label(format!(
+                    "the printed run is a typical outcome of noise up to ε; \"{words}\" names no bound and is not judged"
+                )),
+            );
+        }
+        let mut ev = reading.table(self.evidence(lv, claim, f, decision, neighbour), f.run);
+        if let Some(words) = &lv.unjudged {
+            ev = ev.with(
+                "words that name no bound (not judged)",
+                Value::quote(words.clone()),
+            );
+        }
+        let r = r
             .undecided(reading.undecided())
             .tolerance(self.tolerance(claim, f))
             .power(power(claim, f, neighbour))
-            .evidence(self.evidence(lv, claim, f, decision, neighbour));
+            .evidence(ev);
         r.verdict(decision.verdict())
+    }
+
+    /// The distributions the trials of a sentence were run in: the paper's own scene where
+    /// there is one, else every noise model (the paper does not say which).
+    fn trial_dists<'r>(&self, res: &'r [LevelResult]) -> &'r [LevelResult] {
+        match (self.scene, res.len()) {
+            (true, n) if n > 0 => &res[n - 1..],
+            _ => res,
+        }
     }
 
     /// The Monte Carlo tolerance of a decision: the sampling margin at the threshold that
@@ -347,35 +413,48 @@ pub(super) struct Reading<'a> {
     pub metrics: &'a [usize],
     /// The claim judged under every metric, in the order of [`METRICS`].
     pub all: &'a [Judged<'a>],
+    /// The other subjects the sentence leaves open (the trials besides the printed run),
+    /// each under every metric read.
+    pub extra: &'a [Judged<'a>],
+    /// The reading argued from the sentence's words.
+    pub argued: Option<&'a str>,
+}
+
+/// The subject of a claim in words: what the reading is about.
+fn subject_words(c: Claim) -> &'static str {
+    match c {
+        Claim::Typical => "the printed run as a typical one",
+        Claim::Example(..) => "the printed run",
+        Claim::Median(..) => "the median trial",
+    }
 }
 
 impl Reading<'_> {
+    /// Every reading read, the drawn subject's first.
+    pub(super) fn read(&self) -> impl Iterator<Item = &Judged<'_>> {
+        self.metrics.iter().map(|&m| &self.all[m]).chain(self.extra)
+    }
+
     /// The decision from every reading the sentence leaves open ([`every_reading`]).
     pub fn decision(&self) -> Decision {
-        every_reading(self.metrics.iter().map(|&m| self.all[m].decision))
+        every_reading(self.read().map(|j| j.decision))
     }
 
     /// Why the readings together decide nothing: they disagree, or one is too close to call.
     fn undecided(&self) -> String {
         let each: Vec<String> = self
-            .metrics
-            .iter()
-            .map(|&m| {
+            .read()
+            .map(|j| {
                 format!(
-                    "{} as the {}",
-                    self.all[m].decision.name(),
-                    metric_phrase(m)
+                    "{} as the {} of {}",
+                    j.decision.name(),
+                    metric_phrase(j.facts.metric),
+                    subject_words(j.claim)
                 )
             })
             .collect();
-        let split = self
-            .metrics
-            .iter()
-            .any(|&m| self.all[m].decision == Decision::Holds)
-            && self
-                .metrics
-                .iter()
-                .any(|&m| self.all[m].decision == Decision::Fails);
+        let split = self.read().any(|j| j.decision == Decision::Holds)
+            && self.read().any(|j| j.decision == Decision::Fails);
         if split {
             format!(
                 "the sentence does not say which error it means, and the readings disagree: {}",
@@ -386,38 +465,44 @@ impl Reading<'_> {
         }
     }
 
-    /// One row of cells per reading: the printed run's error, the median trial's error where
-    /// the claim is about the trials, and the reading's decision (or that the sentence names
-    /// another reading).
-    fn cells<'b>(
-        &self,
-        mut r: crate::check::ClaimBuilder<'b>,
-        run: Option<&crate::studies::noise::RunErrors>,
-    ) -> crate::check::ClaimBuilder<'b> {
-        for (m, j) in self.all.iter().enumerate() {
-            let phrase = metric_phrase(m);
+    /// The readings as a table, one row per reading: whether the sentence leaves it open,
+    /// the printed run's error, the median trial's error where the reading is about the
+    /// trials, and its decision (or that the sentence names another reading).
+    fn table(&self, mut ev: Evidence, run: Option<&crate::studies::noise::RunErrors>) -> Evidence {
+        const TABLE: &str = "readings";
+        if let Some(words) = self.argued {
+            ev = ev.with(
+                "reading, argued from the sentence's words",
+                Value::label(words),
+            );
+        }
+        let drawn = self
+            .all
+            .iter()
+            .enumerate()
+            .map(|(m, j)| (m, j, self.metrics.contains(&m)));
+        let extra = self.extra.iter().map(|j| (j.facts.metric, j, true));
+        for (m, j, read) in drawn.chain(extra) {
+            let row = format!("{}, {}", subject_words(j.claim), metric_phrase(m));
             if let Some(run) = run {
-                r = r.computed_cell(phrase, "printed run's error", run.metrics[m]);
+                ev = ev.with_entry(TABLE, &row, "printed run's error", run.metrics[m]);
             }
             if let Claim::Median(..) = j.claim {
                 for d in j.facts.dists {
                     if let Some(q) = d.quantile(m, 0.5) {
-                        r = r.computed_cell(
-                            phrase,
-                            &format!("median trial's error, {}", d.model),
-                            q,
-                        );
+                        let column = format!("median trial's error, {}", d.model);
+                        ev = ev.with_entry(TABLE, &row, &column, q);
                     }
                 }
             }
-            let decides = if self.metrics.contains(&m) {
+            let decides = if read {
                 j.decision.name()
             } else {
                 "not read: the sentence names another"
             };
-            r = r.computed_cell(phrase, "decision", decides);
+            ev = ev.with_entry(TABLE, &row, "decision", decides);
         }
-        r
+        ev
     }
 }
 
@@ -590,6 +675,7 @@ pub(crate) fn check_runs_of_body(
         trials,
         seed,
         setting: setting(truth.len(), random.frames),
+        scene: !scene.is_empty(),
     };
     let mut out = Vec::new();
     for (i, (lv, res)) in levels.iter().zip(&all).enumerate() {

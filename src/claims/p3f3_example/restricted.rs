@@ -3,10 +3,13 @@
 //! data (`ex2-discriminant`). Computation in `studies::exact_views` (samples and the witness)
 //! and `studies::view_bounds` (the proven separation of the two solutions).
 
+use crate::algebra::Interval;
 use crate::check::{
-    ClaimBuilder, ClaimResult, Power, ResultBuilder, Tolerance, ToleranceSource, Value, Verdict,
+    ClaimBuilder, ClaimResult, Power, Quantity, ResultBuilder, Tolerance, ToleranceSource, Value,
+    Verdict,
 };
 use crate::claims::p3f3_example::P3f3ExampleCase;
+use crate::derivations::p3f3::route::{route, AFFINE_NAMES, D_NAMES};
 use crate::studies::exact_views::{restricted, Restricted, RestrictedDesign};
 use crate::studies::rounding::{inside, Acceptance, RoundingBox};
 use crate::studies::view_bounds::{separation, Extreme, Views};
@@ -36,7 +39,8 @@ pub(super) fn results(
     }
     if let Some(c) = &case.discriminant {
         let sep = Views::new(figure_box, body).map(|v| separation(&v));
-        out.push(discriminant_result(b, c, &r, sep.as_ref()));
+        let route = route_cells(discriminant_result(b, c, &r, sep.as_ref()), figure_box);
+        out.push(route);
     }
     out
 }
@@ -136,6 +140,57 @@ fn sample_cells<'b>(mut out: ClaimBuilder<'b>, r: &Restricted) -> ClaimBuilder<'
             );
     }
     out
+}
+
+/// The paper's named quantities of §2.2 at the example, beside its discriminant: each at the
+/// printed coordinates and enclosed over their rounding (naive interval arithmetic through the
+/// paper's own route: an outer bound, never a sample's range).
+fn route_cells(mut r: ClaimResult, figure_box: &RoundingBox) -> ClaimResult {
+    let (Ok(at), Ok(over)) = (
+        <[f64; 18]>::try_from(figure_box.center.as_slice()),
+        <[f64; 18]>::try_from(figure_box.half.as_slice()),
+    ) else {
+        return r;
+    };
+    let boxed: [Interval; 18] = std::array::from_fn(|i| Interval::around(at[i], over[i]));
+    let (Some(p), Some(e)) = (route(&at), route(&boxed)) else {
+        return r;
+    };
+    let mut rows: Vec<(String, f64, Interval)> = Vec::new();
+    for f in 0..3 {
+        for (j, edge) in ["a", "b", "c"].iter().enumerate() {
+            rows.push((
+                format!("{edge}_{}²", f + 1),
+                p.projections[f][j],
+                e.projections[f][j],
+            ));
+        }
+    }
+    for k in 0..2 {
+        for (j, name) in D_NAMES.iter().enumerate() {
+            rows.push((format!("{name},{}", k + 1), p.d[k][j], e.d[k][j]));
+        }
+    }
+    for (j, name) in AFFINE_NAMES.iter().enumerate() {
+        rows.push(((*name).to_string(), p.affine[j], e.affine[j]));
+    }
+    const TABLE: &str = "the route's quantities at the example";
+    for (name, v, i) in rows {
+        let details = &mut r.evidence.details;
+        details.push(Quantity::entry(
+            TABLE,
+            &name,
+            "at the printed data",
+            Value::real(v),
+        ));
+        details.push(Quantity::entry(
+            TABLE,
+            &name,
+            "over the figure's rounding (outer bound)",
+            Value::interval(i.lo, i.hi),
+        ));
+    }
+    r
 }
 
 fn discriminant_result(

@@ -34,6 +34,10 @@ pub struct NoiseLevel {
     /// A numeric statement about the errors, if the paper makes one.
     #[serde(default)]
     pub statement: Option<Statement>,
+    /// The sentence's words that name no bound ("which seems to be quite satisfactory"):
+    /// shown as not judged.
+    #[serde(default)]
+    pub unjudged: Option<String>,
 }
 
 /// "error below 0.2 %", "deviates more than 15 %", "average performance within 20 %"
@@ -41,8 +45,12 @@ pub struct NoiseLevel {
 #[derive(Clone, Debug, Deserialize, PartialEq)]
 #[serde(deny_unknown_fields)]
 pub struct Statement {
-    /// Whether it is about the printed example or about the mean over trials.
-    pub about: StatementSubject,
+    /// Whether it is about the printed example or about the mean over trials: one, or each
+    /// reading the words leave open (`[example, typical_trial]`).
+    pub about: Subjects,
+    /// Which reading the words name and which they leave open, argued from the sentence: the
+    /// evidence shows it beside each reading's value.
+    pub argued: String,
     /// The bound is an upper one ("below") or a lower one ("above").
     pub direction: Direction,
     /// The bound as a fraction ("0.002" for 0.2 %).
@@ -55,6 +63,26 @@ pub struct Statement {
     /// lengths"); absent: both squares and lengths.
     #[serde(default)]
     pub quantity: Option<Quantity>,
+}
+
+/// One subject, or several readings of it.
+#[derive(Clone, Debug, Deserialize, PartialEq, Eq)]
+#[serde(untagged)]
+pub enum Subjects {
+    /// The one the sentence names.
+    One(StatementSubject),
+    /// The readings the sentence leaves open, the first the one drawn.
+    Many(Vec<StatementSubject>),
+}
+
+impl Subjects {
+    /// Every subject, the first the one drawn.
+    pub fn list(&self) -> Vec<StatementSubject> {
+        match self {
+            Subjects::One(s) => vec![*s],
+            Subjects::Many(v) => v.clone(),
+        }
+    }
 }
 
 /// How a statement combines the errors of the edges.
@@ -108,14 +136,25 @@ pub fn levels(v: &Validator, at: &str, levels: &[NoiseLevel]) -> Result<()> {
     Ok(())
 }
 
-pub(crate) fn claim_of(lv: &NoiseLevel) -> Claim {
+/// The claim of a level under each subject its sentence may have, the first the one drawn.
+pub(crate) fn claims_of(lv: &NoiseLevel) -> Vec<Claim> {
     match &lv.statement {
-        None => Claim::Typical,
-        Some(st) => match st.about {
-            StatementSubject::Example => Claim::Example(st.bound.to_f64(), st.direction),
-            StatementSubject::TypicalTrial => Claim::Median(st.bound.to_f64(), st.direction),
-        },
+        None => vec![Claim::Typical],
+        Some(st) => st
+            .about
+            .list()
+            .into_iter()
+            .map(|s| match s {
+                StatementSubject::Example => Claim::Example(st.bound.to_f64(), st.direction),
+                StatementSubject::TypicalTrial => Claim::Median(st.bound.to_f64(), st.direction),
+            })
+            .collect(),
     }
+}
+
+/// The claim of a level under the subject drawn.
+pub(crate) fn claim_of(lv: &NoiseLevel) -> Claim {
+    claims_of(lv)[0]
 }
 
 /// The readings of a level's sentence, as metrics: what it names is fixed, what it leaves
@@ -160,7 +199,8 @@ mod tests {
     fn a_sentence_fixes_what_it_names_and_leaves_the_rest_open() {
         use crate::check::noise::Direction;
         let st = |quantity, over_edges| Statement {
-            about: StatementSubject::Example,
+            about: Subjects::One(StatementSubject::Example),
+            argued: String::new(),
             direction: Direction::Below,
             bound: Printed::parse("0.2").unwrap(),
             over_edges,

@@ -1,17 +1,14 @@
 //! Errata of the text: findings of a line-by-line reading of the LaTeX source, each quoted
-//! exactly at its lines, with the correction and, where one exists, the computation that
-//! decides it. Given the paper's LaTeX source (`--paper FILE`), every quote is verified at
-//! its lines as the case is read; without it the findings stand on the transcription alone.
-
-use std::path::Path;
+//! exactly at its lines with the words at fault, the correction and, where one exists, the
+//! computation that decides it. The findings are judged from this transcription; given the
+//! paper's LaTeX source (`--paper FILE`), the verification checks every quote at its lines
+//! and the source facts the findings record ([`SourceErrataCase::source_checks`]).
 
 use std::collections::BTreeMap;
 
 use serde::Deserialize;
 
-use crate::cases::{
-    invalid, parse_lines, quote_at, quote_within, ClaimRef, Printed, SourceText, Validator,
-};
+use crate::cases::{parse_lines, ClaimRef, Printed, SourceCheck, SourceFact, Validator};
 use crate::error::Result;
 
 /// The errata of the text.
@@ -20,10 +17,6 @@ use crate::error::Result;
 pub struct SourceErrataCase {
     /// The findings, in the order of the source.
     pub findings: Vec<Finding>,
-    /// The source's lines, attached by [`load_case_with`](super::load_case_with) when the
-    /// source is given (absent otherwise: the quotes are then unverified).
-    #[serde(skip)]
-    pub text: Option<SourceText>,
 }
 
 /// Whether a finding changes what the text says.
@@ -50,6 +43,9 @@ pub struct Finding {
     pub kind: FindingKind,
     /// The defect, in words.
     pub defect: String,
+    /// The words at fault, each as it stands in the quote (white space aside): the check
+    /// finds every one in the quote and none in the corrected text.
+    pub at_fault: Vec<String>,
     /// As it should read.
     pub corrected: String,
     /// Other places of the source that decide the reading, each quoted at its lines too.
@@ -187,60 +183,40 @@ fn picture_strings(p: &LabelPicture) -> Vec<String> {
     out
 }
 
-/// Verify every quote of the case at its lines of `latex` and attach the source's lines: a
-/// quote that is not there is an input error naming the field.
-pub(super) fn attach_source(
-    c: &mut SourceErrataCase,
-    case_text: &str,
-    case_path: &Path,
-    latex: &crate::cases::LatexSource,
-) -> Result<()> {
-    let path = &latex.path;
-    let text = latex.text.clone();
-    let base = "check.source_errata.findings";
-    for (i, f) in c.findings.iter().enumerate() {
-        let mut places = vec![(
-            format!("{base}[{i}].claim.quote"),
-            &f.claim.lines,
-            &f.claim.quote,
-        )];
-        for (j, p) in f.also.iter().enumerate() {
-            places.push((format!("{base}[{i}].also[{j}].quote"), &p.lines, &p.quote));
-        }
-        if let Some(Decision::FigureLabels { pictures, .. }) = &f.decide {
-            for (j, p) in pictures.iter().enumerate() {
-                let (a, b) = parse_lines(&p.lines).unwrap_or((0, 0));
-                if let Some(missing) = picture_strings(p)
-                    .into_iter()
-                    .find(|q| !quote_within(&text, a, b, q))
-                {
-                    return Err(invalid(
-                        case_text,
-                        case_path,
-                        &format!("{base}[{i}].decide.figure_labels.pictures[{j}]"),
-                        format!(
-                            "`{missing}` is not within lines {} of {}",
-                            p.lines,
-                            path.display()
-                        ),
-                    ));
+impl SourceErrataCase {
+    /// The source facts the findings record beyond their quotes: every coordinate of a
+    /// picture within its lines, and the strings recorded as absent from the whole source.
+    /// The quotes themselves are verified with every other quote of the cases.
+    pub fn source_checks(&self) -> Vec<SourceCheck> {
+        let base = "check.source_errata.findings";
+        let mut out = Vec::new();
+        for (i, f) in self.findings.iter().enumerate() {
+            let claim = f.claim.claim.clone();
+            match &f.decide {
+                Some(Decision::FigureLabels { pictures, .. }) => {
+                    for (j, p) in pictures.iter().enumerate() {
+                        out.extend(picture_strings(p).into_iter().map(|needle| SourceCheck {
+                            claim: claim.clone(),
+                            field: format!("{base}[{i}].decide.figure_labels.pictures[{j}]"),
+                            fact: SourceFact::Within {
+                                lines: p.lines.clone(),
+                                needle,
+                            },
+                        }));
+                    }
                 }
+                Some(Decision::NotInSource { strings }) => {
+                    out.extend(strings.iter().enumerate().map(|(j, s)| SourceCheck {
+                        claim: claim.clone(),
+                        field: format!("{base}[{i}].decide.not_in_source.strings[{j}]"),
+                        fact: SourceFact::Absent { needle: s.clone() },
+                    }));
+                }
+                _ => {}
             }
         }
-        for (field, lines, quote) in places {
-            let found = parse_lines(lines).is_some_and(|(a, b)| quote_at(&text, a, b, quote));
-            if !found {
-                return Err(invalid(
-                    case_text,
-                    case_path,
-                    &field,
-                    format!("the quote is not at lines {lines} of {}", path.display()),
-                ));
-            }
-        }
+        out
     }
-    c.text = Some(text);
-    Ok(())
 }
 
 /// Result ids unique, line ranges that parse, a correction and a reading for each finding.
@@ -259,6 +235,12 @@ pub(super) fn checks(c: &SourceErrataCase, v: &Validator) -> Result<()> {
             return v.err(
                 &format!("{base}[{i}].claim.lines"),
                 format!("`{bad}` is not a line range a-b"),
+            );
+        }
+        if f.at_fault.is_empty() || f.at_fault.iter().any(|w| w.trim().is_empty()) {
+            return v.err(
+                &format!("{base}[{i}].at_fault"),
+                "name the words at fault, each as it stands in the quote".into(),
             );
         }
         if f.corrected.trim().is_empty() || f.defect.trim().is_empty() {

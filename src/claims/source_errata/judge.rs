@@ -1,9 +1,10 @@
-//! Errata of the text, judged: each finding's quote located at its lines of the LaTeX source
-//! (with mutant line ranges that must miss it), its other quoted places, and the computation
-//! that decides the correction where one exists. An `erratum` changes what the text says; a
-//! `note` does not (the rule is in `docs/verdicts.md`).
+//! Errata of the text, judged from the transcription: each finding's quote with the words at
+//! fault in it, the other places it cites, and the computation that decides the correction
+//! where one exists. Whether the quotes stand at their lines of the LaTeX source is the
+//! transcription's verification (`cases::verify`), not part of a verdict: a run without the
+//! source gives the same verdicts. An `erratum` changes what the text says; a `note` does not
+//! (the rule is in `docs/verdicts.md`).
 
-use crate::cases::{parse_lines, quote_at, quote_within, SourceText};
 use crate::check::Role;
 use crate::check::{ClaimBuilder, ClaimResult, Power, ResultBuilder, Value, Verdict};
 use crate::claims::source_errata::{
@@ -13,66 +14,44 @@ use crate::derivations::dof;
 use crate::error::Result;
 use labels::labels_decision;
 
-/// Every finding of the case as a claim result; without the paper's source (none attached
-/// when the case was read) each finding is unverified.
+/// Every finding of the case as a claim result.
 pub(super) fn check(b: &ResultBuilder, case: &SourceErrataCase) -> Result<Vec<ClaimResult>> {
-    match case.text.as_ref() {
-        Some(text) => case.findings.iter().map(|f| finding(b, text, f)).collect(),
-        None => Ok(case.findings.iter().map(|f| unverified(b, f)).collect()),
+    case.findings.iter().map(|f| finding(b, f)).collect()
+}
+
+/// Which words at fault stand in a text (white space collapsed).
+fn words_in(text: &str, words: &[String]) -> usize {
+    let text = collapse(text);
+    words.iter().filter(|w| text.contains(&collapse(w))).count()
+}
+
+fn collapse(s: &str) -> String {
+    s.split_whitespace().collect::<Vec<_>>().join(" ")
+}
+
+/// The words at fault, as the transcription shows them: every one in the quote, none in the
+/// corrected text (the same search over the correction is the mutant that must find nothing).
+struct AtFault {
+    in_quote: usize,
+    in_correction: usize,
+    of: usize,
+}
+
+impl AtFault {
+    fn of(f: &Finding) -> AtFault {
+        AtFault {
+            in_quote: words_in(&f.claim.quote, &f.at_fault),
+            in_correction: words_in(&f.corrected, &f.at_fault),
+            of: f.at_fault.len(),
+        }
     }
-}
 
-/// A finding without the source: its quote is the transcription's, and nothing was checked
-/// that could have failed, so the finding is not established (`inconclusive`).
-fn unverified(b: &ResultBuilder, f: &Finding) -> ClaimResult {
-    b.claim(&f.claim)
-        .suffix(&f.id)
-        .printed("source text", Value::quote(f.claim.quote.clone()))
-        .computed(
-            "quote at the stated lines",
-            Value::label("not checked: the paper's source was not given (--paper FILE)"),
-        )
-        .correction(f.corrected.clone())
-        .detail_as("defect", Value::label(f.defect.clone()), Role::Defect)
-        .method("the quote as transcribed; its place in the source not checked")
-        .power(Power::mutant(
-            false,
-            "none without the paper's source: the quote's place is checked only against it",
-        ))
-        .verdict(Verdict::Inconclusive)
-}
-
-/// Where a quote is looked for: its own lines, then the mutant ranges that must miss it.
-struct Located {
-    at_lines: bool,
-    mutants_missed: usize,
-    mutants: usize,
-}
-
-/// The quote at `lines`, and the same search over the range shifted by its own length (both
-/// ways) and widened by one line at each end: a check that found the quote there too would
-/// not have tested the line numbers.
-fn locate(text: &SourceText, lines: &str, quote: &str) -> Located {
-    let Some((a, b)) = parse_lines(lines) else {
-        return Located {
-            at_lines: false,
-            mutants_missed: 0,
-            mutants: 0,
-        };
-    };
-    let len = b - a + 1;
-    let mut ranges = vec![(a + len, b + len), (a.saturating_sub(1), b + 1)];
-    if a > len {
-        ranges.push((a - len, b - len));
+    fn shown(&self) -> bool {
+        self.of > 0 && self.in_quote == self.of
     }
-    let missed = ranges
-        .iter()
-        .filter(|(x, y)| !quote_at(text, *x, *y, quote))
-        .count();
-    Located {
-        at_lines: quote_at(text, a, b, quote),
-        mutants_missed: missed,
-        mutants: ranges.len(),
+
+    fn mutant_rejected(&self) -> bool {
+        self.in_correction == 0
     }
 }
 
@@ -115,12 +94,7 @@ struct Decided {
     mutant: &'static str,
 }
 
-fn decide<'b>(
-    r: ClaimBuilder<'b>,
-    d: &Decision,
-    text: &SourceText,
-    quote: &str,
-) -> (ClaimBuilder<'b>, Decided) {
+fn decide<'b>(r: ClaimBuilder<'b>, d: &Decision) -> (ClaimBuilder<'b>, Decided) {
     match d {
         Decision::DofCount {
             balance,
@@ -133,32 +107,24 @@ fn decide<'b>(
             points,
             pictures,
         } => labels_decision(r, half_side, origin, points, pictures),
-        Decision::NotInSource { strings } => absence_decision(r, text, strings, quote),
+        Decision::NotInSource { strings } => absence_decision(r, strings),
     }
 }
 
-/// The strings are nowhere in the source; the same search must find the finding's own quote.
-fn absence_decision<'b>(
-    r: ClaimBuilder<'b>,
-    text: &SourceText,
-    strings: &[String],
-    quote: &str,
-) -> (ClaimBuilder<'b>, Decided) {
-    let n = text.lines.len();
-    let found = strings
-        .iter()
-        .filter(|s| quote_within(text, 1, n, s))
-        .count();
+/// The strings the transcription records as absent from the source (the verification,
+/// given the source, searches the whole of it for each): the finding rests on that record,
+/// and on its words at fault.
+fn absence_decision<'b>(r: ClaimBuilder<'b>, strings: &[String]) -> (ClaimBuilder<'b>, Decided) {
     let d = Decided {
-        ok: found == 0 && !strings.is_empty(),
-        mutant_rejected: quote_within(text, 1, n, quote),
-        method: "; the strings searched for in the whole source",
-        mutant: "; the same search must find the finding's own quote",
+        ok: !strings.is_empty(),
+        mutant_rejected: true,
+        method: "; the strings recorded as absent from the source (searched for in the whole source whenever it is given)",
+        mutant: "",
     };
     (
         r.computed(
-            "strings found in the source",
-            Value::count_of(found, strings.len()),
+            "strings recorded as absent from the source",
+            Value::count_of(strings.len(), strings.len()),
         ),
         d,
     )
@@ -196,37 +162,30 @@ fn dof_decision<'b>(
     )
 }
 
-fn finding(b: &ResultBuilder, text: &SourceText, f: &Finding) -> Result<ClaimResult> {
-    let own = locate(text, &f.claim.lines, &f.claim.quote);
-    let also_found = f
-        .also
-        .iter()
-        .filter(|p| locate(text, &p.lines, &p.quote).at_lines)
-        .count();
+fn finding(b: &ResultBuilder, f: &Finding) -> Result<ClaimResult> {
+    let fault = AtFault::of(f);
     let mut r = b
         .claim(&f.claim)
         .suffix(&f.id)
         .printed("source text", Value::quote(f.claim.quote.clone()))
-        .computed("quote at the stated lines", Value::flag(own.at_lines))
-        .correction(f.corrected.clone())
-        .detail_as("defect", Value::label(f.defect.clone()), Role::Defect);
-    if !f.also.is_empty() {
-        r = r.computed(
-            "other places quoted at their lines",
-            Value::count_of(also_found, f.also.len()),
+        .detail("words at fault", Value::quote(f.at_fault.join(" · ")))
+        .detail_as("defect", Value::label(f.defect.clone()), Role::Defect)
+        .computed(
+            "words at fault in the quote",
+            Value::count_of(fault.in_quote, fault.of),
+        )
+        .correction(f.corrected.clone());
+    for p in &f.also {
+        r = r.detail(
+            // no ": " in the name: the evidence layout reads "model: statistic" names
+            // as a table
+            &format!("lines {} ({})", p.lines, p.shows.replace(": ", ", ")),
+            Value::quote(p.quote.clone()),
         );
-        for p in &f.also {
-            r = r.detail(
-                // no ": " in the name: the evidence layout reads "model: statistic" names
-                // as a table
-                &format!("lines {} ({})", p.lines, p.shows.replace(": ", ", ")),
-                Value::quote(p.quote.clone()),
-            );
-        }
     }
     let decided = match &f.decide {
         Some(d) => {
-            let (r2, x) = decide(r, d, text, &f.claim.quote);
+            let (r2, x) = decide(r, d);
             r = r2;
             x
         }
@@ -237,16 +196,16 @@ fn finding(b: &ResultBuilder, text: &SourceText, f: &Finding) -> Result<ClaimRes
             mutant: "",
         },
     };
-    let confirmed = own.at_lines && also_found == f.also.len() && decided.ok;
+    let confirmed = fault.shown() && decided.ok;
     let power = Power::mutant(
-        own.mutants_missed == own.mutants && decided.mutant_rejected,
+        fault.mutant_rejected() && decided.mutant_rejected,
         &format!(
-            "the same search over {} shifted or widened line ranges must miss the quote (missed {}){}",
-            own.mutants, own.mutants_missed, decided.mutant
+            "the same search over the corrected text must find none of the words at fault (found {} of {}){}",
+            fault.in_correction, fault.of, decided.mutant
         ),
     );
     let method = format!(
-        "the quote located in the LaTeX source (white space collapsed){}",
+        "the words at fault found in the transcribed quote (white space collapsed){}",
         decided.method
     );
     Ok(r.method(&method)
@@ -311,18 +270,11 @@ mod tests {
     }
 
     #[test]
-    fn wrong_lines_are_rejected_and_the_mutant_ranges_miss() {
-        let t = SourceText {
-            lines: ["a b", "c d", "e f", "g h", "i j"]
-                .iter()
-                .map(|s| s.to_string())
-                .collect(),
-        };
-        let l = locate(&t, "2-3", "c d e f");
-        assert!(l.at_lines);
-        assert_eq!(l.mutants_missed, l.mutants);
-        assert!(!locate(&t, "3-4", "c d e f").at_lines);
-        assert!(!locate(&t, "2-3", "c d e g").at_lines);
-        assert!(!locate(&t, "x", "c d").at_lines);
+    fn words_at_fault_are_found_in_the_quote_only() {
+        let words = vec!["Q_I".to_string(), "four  images".to_string()];
+        assert_eq!(words_in("P_i, Q_I and\n four images", &words), 2);
+        assert_eq!(words_in("P_i, Q_i and four points", &words), 0);
+        // case matters: Q_i is not the defect Q_I
+        assert_eq!(words_in("Q_i", &words[..1]), 0);
     }
 }

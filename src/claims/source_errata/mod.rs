@@ -28,14 +28,8 @@ impl ClaimKind for SourceErrataCase {
         judge::check(b, self)
     }
 
-    fn attach_source(
-        &mut self,
-        text: &str,
-        path: &std::path::Path,
-        latex: &crate::cases::LatexSource,
-    ) -> Result<()> {
-        // the quotes are verified against the source as it is read
-        case::attach_source(self, text, path, latex)
+    fn source_checks(&self) -> Vec<crate::cases::SourceCheck> {
+        SourceErrataCase::source_checks(self)
     }
 
     fn audited() -> bool {
@@ -55,7 +49,6 @@ impl ClaimKind for SourceErrataCase {
                 .filter(|f| wanted.item(&format!("{}/{}", f.claim.claim, f.id), &f.claim.claim))
                 .cloned()
                 .collect(),
-            ..self.clone()
         };
         let results = judge::check(b, &asked)?;
         Ok(asked

@@ -15,6 +15,7 @@ use crate::error::{Error, Result};
 use crate::model::Tracks;
 
 pub mod exact;
+pub mod route;
 pub use exact::{exact_elimination, exact_equations, exact_linear_part, validate, Validation};
 
 /// The unknowns as affine functions of the free one, t: v = slope·t + intercept.

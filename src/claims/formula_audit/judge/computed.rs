@@ -2,7 +2,9 @@
 
 use num_rational::BigRational;
 
-use crate::check::{ClaimBuilder, ClaimResult, Power, ResultBuilder, Tolerance, Value, Verdict};
+use crate::check::{
+    ClaimBuilder, ClaimResult, Power, ResultBuilder, Role, Tolerance, Value, Verdict,
+};
 use crate::claims::audit::Shown;
 use crate::claims::formula_audit::study::ComputedFinding;
 use crate::claims::formula_audit::{ComputedItem, ComputedTest};
@@ -12,6 +14,7 @@ use crate::derivations::two_frames::FourthRelation;
 pub(super) fn computed_verdict(x: &ComputedFinding) -> Verdict {
     match x {
         ComputedFinding::FourthRelation(r) => identity(signed_dependent(r)),
+        ComputedFinding::FourthRelationSquared(r) => squared_verdict(r),
         ComputedFinding::BFormula { solves, .. } => identity(*solves),
         ComputedFinding::SignedRelation {
             three_edges,
@@ -47,6 +50,17 @@ fn independent_after_squaring(r: &FourthRelation) -> bool {
     !r.linear && v.len() == 4 && v[..3].iter().all(|x| *x == zero) && v[3] != zero
 }
 
+/// The relation dropped as dependent, in the squared system §5 solves: an erratum when the
+/// signed relations are dependent but the squared ones do not imply it (exact point), the
+/// identity when they do imply it, contradicted when not even the signed ones are dependent.
+fn squared_verdict(r: &FourthRelation) -> Verdict {
+    match (signed_dependent(r), independent_after_squaring(r)) {
+        (true, true) => Verdict::Erratum,
+        (true, false) => Verdict::IdentityVerified,
+        (false, _) => Verdict::Contradicted,
+    }
+}
+
 fn identity(ok: bool) -> Verdict {
     if ok {
         Verdict::IdentityVerified
@@ -59,6 +73,7 @@ fn identity(ok: bool) -> Verdict {
 fn should_be(test: &ComputedTest) -> String {
     match test {
         ComputedTest::FourthRelation { .. } => FOURTH.into(),
+        ComputedTest::FourthRelationSquared { .. } => SQUARED.into(),
         ComputedTest::BFormula => "b² = (−(c² f_cb + f_b) ± √Δ_b) / (2 f_{b²}) solves f_{b²} b⁴ + b² (c² f_cb + f_b) + (…) = 0; b is its square root where that is non-negative".into(),
         ComputedTest::SignedRelation { edges } => format!(
             "eq. p3f3sqr of the triangle with edges {} (every sign choice)",
@@ -74,6 +89,31 @@ fn should_be(test: &ComputedTest) -> String {
 }
 
 const FOURTH: &str = "in the signed depth differences the relation of PQR is the sum of those of PQT, QRT and RPT (linearly dependent, as the paper says); after twofold squaring, the form §5 goes on to solve, it is neither a linear combination of the other three nor implied by them: dropping it there admits sign choices no body has";
+
+const SQUARED: &str = "keep the relation of PQR (its sign pattern) beside the three twofold-squared relations: it is implied by the three only before squaring";
+
+/// What the squared system loses: the exact point where the three squared relations hold and
+/// the fourth does not.
+fn squared<'b>(r: ClaimBuilder<'b>, x: &FourthRelation, seed: u64) -> ClaimBuilder<'b> {
+    let value = x
+        .counterexample_values
+        .get(3)
+        .map_or_else(String::new, ToString::to_string);
+    let mut r = fourth(r, x, seed);
+    if independent_after_squaring(x) {
+        r = r
+            .detail_as(
+                "defect",
+                Value::label(format!(
+                    "the relation is dropped as linearly dependent, which holds of the signed relations; but §5 goes on to solve the twofold-squared ones, which neither combine linearly into it nor imply it: at an exact point the three vanish and the fourth is {}, so dropping it admits sign choices no body has",
+                    value
+                )),
+                Role::Defect,
+            )
+            .correction(SQUARED.to_string());
+    }
+    r
+}
 
 fn fourth<'b>(r: ClaimBuilder<'b>, x: &FourthRelation, seed: u64) -> ClaimBuilder<'b> {
     let s = &x.signed;
@@ -110,6 +150,9 @@ fn describe<'b>(r: ClaimBuilder<'b>, test: &ComputedTest, x: &ComputedFinding) -
         (ComputedTest::FourthRelation { seed }, ComputedFinding::FourthRelation(f)) => {
             fourth(r, f, *seed).detail("reading", Value::label(FOURTH))
         }
+        (ComputedTest::FourthRelationSquared { seed }, ComputedFinding::FourthRelationSquared(f)) => {
+            squared(r, f, *seed)
+        }
         (_, ComputedFinding::BFormula { solves, mutant_rejected }) => r
             .method("with A = f_{b²}, B = c² f_cb + f_b, C = the constant part and s = √Δ_b: 4A(AX² + BX + C) for X = (−B ± s)/(2A), reduced by s² = B² − 4AC, exactly over ℚ")
             .computed("both signs solve the quadratic", *solves)
@@ -125,18 +168,30 @@ fn describe<'b>(r: ClaimBuilder<'b>, test: &ComputedTest, x: &ComputedFinding) -
             }
             r
         }
-        (ComputedTest::ConstantSymbols { used, .. }, ComputedFinding::ConstantSymbols { missing, extra }) => {
+        (ComputedTest::ConstantSymbols { used, also, .. }, ComputedFinding::ConstantSymbols { missing, extra }) => {
             let list = |v: &[String]| if v.is_empty() { "none".to_string() } else { v.join(", ") };
-            let r = r
+            let mut r = r
                 .method("the listed symbols against those of the printed expression")
                 .computed("not listed", Value::label(list(missing)))
                 .computed("listed but not in the expression", Value::label(list(extra)))
                 .tolerance(Tolerance::exact("sets of symbols"))
                 .power(Power::exact_value("any symbol missing from the list or listed without use is an erratum"));
+            for p in also {
+                r = r.detail(&format!("the same list, lines {}", p.lines), Value::quote(p.quote.clone()));
+            }
             if missing.is_empty() && extra.is_empty() {
                 r
             } else {
-                r.correction(format!("constant symbols {}", used.join(", ")))
+                r.detail_as(
+                    "defect",
+                    Value::label(format!(
+                        "the list of constant symbols leaves out {} (used in the expression) and names {} (not in it)",
+                        list(missing),
+                        list(extra)
+                    )),
+                    Role::Defect,
+                )
+                .correction(format!("constant symbols {}", used.join(", ")))
             }
         }
         (_, ComputedFinding::OrderedQuadruples { rows, printed_matches }) => {

@@ -25,6 +25,7 @@ pub(super) fn results(
         ranking_result(b, case, truth, &r),
         generic_result(b, case, &generic, &planar),
         cause_result(b, case, truth, blocks, &generic, &planar),
+        planar_result(b, case, truth, blocks, &generic, &planar),
     ]
 }
 
@@ -77,10 +78,10 @@ fn first_result(
         .printed("attempts called correct", Value::count(2))
         .computed_cell("first two blocks", "the true assignment, opposite signs of b", Value::flag(first_two))
         .computed("distances of T₂ from its line, true assignment", Value::reals(&r.true_distances))
-        .computed("generic scenes where both signs of b pass under the program's conventions (see ex5-correct/generic)", Value::count_of(generic.both, generic.scenes))
+        .computed("generic scenes where both signs of b pass under the program's conventions (see identity-procedure/two-values-of-b)", Value::count_of(generic.both, generic.scenes))
         .tolerance(tolerance(r))
         .power(Power::mutant(rejected(runner, r.true_bound), "the best wrong assignment, through the same distance test, is rejected"))
-        .method("the procedure at c = census_c_factor × the smallest admissible c for the true assignment, both signs of b; true of the example, which owes it to its planar body (ex5-correct/cause): in generic scenes exactly one sign passes (ex5-correct/generic)")
+        .method("the procedure at c = census_c_factor × the smallest admissible c for the true assignment, both signs of b; true of the example, which owes it to its planar body (ex5-correct/cause, ex5-correct/planar-body): in generic scenes exactly one sign passes (identity-procedure/two-values-of-b)")
         .detail("best wrong assignment's distance", runner_value(runner))
         .verdict(Verdict::holds(first_two && on_line))
 }
@@ -115,14 +116,14 @@ fn ranking_result(
         .verdict(if within == [*truth] && epi_first == Some(*truth) { Verdict::Reproduced } else { Verdict::Contradicted })
 }
 
-/// "Both signs of b are correct" as a property of the method (docs/verdicts.md, §5.2): the
-/// proportion of seeded scenes where both versions pass, against 1/2 with two binomial
-/// standard errors 2√(¼ / n): above → holds, below → fails, within → inconclusive.
-pub(super) fn judge_both_signs(both: usize, n: usize) -> Verdict {
+/// A property of the method over seeded scenes (docs/verdicts.md, §5.2): the proportion of
+/// scenes that show it, against 1/2 with two binomial standard errors 2√(¼ / n): above →
+/// holds, below → fails, within → inconclusive.
+pub(super) fn judge_share(shown: usize, n: usize) -> Verdict {
     if n == 0 {
         return Verdict::Inconclusive;
     }
-    let p = both as f64 / n as f64;
+    let p = shown as f64 / n as f64;
     let band = 2.0 * (0.25 / n as f64).sqrt();
     if p > 0.5 + band {
         Verdict::StatisticalHolds
@@ -133,29 +134,34 @@ pub(super) fn judge_both_signs(both: usize, n: usize) -> Verdict {
     }
 }
 
+/// "b can in fact take one of two distinct values … the lower value of the distance … shall be
+/// taken": read from its words, the two values give two distances of which the lower is the
+/// body's (the sentence presupposes they differ); judged over seeded scenes as the share where
+/// exactly one version passes. That both pass, the example's situation, is shown beside it.
 fn generic_result(
     b: &ResultBuilder,
     case: &IdentityExampleCase,
     g: &ConventionCensus,
     p: &ConventionCensus,
 ) -> ClaimResult {
-    let control = judge_both_signs(p.both, p.scenes);
-    b.claim(&case.correct)
-        .suffix("generic")
-        .printed("both attempts correct, differing only in the sign of b", Value::flag(true))
-        .computed_cell("generic scenes", "both versions put P₂ on its line", Value::count_of(g.both, g.scenes))
-        .computed("… exactly one version", Value::count_of(g.exactly_one, g.scenes))
+    let control = judge_share(p.exactly_one, p.scenes);
+    b.claim(&case.two_values_of_b)
+        .suffix("two-values-of-b")
+        .printed("two values of b, the lower distance taken", Value::flag(true))
+        .computed_cell("generic scenes", "exactly one version puts P₂ on its line", Value::count_of(g.exactly_one, g.scenes))
+        .computed("… both versions", Value::count_of(g.both, g.scenes))
         .computed("… neither", Value::count_of(g.neither, g.scenes))
         .computed("the passing version is the true root of b² when T's depth has the same sign in both frames, the other root otherwise", Value::count_of(g.predicted, g.exactly_one))
         .computed("the outcome is the same at every d tried", Value::count_of(g.c_independent, g.scenes))
-        .computed_cell("planar scenes (P in the plane RTQ)", "both versions pass", Value::count_of(p.both, p.scenes))
+        .computed_cell("planar scenes (P in the plane RTQ)", "exactly one version passes", Value::count_of(p.exactly_one, p.scenes))
         .computed_cell("the reading that also tries both frame-2 mirror images", "both signs pass in generic scenes", Value::count_of(g.mirrors_both, g.scenes))
+        .detail("reading", Value::label("\"the lower value of the distance … shall be taken\" presupposes that the two values of b give different distances, one of them the body's: judged as the share of scenes where exactly one version passes; that both pass (the example's situation, ex5-correct) is what the sentence rules out, shown as \"both versions\""))
         .tolerance(Tolerance::bound(distance_level(), ToleranceSource::ErrorBound, "a version passes when the distance of P₂ from its line is within 3√(64ε) of the image size"))
-        .power(Power::mutant(control == Verdict::StatisticalHolds, "the same judge on the planar scenes says the claim holds"))
-        .method("seeded random bodies of four points in two frames (program order P, Q, R, T), the program's conventions (T's depth positive in both frames, Q's flag closing the triangle, one frame-2 orientation), d at its true value and at census_c_factor × the smallest admissible d; rule: docs/verdicts.md (§5.2). A sign of b and a frame-2 mirror trade places: with both mirrors allowed both signs pass, which is why the old reading found 'both' in every scene")
+        .power(Power::mutant(control != Verdict::StatisticalHolds, "the same judge on the planar scenes (where both versions pass) does not say the claim holds"))
+        .method("seeded random bodies of four points in two frames (program order P, Q, R, T), the program's conventions (T's depth positive in both frames, Q's flag closing the triangle, one frame-2 orientation), d at its true value and at census_c_factor × the smallest admissible d; rule: docs/verdicts.md (§5.2). A sign of b and a frame-2 mirror trade places: with both mirrors allowed both signs pass")
         .detail("seed", Value::exact(case.seed))
         .detail("verdict of the same judge on the planar scenes", Value::label(control.name()))
-        .verdict(judge_both_signs(g.both, g.scenes))
+        .verdict(judge_share(g.exactly_one, g.scenes))
 }
 
 /// The example owes its two passing versions to its body: P₁ = α T₁ + β Q₁ with P in the
@@ -193,18 +199,48 @@ fn cause_result(
         .verdict(if on == true_blocks.len() && on > 0 { Verdict::ReproducedWithinRounding } else { Verdict::Contradicted })
 }
 
+/// The example's body is planar, so both signs of b pass there whatever d: the example cannot
+/// show what the test tells apart. An erratum of the example when its true-assignment blocks
+/// put Pa on P₂ (the cause), every planar scene passes both versions and generic scenes
+/// almost never do.
+fn planar_result(
+    b: &ResultBuilder,
+    case: &IdentityExampleCase,
+    truth: &[usize; 4],
+    blocks: &[Block],
+    g: &ConventionCensus,
+    p: &ConventionCensus,
+) -> ClaimResult {
+    let cause = cause_result(b, case, truth, blocks, g, p);
+    let planar_both = judge_share(p.both, p.scenes) == Verdict::StatisticalHolds;
+    let generic_one = judge_share(g.exactly_one, g.scenes) == Verdict::StatisticalHolds;
+    let shown = cause.verdict == Verdict::ReproducedWithinRounding && planar_both && generic_one;
+    b.claim(&case.correct)
+        .suffix("planar-body")
+        .printed("attempts called correct", Value::count(2))
+        .computed("the example's body is planar and both versions pass there (ex5-correct/cause)", Value::flag(cause.verdict == Verdict::ReproducedWithinRounding))
+        .computed_cell("planar scenes", "both versions pass", Value::count_of(p.both, p.scenes))
+        .computed_cell("generic scenes", "exactly one version passes", Value::count_of(g.exactly_one, g.scenes))
+        .detail_as("defect", Value::label("the example's body is planar (P lies in the plane of R, T, Q: the hidden table's Gram matrix has rank 2), so both signs of b put the tested point on its line whatever d: the example presents as the procedure's behaviour what only a planar body does, and cannot show what the test tells apart; in generic bodies exactly one version passes"), crate::check::Role::Defect)
+        .correction("an example with a body that is not planar, in which exactly one of the two attempts (one sign of b) passes the test")
+        .tolerance(Tolerance::exact("counts of scenes against 1/2 ± two binomial standard errors"))
+        .power(Power::mutant(judge_share(g.both, g.scenes) != Verdict::StatisticalHolds, "the same judge of 'both versions pass' over generic scenes does not hold: the census tells planar from generic bodies"))
+        .method("ex5-correct/cause (the example's blocks) with the census of planar and generic scenes of identity-procedure/two-values-of-b")
+        .verdict(if shown { Verdict::Erratum } else { Verdict::Inconclusive })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
 
     #[test]
-    fn both_signs_judge_both_sides() {
-        assert_eq!(judge_both_signs(200, 200), Verdict::StatisticalHolds);
-        assert_eq!(judge_both_signs(0, 200), Verdict::StatisticalFails);
-        assert_eq!(judge_both_signs(100, 200), Verdict::Inconclusive);
+    fn the_share_judge_on_both_sides() {
+        assert_eq!(judge_share(200, 200), Verdict::StatisticalHolds);
+        assert_eq!(judge_share(0, 200), Verdict::StatisticalFails);
+        assert_eq!(judge_share(100, 200), Verdict::Inconclusive);
         // the band at n = 100 is ±0.1
-        assert_eq!(judge_both_signs(61, 100), Verdict::StatisticalHolds);
-        assert_eq!(judge_both_signs(59, 100), Verdict::Inconclusive);
-        assert_eq!(judge_both_signs(0, 0), Verdict::Inconclusive);
+        assert_eq!(judge_share(61, 100), Verdict::StatisticalHolds);
+        assert_eq!(judge_share(59, 100), Verdict::Inconclusive);
+        assert_eq!(judge_share(0, 0), Verdict::Inconclusive);
     }
 }

@@ -196,7 +196,7 @@ fn caption(
     };
     let mut s = format!(
         "For each noise model, the fraction of its successful trials whose error is at most x: the largest relative error over the edges in squared lengths and in lengths{also}, over {trials} seeded trials per model (seed {seed}). The vertical lines are {lines}; in the panel marked judged, a marker on each curve is where the judge reads it. {}",
-        why(lv, j, sampled_digits(trials as u64), reading.metrics.len() == 1)
+        why(lv, j, sampled_digits(trials as u64), reading.metrics.len() == 1 && reading.extra.is_empty())
     );
     s.push_str(&other_readings(j, reading));
     if result.verdict != reading.decision().verdict() {
@@ -228,40 +228,65 @@ fn caption(
 /// The readings the sentence leaves open besides the one drawn, and what they decide
 /// together (empty when the sentence names its reading).
 fn other_readings(j: &Judged, reading: &Reading) -> String {
-    let Some((_, others)) = reading.metrics.split_first() else {
-        return String::new();
-    };
-    if others.is_empty() {
+    let others = reading.metrics.get(1..).unwrap_or(&[]);
+    if others.is_empty() && reading.extra.is_empty() {
         return String::new();
     }
-    // a metric is (quantity, combination): 2·quantity + combination
-    let one_quantity = reading.metrics.iter().all(|m| m / 2 == j.facts.metric / 2);
-    let one_combination = reading.metrics.iter().all(|m| m % 2 == j.facts.metric % 2);
-    let open = match (one_quantity, one_combination) {
-        (true, _) => "how the edges' errors combine",
-        (_, true) => "whether it means squares or lengths",
-        _ => "whether it means squares or lengths, nor how the edges' errors combine",
-    };
-    let each: Vec<String> = others
-        .iter()
-        .map(|&m| {
-            let (how, what) = metric_words(m);
-            format!(
-                "{} as the {how} error in {what}",
-                decision_words(reading.all[m].decision)
-            )
-        })
-        .collect();
+    let mut text = String::new();
+    if !others.is_empty() {
+        // a metric is (quantity, combination): 2·quantity + combination
+        let one_quantity = reading.metrics.iter().all(|m| m / 2 == j.facts.metric / 2);
+        let one_combination = reading.metrics.iter().all(|m| m % 2 == j.facts.metric % 2);
+        let open = match (one_quantity, one_combination) {
+            (true, _) => "how the edges' errors combine",
+            (_, true) => "whether it means squares or lengths",
+            _ => "whether it means squares or lengths, nor how the edges' errors combine",
+        };
+        let each: Vec<String> = others
+            .iter()
+            .map(|&m| {
+                let (how, what) = metric_words(m);
+                format!(
+                    "{} as the {how} error in {what}",
+                    decision_words(reading.all[m].decision)
+                )
+            })
+            .collect();
+        text = format!(
+            " The sentence does not say {open}: under the other readings it {}",
+            join_and(&each)
+        );
+    }
+    if !reading.extra.is_empty() {
+        let each: Vec<String> = reading
+            .extra
+            .iter()
+            .map(|x| {
+                let (how, what) = metric_words(x.facts.metric);
+                format!(
+                    "{} as the median trial's {how} error in {what}",
+                    decision_words(x.decision)
+                )
+            })
+            .collect();
+        let lead = if text.is_empty() {
+            " The sentence"
+        } else {
+            "; it"
+        };
+        text.push_str(&format!(
+            "{lead} may also speak of the trials, not the printed run: there it {}",
+            join_and(&each)
+        ));
+    }
+    let split = reading.read().any(|x| x.decision != reading.decision());
     let end = match reading.decision() {
-        Decision::TooClose if reading.all.iter().any(|x| x.decision != Decision::TooClose) => {
+        Decision::TooClose if split => {
             "the readings disagree, so the claim is too close to call".to_string()
         }
         d => format!("so the claim {} under every reading", decision_words(d)),
     };
-    format!(
-        " The sentence does not say {open}: under the other readings it {}; {end}.",
-        join_and(&each)
-    )
+    format!("{text}; {end}.")
 }
 
 /// Why the level holds or fails, in the judge's numbers (`digits` significant digits);

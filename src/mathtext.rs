@@ -16,6 +16,22 @@ use std::collections::BTreeMap;
 
 use crate::numfmt::{subscript, superscript};
 
+/// HTML-escape text.
+pub fn escape(s: &str) -> String {
+    let mut out = String::with_capacity(s.len());
+    for c in s.chars() {
+        match c {
+            '&' => out.push_str("&amp;"),
+            '<' => out.push_str("&lt;"),
+            '>' => out.push_str("&gt;"),
+            '"' => out.push_str("&quot;"),
+            '\'' => out.push_str("&#39;"),
+            c => out.push(c),
+        }
+    }
+    out
+}
+
 /// Expansion depth limit: the paper's macros nest three deep; a definition that calls itself
 /// stops here instead of looping.
 const MAX_DEPTH: usize = 12;
@@ -508,7 +524,7 @@ fn html_of(pieces: &[Piece]) -> String {
             Piece::Sup(t) => ("<sup>", t, "</sup>"),
         };
         out.push_str(open);
-        out.push_str(&super::html::escape(t));
+        out.push_str(&escape(t));
         out.push_str(close);
     }
     out
