@@ -1,5 +1,5 @@
 //! The claims at a glance (HTML): every statistical claim and whether it holds, every
-//! erratum as printed → corrected in readable mathematics, and the claims that fail, cannot be
+//! erratum as printed → what is wrong → corrected in readable mathematics, and the claims that fail, cannot be
 //! decided or are inconclusive, each with its power in one short phrase.
 
 use std::fmt::Write as _;
@@ -269,11 +269,18 @@ fn push_errata(s: &mut String, page: &Page) {
     if errata.is_empty() {
         return;
     }
-    s.push_str("<h3>Errata: printed → corrected</h3>");
+    s.push_str("<h3>Errata: printed → what is wrong → corrected</h3>");
     for c in errata {
+        let wrong = match super::findings::defect_sentence(c) {
+            super::findings::Why::Text(d) => format!(
+                "<p class=\"defect\"><strong>what is wrong:</strong> {}</p>",
+                page.linked(&d)
+            ),
+            super::findings::Why::ShouldRead(_) => String::new(),
+        };
         let _ = write!(
             s,
-            "<div class=\"erratum\"><p>{} (§{}, line {})</p>{}</div>",
+            "<div class=\"erratum\"><p>{} (§{}, line {})</p>{wrong}{}</div>",
             claim_link(c),
             escape(&c.section),
             escape(&c.lines),

@@ -1,6 +1,6 @@
 //! The report as Markdown, in the same order as the HTML page: provenance, the verdict counts
 //! (linked to their lists), the contents in the paper's order, the claims at a glance (the
-//! statistical claims and the errata printed → corrected), the claims by verdict, then every
+//! statistical claims and the errata printed → what is wrong → corrected), the claims by verdict, then every
 //! section's claims in line order with links to the figures' SVG files (`<figure id>.svg`,
 //! written beside `report.md`).
 
@@ -336,7 +336,7 @@ fn push_glance(s: &mut String, ctx: &Ctx) {
         s.push('\n');
     }
     s.push_str(
-        "### Errata: printed → corrected\n\n| claim | printed | corrected |\n|---|---|---|\n",
+        "### Errata: printed → what is wrong → corrected\n\n| claim | printed | what is wrong | corrected |\n|---|---|---|---|\n",
     );
     for c in ctx.ordered.iter().filter(|c| c.verdict == Verdict::Erratum) {
         let printed: Vec<String> = printed_side(c)
@@ -354,14 +354,19 @@ fn push_glance(s: &mut String, ctx: &Ctx) {
         } else {
             ctx.quantities(&c.computed, None)
         };
+        let wrong = match super::findings::defect_sentence(c) {
+            super::findings::Why::Text(d) => ctx.linked(&d),
+            super::findings::Why::ShouldRead(_) => String::new(),
+        };
         let _ = writeln!(
             s,
-            "| [`{}`](#{}) (§{}, line {}) | {} | {} |",
+            "| [`{}`](#{}) (§{}, line {}) | {} | {} | {} |",
             c.id,
             anchor(&c.id),
             c.section,
             c.lines,
             printed.join("; "),
+            wrong,
             corrected
         );
     }

@@ -274,7 +274,7 @@ fn the_paper_report_navigates() {
         );
     }
     assert!(md.contains("revision") && md.contains("Seeds of every case"));
-    assert!(md.contains("### Errata: printed → corrected"));
+    assert!(md.contains("### Errata: printed → what is wrong → corrected"));
     assert!(!md.contains("\\facCst") && !md.contains("\\diffCst"));
 }
 
