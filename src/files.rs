@@ -126,19 +126,41 @@ pub fn prepare_output_dir(dir: &Path) -> Result<()> {
     probe.close().map_err(fail)
 }
 
-/// Write every `(name, text)` into `dir` as a set: every temporary file first, then the
-/// renames; a name that is a symbolic link is refused before anything is written.
+/// Write every `(name, text)` into `dir` as a set, replacing what is there: the old set or
+/// the new one, never a mix. Every target is checked first without following links (a link
+/// or a folder at a name is refused before anything is written); the temporaries are written;
+/// then, under an advisory lock on the folder held across processes, each is renamed onto its
+/// name, and should one rename fail the files already replaced are put back.
 pub fn write_all_atomic(dir: &Path, files: &[(String, String)]) -> Result<()> {
+    write_set(dir, files, true, None)
+}
+
+/// Write every `(name, text)` into `dir` as a set of new files: refused, with nothing
+/// written, when any name exists (a dangling link included); on a failure half-way the files
+/// already written are removed.
+pub fn write_new_set(dir: &Path, files: &[(String, String)]) -> Result<()> {
+    write_set(dir, files, false, None)
+}
+
+/// A target renamed in place, and the old file's backup (none when there was no old file).
+type Replaced = (PathBuf, Option<PathBuf>);
+
+/// [`write_all_atomic`] (`clobber`) or [`write_new_set`]; `fail_at` makes the rename of that
+/// file fail, as a full disk would (the tests' fault).
+fn write_set(
+    dir: &Path,
+    files: &[(String, String)],
+    clobber: bool,
+    fail_at: Option<usize>,
+) -> Result<()> {
     let fail = |path: &Path, message: String| Error::Write {
         path: path.to_path_buf(),
         message,
     };
     for (name, _) in files {
         let target = dir.join(name);
-        if let Ok(m) = std::fs::symlink_metadata(&target)
-            && m.file_type().is_symlink()
-        {
-            return Err(fail(&target, "is a symbolic link; not followed".into()));
+        if let Some(why) = refused(&target, clobber) {
+            return Err(fail(&target, why.into()));
         }
     }
     let mut written = Vec::new();
@@ -151,11 +173,98 @@ pub fn write_all_atomic(dir: &Path, files: &[(String, String)]) -> Result<()> {
         ));
     }
     let _commit = commit();
-    for (t, target) in written {
-        t.persist(&target, true)
-            .map_err(|e| fail(&target, e.to_string()))?;
+    let _folder =
+        folder_lock(dir).map_err(|e| fail(dir, format!("cannot lock the folder: {e}")))?;
+    let mut done: Vec<Replaced> = Vec::new();
+    for (i, (t, target)) in written.into_iter().enumerate() {
+        let step = backup(&target, clobber).and_then(|old| {
+            let renamed = match fail_at {
+                Some(k) if k == i => Err(std::io::Error::other("the rename failed (injected)")),
+                _ => t.persist(&target, clobber),
+            };
+            match renamed {
+                Ok(()) => Ok(old),
+                Err(e) => {
+                    if let Some(b) = &old {
+                        let _ = std::fs::remove_file(b);
+                    }
+                    Err(e)
+                }
+            }
+        });
+        match step {
+            Ok(old) => done.push((target, old)),
+            Err(e) => {
+                undo(done);
+                return Err(fail(
+                    &target,
+                    format!("{e}; the files already replaced were put back"),
+                ));
+            }
+        }
+    }
+    for (_, old) in done {
+        if let Some(b) = old {
+            let _ = std::fs::remove_file(b);
+        }
     }
     Ok(())
+}
+
+/// Why `target` may not be written, if it may not: a link (even dangling) or a folder at its
+/// name, or any file there when nothing may be replaced.
+fn refused(target: &Path, clobber: bool) -> Option<&'static str> {
+    let m = std::fs::symlink_metadata(target).ok()?;
+    if m.file_type().is_symlink() {
+        Some("is a symbolic link; not followed, and nothing was written")
+    } else if m.is_dir() {
+        Some("is a folder; nothing was written")
+    } else if !clobber {
+        Some("the file exists and is not overwritten; nothing was written (choose an empty folder)")
+    } else {
+        None
+    }
+}
+
+/// An exclusive advisory lock on `dir` (flock on the folder itself: no file is added to it),
+/// held until the returned handle is dropped; another process writing a set there waits.
+fn folder_lock(dir: &Path) -> std::io::Result<std::fs::File> {
+    let f = std::fs::File::open(dir)?;
+    f.lock()?;
+    Ok(f)
+}
+
+/// A hard link to the old file at `target` under a hidden name beside it, to put back should
+/// the set fail; none when there is nothing to keep.
+fn backup(target: &Path, clobber: bool) -> std::io::Result<Option<PathBuf>> {
+    if !clobber || std::fs::symlink_metadata(target).is_err() {
+        return Ok(None);
+    }
+    let name = target
+        .file_name()
+        .map(|n| n.to_string_lossy().into_owned())
+        .unwrap_or_default();
+    for n in 0..1000u32 {
+        let b = target.with_file_name(format!(".{name}.{}.{n}.old", std::process::id()));
+        match std::fs::hard_link(target, &b) {
+            Ok(()) => return Ok(Some(b)),
+            Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists => continue,
+            Err(e) => return Err(e),
+        }
+    }
+    Err(std::io::Error::other(
+        "no free name for the old file's backup",
+    ))
+}
+
+/// Put back what a failed set replaced: each old file onto its name, a new file removed.
+fn undo(done: Vec<Replaced>) {
+    for (target, old) in done.into_iter().rev() {
+        let _ = match old {
+            Some(b) => std::fs::rename(&b, &target),
+            None => std::fs::remove_file(&target),
+        };
+    }
 }
 
 /// Write `text` to `path`, which must not exist: written whole under a temporary name, then
@@ -177,4 +286,165 @@ pub fn write_new(path: &Path, text: &str, exists: impl Fn(&Path) -> Error) -> Re
         std::io::ErrorKind::AlreadyExists => exists(path),
         _ => failed(e),
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn set(tag: &str) -> Vec<(String, String)> {
+        ["a.json", "b.html", "c.svg"]
+            .iter()
+            .map(|n| (n.to_string(), format!("{tag} {n}")))
+            .collect()
+    }
+
+    fn contents(dir: &Path) -> Vec<String> {
+        let mut names: Vec<String> = std::fs::read_dir(dir)
+            .unwrap()
+            .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+            .collect();
+        names.sort();
+        names
+            .iter()
+            .map(|n| {
+                format!(
+                    "{n}: {}",
+                    std::fs::read_to_string(dir.join(n)).unwrap_or_default()
+                )
+            })
+            .collect()
+    }
+
+    #[test]
+    fn a_failure_after_the_first_rename_puts_the_old_set_back() {
+        let dir = tempfile::tempdir().unwrap();
+        write_all_atomic(dir.path(), &set("old")).unwrap();
+        let before = contents(dir.path());
+        let e = write_set(dir.path(), &set("new"), true, Some(2)).unwrap_err();
+        assert!(e.to_string().contains("put back"), "{e}");
+        assert_eq!(contents(dir.path()), before);
+        // a set into an empty folder that fails leaves it empty
+        let empty = tempfile::tempdir().unwrap();
+        assert!(write_set(empty.path(), &set("new"), true, Some(1)).is_err());
+        assert!(contents(empty.path()).is_empty());
+    }
+
+    #[test]
+    fn a_folder_or_a_dangling_link_at_a_name_refuses_before_anything_is_written() {
+        let dir = tempfile::tempdir().unwrap();
+        write_all_atomic(dir.path(), &set("old")).unwrap();
+        std::fs::remove_file(dir.path().join("c.svg")).unwrap();
+        std::fs::create_dir(dir.path().join("c.svg")).unwrap();
+        let e = write_all_atomic(dir.path(), &set("new")).unwrap_err();
+        assert!(e.to_string().contains("is a folder"), "{e}");
+        assert!(std::fs::read_to_string(dir.path().join("a.json"))
+            .unwrap()
+            .starts_with("old"));
+        let fresh = tempfile::tempdir().unwrap();
+        std::os::unix::fs::symlink(fresh.path().join("nowhere"), fresh.path().join("b.html"))
+            .unwrap();
+        assert!(write_new_set(fresh.path(), &set("new")).is_err());
+        assert_eq!(contents(fresh.path()), ["b.html: "]);
+    }
+
+    /// Run as a child process by the tests below: write a set of 40 files tagged
+    /// `ORTHOCHECK_SET_WRITER` into `ORTHOCHECK_SET_DIR`, `ORTHOCHECK_SET_ROUNDS` times.
+    #[test]
+    #[ignore = "a child process of the tests of the folder lock"]
+    fn set_writer() {
+        let (Ok(tag), Ok(dir)) = (
+            std::env::var("ORTHOCHECK_SET_WRITER"),
+            std::env::var("ORTHOCHECK_SET_DIR"),
+        ) else {
+            return;
+        };
+        let rounds: usize = std::env::var("ORTHOCHECK_SET_ROUNDS")
+            .ok()
+            .and_then(|r| r.parse().ok())
+            .unwrap_or(1);
+        for _ in 0..rounds {
+            write_all_atomic(Path::new(&dir), &many(&tag)).unwrap();
+        }
+    }
+
+    fn many(tag: &str) -> Vec<(String, String)> {
+        (0..40)
+            .map(|i| (format!("f{i:02}.svg"), format!("{tag} {i}")))
+            .collect()
+    }
+
+    fn writer(dir: &Path, tag: &str, rounds: usize) -> std::process::Child {
+        std::process::Command::new(std::env::current_exe().unwrap())
+            .args([
+                "files::tests::set_writer",
+                "--exact",
+                "--ignored",
+                "--quiet",
+            ])
+            .env("ORTHOCHECK_SET_WRITER", tag)
+            .env("ORTHOCHECK_SET_DIR", dir)
+            .env("ORTHOCHECK_SET_ROUNDS", rounds.to_string())
+            .stdout(std::process::Stdio::null())
+            .spawn()
+            .unwrap()
+    }
+
+    /// The tags of the visible files of `dir` (temporaries and backups are hidden).
+    fn tags(dir: &Path) -> std::collections::BTreeSet<String> {
+        contents(dir)
+            .iter()
+            .filter(|l| !l.starts_with('.'))
+            .filter_map(|l| Some(l.split(": ").nth(1)?.split(' ').next()?.to_string()))
+            .collect()
+    }
+
+    /// While another process holds the folder's lock, a writer renames nothing: it waits,
+    /// then writes its whole set.
+    #[test]
+    fn a_writer_waits_for_the_folder_lock_of_another_process() {
+        let dir = tempfile::tempdir().unwrap();
+        write_all_atomic(dir.path(), &many("old")).unwrap();
+        let held = folder_lock(dir.path()).unwrap();
+        let mut child = writer(dir.path(), "new", 1);
+        // its temporaries written, the writer would rename next: it must wait instead
+        let temporaries = || {
+            contents(dir.path())
+                .iter()
+                .filter(|l| l.contains(".tmp"))
+                .count()
+        };
+        let start = std::time::Instant::now();
+        while temporaries() < 40 && start.elapsed() < std::time::Duration::from_secs(30) {
+            std::thread::sleep(std::time::Duration::from_millis(5));
+        }
+        assert_eq!(temporaries(), 40);
+        std::thread::sleep(std::time::Duration::from_millis(300));
+        assert!(
+            child.try_wait().unwrap().is_none(),
+            "the writer did not wait"
+        );
+        assert_eq!(tags(dir.path()), ["old".to_string()].into());
+        drop(held);
+        assert!(child.wait().unwrap().success());
+        assert_eq!(tags(dir.path()), ["new".to_string()].into());
+    }
+
+    #[test]
+    fn two_processes_writing_one_folder_leave_one_whole_set() {
+        let dir = tempfile::tempdir().unwrap();
+        let (mut x, mut y) = (writer(dir.path(), "x", 100), writer(dir.path(), "y", 100));
+        // a reader holding the folder's lock sees one whole set at every look
+        let mut looks = 0;
+        while x.try_wait().unwrap().is_none() || y.try_wait().unwrap().is_none() {
+            let _held = folder_lock(dir.path()).unwrap();
+            let seen = tags(dir.path());
+            assert!(seen.len() <= 1, "a mix of sets: {seen:?}");
+            looks += 1;
+        }
+        assert!(x.wait().unwrap().success() && y.wait().unwrap().success());
+        assert!(looks > 0);
+        assert_eq!(tags(dir.path()).len(), 1);
+        assert_eq!(contents(dir.path()).len(), 40, "{:?}", contents(dir.path()));
+    }
 }

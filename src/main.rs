@@ -7,6 +7,7 @@
 
 mod cli;
 
+use std::io::Write as _;
 use std::process::ExitCode;
 
 use clap::Parser;
@@ -38,7 +39,8 @@ fn main() -> ExitCode {
         // a reader that stopped reading is the Unix way of saying "enough"
         Ok(()) | Err(Error::ClosedOutput) => ExitCode::SUCCESS,
         Err(e) => {
-            eprintln!("error: {e}");
+            // a closed standard error leaves the exit code to say it
+            let _ = writeln!(std::io::stderr(), "error: {e}");
             ExitCode::from(exit_code(&e))
         }
     }

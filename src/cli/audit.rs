@@ -1,7 +1,6 @@
 //! `orthocheck audit`: the paper's printed formulas, machine-checked.
 
 use std::fmt::Write as _;
-use std::io::Write as _;
 use std::path::{Path, PathBuf};
 
 use orthocheck::check::{ClaimResult, Verdict};
@@ -94,23 +93,15 @@ fn export(loaded: &[Case], a: &Args, dir: &Path) -> Result<(), Error> {
         message: e.to_string(),
     };
     std::fs::create_dir_all(dir).map_err(|e| write_err(dir, &e))?;
-    if let Some(s) = scripts.iter().find(|s| dir.join(&s.file).exists()) {
-        return Err(write_err(
-            &dir.join(&s.file),
-            &"the file exists and is not overwritten; nothing was written (choose an empty folder)",
-        ));
-    }
+    // every name checked first without following links; nothing written on refusal
+    let files: Vec<(String, String)> = scripts
+        .iter()
+        .map(|s| (s.file.clone(), s.source.clone()))
+        .collect();
+    orthocheck::files::write_new_set(dir, &files)?;
     let mut listing = String::new();
     for s in &scripts {
-        let path = dir.join(&s.file);
-        let mut f = std::fs::OpenOptions::new()
-            .write(true)
-            .create_new(true)
-            .open(&path)
-            .map_err(|e| write_err(&path, &e))?;
-        f.write_all(s.source.as_bytes())
-            .map_err(|e| write_err(&path, &e))?;
-        listing.push_str(&format!("{}  {}\n", s.id, path.display()));
+        listing.push_str(&format!("{}  {}\n", s.id, dir.join(&s.file).display()));
     }
     out(&listing)
 }

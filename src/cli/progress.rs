@@ -7,7 +7,7 @@
 //! "interrupted" and exits 130 (128 + SIGINT, the shell's convention) without leaving a
 //! half-written output. SIGTERM and SIGHUP are handled the same way.
 
-use std::io::IsTerminal as _;
+use std::io::{IsTerminal as _, Write as _};
 
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 
@@ -23,7 +23,8 @@ pub const INTERRUPTED: i32 = 130;
 pub fn on_interrupt_stop() {
     let _ = ctrlc::set_handler(|| {
         orthocheck::files::remove_temporaries();
-        eprintln!("\ninterrupted");
+        // a closed standard error must not keep the command from stopping
+        let _ = writeln!(std::io::stderr(), "\ninterrupted");
         std::process::exit(INTERRUPTED);
     });
     let _ = signal_hook::flag::register(

@@ -37,7 +37,12 @@ pub fn run(args: Args) -> Result<(), Error> {
     let show = || std::io::stderr().is_terminal() && started.elapsed().as_secs_f64() > 1.0;
     let progress = |i: usize, id: &str| {
         if show() {
-            eprint!("\r{}/{} cases ({id})            ", i + 1, all.len());
+            let _ = write!(
+                std::io::stderr(),
+                "\r{}/{} cases ({id})            ",
+                i + 1,
+                all.len()
+            );
             let _ = std::io::stderr().flush();
         }
     };
@@ -46,7 +51,7 @@ pub fn run(args: Args) -> Result<(), Error> {
     let run = orthocheck::claims::run_paper(&inputs, &progress)?;
     let r = orthocheck::report::Report::from_run(run, prov).with_paper(inputs.paper.clone());
     if show() {
-        eprintln!();
+        let _ = writeln!(std::io::stderr());
     }
     let files = r.files()?;
     // the text guard: a number formatted as `NaN` or `inf` anywhere in the report

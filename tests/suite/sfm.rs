@@ -239,6 +239,42 @@ fn scene_of(points: Vec<Vector3<f64>>, rotations: &[Rotation3<f64>]) -> Tracks {
     .tracks()
 }
 
+/// Identical frames, or frames that differ by an in-plane motion only, are refused with gaps
+/// as without them: the test runs on what is observed (a quarter of the entries missing, and
+/// most of them), not on a "reconstruction" that fits the flat data.
+#[test]
+fn degenerate_motion_is_refused_with_gaps_too() {
+    let body = Scene::random(12, 1, 7).body.points;
+    let spins = [
+        Rotation3::from_euler_angles(0.0, 0.0, 0.4),
+        Rotation3::from_euler_angles(0.0, 0.0, 1.1),
+        Rotation3::from_euler_angles(0.0, 0.0, -0.7),
+        Rotation3::identity(),
+    ];
+    let tracks = scene_of(body.clone(), &spins);
+    for (every, keep) in [(4, 3), (5, 2)] {
+        // entry (frame f, point p) missing where (f + p) mod `every` ≥ `keep`
+        let obs = orthocheck::sfm::Observations::seen_where(&tracks, |f, p| (f + p) % every < keep);
+        assert!(obs.complete().is_none());
+        let e =
+            orthocheck::sfm::reconstruct(&obs, &orthocheck::sfm::Options::default()).unwrap_err();
+        assert!(
+            matches!(e, Error::Degenerate(Degenerate::InPlaneMotion { .. })),
+            "{every}/{keep}: {e}"
+        );
+    }
+    // the control: the same gaps in views that see depth reconstruct
+    let turns = [
+        Rotation3::from_euler_angles(0.3, 0.5, 0.1),
+        Rotation3::from_euler_angles(-0.4, 0.2, 0.7),
+        Rotation3::from_euler_angles(0.6, -0.3, 0.2),
+        Rotation3::from_euler_angles(-0.2, -0.6, -0.4),
+    ];
+    let seen = scene_of(body, &turns);
+    let obs = orthocheck::sfm::Observations::seen_where(&seen, |f, p| (f + p) % 4 < 3);
+    assert!(orthocheck::sfm::reconstruct(&obs, &orthocheck::sfm::Options::default()).is_ok());
+}
+
 #[test]
 fn degenerate_inputs_are_named() {
     let turns = [

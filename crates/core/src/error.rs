@@ -5,12 +5,21 @@ use std::path::PathBuf;
 
 /// A malformed formula transcription.
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
-#[error("at character {position}: {message}")]
 pub struct ParseError {
-    /// Character offset into the text (`usize::MAX` at the end).
+    /// Character offset into the text (`usize::MAX`: at its end, or nowhere in particular).
     pub position: usize,
     /// What is wrong.
     pub message: String,
+}
+
+impl fmt::Display for ParseError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        // a position only where there is one: the sentinel says "past the last character"
+        match self.position {
+            usize::MAX => write!(f, "at the end: {}", self.message),
+            p => write!(f, "at character {p}: {}", self.message),
+        }
+    }
 }
 
 /// Where in an input file something is wrong.

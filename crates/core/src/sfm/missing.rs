@@ -475,6 +475,12 @@ pub fn reconstruct(obs: &Observations, seed: u64) -> Result<Reconstruction, Erro
             few.join(", ")
         )));
     }
+    if let Some((first, second)) = same_view(&views) {
+        return Err(Error::Degenerate(super::Degenerate::InPlaneMotion {
+            first,
+            second,
+        }));
+    }
     let (fact, start) = factorise(&views, unit.frames.len(), seed)?;
     let mut rec = metric_of(&fact, &views, &unit.names)?;
     rec.method.insert(
@@ -489,6 +495,51 @@ pub fn reconstruct(obs: &Observations, seed: u64) -> Result<Reconstruction, Erro
     rec.centre();
     units.back(&mut rec);
     Ok(rec)
+}
+
+/// One point's images in two frames.
+type ImagePair = (Vector2<f64>, Vector2<f64>);
+
+/// Frames that are one view up to in-plane motions, judged on what is observed: every pair of
+/// frames sharing at least three points differs by an orthogonal map of the image plane on
+/// those points (`factor::in_plane`, at rounding level), so no depth is seen. The first such
+/// pair (1-based), as the complete-tracks path names it; `None` when some pair sees depth or
+/// no pair shares three points.
+pub(crate) fn same_view(views: &[Images]) -> Option<(usize, usize)> {
+    // the shared images of every pair of frames, point by point: Σ (track length)² entries,
+    // the work bundle adjustment's limit already bounds
+    let mut pairs: std::collections::BTreeMap<(usize, usize), Vec<ImagePair>> =
+        std::collections::BTreeMap::new();
+    for v in views {
+        for (i, (a, ya)) in v.iter().enumerate() {
+            for (b, yb) in &v[i + 1..] {
+                let (key, pair) = if a < b {
+                    ((*a, *b), (*ya, *yb))
+                } else {
+                    ((*b, *a), (*yb, *ya))
+                };
+                pairs.entry(key).or_default().push(pair);
+            }
+        }
+    }
+    let mut first = None;
+    for ((a, b), shared) in pairs.iter().filter(|(_, s)| s.len() >= 3) {
+        let n = shared.len() as f64;
+        let ca = shared.iter().map(|s| s.0).sum::<Vector2<f64>>() / n;
+        let cb = shared.iter().map(|s| s.1).sum::<Vector2<f64>>() / n;
+        let w = DMatrix::from_fn(4, shared.len(), |r, c| {
+            let (ya, yb) = shared[c];
+            match r {
+                0 | 1 => ya[r] - ca[r],
+                _ => yb[r - 2] - cb[r - 2],
+            }
+        });
+        if !super::factor::in_plane(&w, 0, 1) {
+            return None;
+        }
+        first.get_or_insert((a + 1, b + 1));
+    }
+    first
 }
 
 /// The affine factorisation and the name of its start.

@@ -359,6 +359,14 @@ pub fn reconstruct(obs: &Observations, options: &Options) -> Result<Outcome, Err
 /// block grown when it fails; with fewer missing, the other way round. `method` names the
 /// path taken, and why the first failed.
 fn with_gaps(used: &Observations, options: &Options) -> Result<Reconstruction, Error> {
+    // identical frames, or frames differing in-plane only, judged on what is observed: the
+    // same refusal as for complete tracks, whichever path would start
+    if let Some((first, second)) = missing::same_view(&judge::views(used)) {
+        return Err(Error::Degenerate(Degenerate::InPlaneMotion {
+            first,
+            second,
+        }));
+    }
     let seed = options.seed;
     let cells = used.frames.len() * used.names.len();
     let mostly_missing = 2 * used.count() < cells;
