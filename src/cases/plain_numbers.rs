@@ -172,13 +172,15 @@ impl Tagged {
     }
 
     /// The refusal of a marked scalar at (`line`, `column`) of the rewritten text, if the
-    /// deserializer refused one there.
+    /// deserializer refused one there: the position must fall within the marked scalar as
+    /// rewritten (its tag, quotes and text), not merely after one on the same line.
     pub fn refusal(&self, line: usize, column: usize) -> Option<String> {
         let m = self
             .marked
             .iter()
             .filter(|m| m.line == line && m.column <= column)
-            .max_by_key(|m| m.column)?;
+            .max_by_key(|m| m.column)
+            .filter(|m| column <= m.column + TAG.chars().count() + m.written.chars().count() + 2)?;
         Some(if m.quoted {
             format!(
                 "{} is quoted text: a number here is written without quotes",

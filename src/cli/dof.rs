@@ -34,7 +34,7 @@ pub struct Args {
     )]
     max_frames: usize,
     /// Seed of the generic scene.
-    #[arg(long, allow_negative_numbers = true, default_value_t = 1)]
+    #[arg(long, allow_negative_numbers = true, value_parser = super::SeedParser, default_value_t = 1)]
     seed: u64,
     /// JSON output.
     #[arg(long)]

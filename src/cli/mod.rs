@@ -75,6 +75,44 @@ impl Command {
 static COMMAND: std::sync::OnceLock<&'static str> = std::sync::OnceLock::new();
 
 /// The running subcommand's name (`orthocheck` before one runs).
+/// A seed argument: a whole number, and a value that is not UTF-8 named by its argument
+/// (clap's own check says only that some argument is not).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct SeedParser;
+
+impl clap::builder::TypedValueParser for SeedParser {
+    type Value = u64;
+
+    fn parse_ref(
+        &self,
+        cmd: &clap::Command,
+        arg: Option<&clap::Arg>,
+        value: &std::ffi::OsStr,
+    ) -> Result<u64, clap::Error> {
+        let name = arg.map_or_else(|| "the seed".to_string(), |a| format!("'--{}'", a.get_id()));
+        let text = value.to_str().ok_or_else(|| {
+            clap::Error::raw(
+                clap::error::ErrorKind::InvalidValue,
+                format!(
+                    "invalid value for {name}: not valid UTF-8 (a whole number from 0 to {})\n",
+                    u64::MAX
+                ),
+            )
+            .with_cmd(cmd)
+        })?;
+        text.parse().map_err(|_| {
+            clap::Error::raw(
+                clap::error::ErrorKind::InvalidValue,
+                format!(
+                    "invalid value '{text}' for {name}: a whole number from 0 to {}\n",
+                    u64::MAX
+                ),
+            )
+            .with_cmd(cmd)
+        })
+    }
+}
+
 fn command_name() -> &'static str {
     COMMAND.get().copied().unwrap_or("orthocheck")
 }

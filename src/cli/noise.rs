@@ -25,7 +25,7 @@ pub struct Args {
     #[arg(long, allow_negative_numbers = true)]
     trials: Option<usize>,
     /// Seed (default: the case's).
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_negative_numbers = true, value_parser = super::SeedParser)]
     seed: Option<u64>,
     /// Noise model (default: both).
     #[arg(long, value_enum)]

@@ -33,7 +33,7 @@ pub struct Args {
     threshold: Option<f64>,
     /// Seed of --robust's sample generator, and of the random starts of variable projection
     /// (tracks with most entries missing, tried when the chain of frame pairs breaks).
-    #[arg(long, allow_negative_numbers = true, default_value_t = DEFAULT_SEED)]
+    #[arg(long, allow_negative_numbers = true, value_parser = super::SeedParser, default_value_t = DEFAULT_SEED)]
     seed: u64,
     /// Skip the bundle adjustment (Tomasi–Kanade only).
     #[arg(long)]

@@ -23,7 +23,7 @@ pub struct Args {
     #[arg(long, allow_negative_numbers = true)]
     frames: usize,
     /// Seed.
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_negative_numbers = true, value_parser = super::SeedParser)]
     seed: u64,
     /// Relative error up to ε on every image coordinate.
     #[arg(long, allow_negative_numbers = true)]

@@ -305,6 +305,16 @@ fn bad_usage_is_exit_2_and_names_the_option() {
         );
         assert!(out.stdout.is_empty(), "{args:?}");
     }
+    // a seed that is not UTF-8 is named too (clap's own check names no argument)
+    use std::os::unix::ffi::OsStrExt as _;
+    let out = Command::new(env!("CARGO_BIN_EXE_orthocheck"))
+        .args(["synth", "--points", "3", "--frames", "3", "--seed"])
+        .arg(std::ffi::OsStr::from_bytes(b"\xff"))
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(err.contains("'--seed'") && err.contains("UTF-8"), "{err}");
     let dir = tempfile::tempdir().unwrap();
     let file = dir.path().join("a-file");
     std::fs::write(&file, "mine").unwrap();

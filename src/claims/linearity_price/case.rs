@@ -122,7 +122,19 @@ fn body(b: &LinearityBody, at: &str, v: &Validator) -> Result<()> {
             &format!("{at}.random_points"),
             format!("{p} points: a random body takes 3 to {MAX_RANDOM_POINTS}"),
         ),
-        (3 | 6, None) if b.squares.is_empty() || b.squares.len() == b.lengths.len() => Ok(()),
+        (3 | 6, None) if b.squares.is_empty() || b.squares.len() == b.lengths.len() => {
+            // the body must exist (a triangle, or four points in 3-D), refused here with its
+            // field rather than when the study runs
+            let lengths: Vec<f64> = b.lengths.iter().map(|p| p.to_f64()).collect();
+            let squares: Vec<f64> = b.squares.iter().map(|p| p.to_f64()).collect();
+            match crate::studies::noise::body_of(&lengths, &squares) {
+                Ok(_) => Ok(()),
+                Err(e) => v.err(
+                    &format!("{at}.lengths"),
+                    e.to_string().trim_start_matches("invalid input: ").into(),
+                ),
+            }
+        }
         (_, None) => v.err(
             &format!("{at}.lengths"),
             "a printed body has 3 or 6 lengths (and as many squares, if any)".into(),
