@@ -112,6 +112,21 @@ fn parse_csv(text: &str, path: &Path) -> Result<Observations> {
             names.push(n.clone());
         }
     }
+    // the dense table's size, checked before it is made
+    let cells = rows.len().saturating_mul(names.len());
+    if cells > crate::limits::OBSERVATION_CELLS {
+        return Err(located(
+            path,
+            Some(hline),
+            "frame",
+            format!(
+                "{} frames × {} points = {cells} cells, more than the limit of {} (docs/limits.md)",
+                rows.len(),
+                names.len(),
+                crate::limits::OBSERVATION_CELLS
+            ),
+        ));
+    }
     let frames = rows
         .iter()
         .map(|r| {

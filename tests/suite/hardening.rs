@@ -468,3 +468,36 @@ fn case_work_beyond_its_limit_is_refused_at_the_field() {
         "more than the limit of 5000",
     );
 }
+
+/// A CSV of 20,000 rows, each a new frame and a new point, would expand into a dense table of
+/// 4 × 10⁸ cells: it is refused by its cell count, naming the file, before the table is made.
+#[test]
+fn a_sparse_csv_is_refused_by_its_cell_count_before_the_table_is_made() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("sparse.csv");
+    let mut text = String::from("frame,point,x,y\n");
+    for i in 0..20_000 {
+        text.push_str(&format!("{i},p{i},0.{i},1.{i}\n"));
+    }
+    std::fs::write(&path, text).unwrap();
+    let out = orthocheck(&["reconstruct", "--input", path.to_str().unwrap()]);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(err.contains("sparse.csv") && err.contains("cells"), "{err}");
+}
+
+/// An error printed to a closed standard error still ends with the documented exit code
+/// (no panic, no 101), and so does an interrupt.
+#[test]
+fn a_closed_standard_error_keeps_the_exit_code() {
+    let out = Command::new("bash")
+        .args([
+            "-c",
+            "exec 2>&-; exec \"$0\" solve --input no-such-file.yaml",
+            env!("CARGO_BIN_EXE_orthocheck"),
+        ])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    assert!(out.stdout.is_empty());
+}

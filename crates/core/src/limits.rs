@@ -111,6 +111,10 @@ pub const BUNDLE_FRAMES: usize = 200;
 /// camera system is dense, 8k × 8k, (8k)³/3 multiply-adds per step (k = 100: 1.7 × 10⁸);
 /// beyond it `reconstruct` grows the largest complete block instead, and says why.
 pub const VARPRO_FRAMES: usize = 100;
+/// Cells (frames × points) of tracks with gaps: they are held as a dense table of optional
+/// images (24 bytes a cell, so 480 MB at the limit), so a CSV whose rows each bring a new frame
+/// and a new point is refused by this count before the table is made.
+pub const OBSERVATION_CELLS: usize = 20_000_000;
 /// RANSAC samples at most (each costs one point intersection per point and frame).
 pub const RANSAC_SAMPLES: usize = 10_000;
 /// Observations (points × frames) of `reconstruct --robust`: every sample intersects every
