@@ -124,14 +124,66 @@ pub fn verify<C: Schema>(
     latex: &LatexSource,
     cases: &[super::Case<C>],
 ) -> Result<Verification> {
+    let macros = verify_paper(origin, paper, latex)?;
+    let mut v = Verification {
+        sha256: latex.sha256.clone(),
+        sections: paper.sections.len(),
+        macros,
+        labels: paper.labels.len(),
+        quotes: 0,
+        verbatim: 0,
+        normalised: 0,
+        facts: 0,
+        disagreements: Vec::new(),
+    };
+    let canonical = Canonical::of_source(&latex.text);
+    for (path, text) in origin.case_texts()? {
+        let tree: serde_json::Value = parse_yaml(&text, &path)?;
+        let case = tree["id"].as_str().unwrap_or_default().to_string();
+        let file = file_name(&path);
+        let disagree = |claim, field, message| Disagreement {
+            file: file.clone(),
+            case: case.clone(),
+            claim,
+            field,
+            message,
+        };
+        for q in quoted(&tree) {
+            v.quotes += 1;
+            match locate(&latex.text, &canonical, &q.lines, &q.quote) {
+                Found::Verbatim => v.verbatim += 1,
+                Found::Normalised => v.normalised += 1,
+                Found::Not(m) => {
+                    v.disagreements
+                        .push(disagree(q.claim, format!("{}.quote", q.field), m))
+                }
+            }
+        }
+        for check in cases
+            .iter()
+            .filter(|c| c.id == case)
+            .flat_map(|c| c.check.source_checks())
+        {
+            v.facts += 1;
+            if let Some(m) = fact_fails(&latex.text, &check.fact) {
+                v.disagreements
+                    .push(disagree(Some(check.claim), check.field, m));
+            }
+        }
+    }
+    Ok(v)
+}
+
+/// The section titles at their lines, the macro definitions verbatim and the label names of
+/// `paper.yml` in the source: a miss is an error at its field. The number of macros checked.
+fn verify_paper(origin: &CaseOrigin, paper: &Paper, latex: &LatexSource) -> Result<usize> {
     let (paper_path, paper_text) = origin.file(PAPER_FILE)?;
     let lines = &latex.text.lines;
+    let refuse = |field: &str, message: String| invalid(&paper_text, &paper_path, field, message);
     for (i, s) in paper.sections.iter().enumerate() {
         let line = lines.get((s.line as usize).wrapping_sub(1));
         if !line.is_some_and(|l| l.contains("section") && l.contains(&s.title)) {
-            return Err(invalid(
-                &paper_text,
-                &paper_path,
+            return Err(refuse(
                 &format!("sections[{i}]"),
                 format!(
                     "line {} of {} is not the section \"{}\"",
@@ -151,9 +203,7 @@ pub fn verify<C: Schema>(
         .map(|d| squash(&format!("\\newcommand{d}")))
         .collect();
     if let Some(d) = defs.iter().find(|d| !whole.contains(d.as_str())) {
-        return Err(invalid(
-            &paper_text,
-            &paper_path,
+        return Err(refuse(
             "macros",
             format!("not in {}: {d}", latex.path.display()),
         ));
@@ -163,59 +213,12 @@ pub fn verify<C: Schema>(
         .keys()
         .find(|l| !whole.contains(&format!("\\label{{{l}}}")))
     {
-        return Err(invalid(
-            &paper_text,
-            &paper_path,
+        return Err(refuse(
             &format!("labels.{l}"),
             format!("`{l}` is not a \\label of {}", latex.path.display()),
         ));
     }
-    let mut v = Verification {
-        sha256: latex.sha256.clone(),
-        sections: paper.sections.len(),
-        macros: defs.len(),
-        labels: paper.labels.len(),
-        quotes: 0,
-        verbatim: 0,
-        normalised: 0,
-        facts: 0,
-        disagreements: Vec::new(),
-    };
-    let canonical = Canonical::of_source(&latex.text);
-    for (path, text) in origin.case_texts()? {
-        let tree: serde_json::Value = parse_yaml(&text, &path)?;
-        let case = tree["id"].as_str().unwrap_or_default().to_string();
-        let file = file_name(&path);
-        for q in quoted(&tree) {
-            v.quotes += 1;
-            match locate(&latex.text, &canonical, &q.lines, &q.quote) {
-                Found::Verbatim => v.verbatim += 1,
-                Found::Normalised => v.normalised += 1,
-                Found::Not(message) => v.disagreements.push(Disagreement {
-                    file: file.clone(),
-                    case: case.clone(),
-                    claim: q.claim,
-                    field: format!("{}.quote", q.field),
-                    message,
-                }),
-            }
-        }
-        if let Some(c) = cases.iter().find(|c| c.id == case) {
-            for check in c.check.source_checks() {
-                v.facts += 1;
-                if let Some(message) = fact_fails(&latex.text, &check.fact) {
-                    v.disagreements.push(Disagreement {
-                        file: file.clone(),
-                        case: case.clone(),
-                        claim: Some(check.claim),
-                        field: check.field,
-                        message,
-                    });
-                }
-            }
-        }
-    }
-    Ok(v)
+    Ok(defs.len())
 }
 
 fn file_name(path: &Path) -> String {

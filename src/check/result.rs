@@ -685,15 +685,8 @@ macro_rules! exact_from {
         }
     )*};
 }
-exact_from!(
-    u64,
-    u32,
-    i64,
-    i32,
-    u8,
-    num_bigint::BigInt,
-    num_rational::BigRational
-);
+#[rustfmt::skip]
+exact_from!(u64, u32, i64, i32, u8, num_bigint::BigInt, num_rational::BigRational);
 
 impl From<&String> for Value {
     fn from(t: &String) -> Value {

@@ -2,6 +2,9 @@
 
 use super::*;
 
+/// A group's opening brace.
+const OPEN: char = '{';
+
 /// Step 6: tokens into canonical characters. A work stack instead of recursion, so that
 /// deeply nested groups cannot exhaust the call stack.
 pub(super) fn render(toks: &[Tok]) -> Vec<CChar> {
@@ -75,7 +78,7 @@ impl<'a> Renderer<'a> {
                     Flow::Next(i + 1)
                 }
             },
-            Text::Ch('_') if toks.get(i + 1).is_some_and(|t| t.is('{')) && i + 1 < end => {
+            Text::Ch('_') if toks.get(i + 1).is_some_and(|t| t.is(OPEN)) && i + 1 < end => {
                 let a = self.arg(i + 1, end);
                 self.subscript += 1;
                 Flow::Then(

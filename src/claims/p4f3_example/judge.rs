@@ -408,6 +408,37 @@ fn figure_alternative<'b>(
     (r, by.is_some())
 }
 
+/// The readings of "the sensitivity to measurement errors" as rows of a table: the median
+/// error at the smallest printed level and the decision of each.
+fn reading_rows<'b>(
+    mut r: crate::check::ClaimBuilder<'b>,
+    each: &[(usize, Option<f64>, bool)],
+) -> crate::check::ClaimBuilder<'b> {
+    for (m, median, ok) in each {
+        let row = metric_phrase(*m);
+        r = r
+            .detail_as(
+                &format!("{row}: median at the smallest level"),
+                median.unwrap_or(f64::MAX),
+                Role::Entry {
+                    table: "readings".into(),
+                    row: row.into(),
+                    column: "median at the smallest printed level".into(),
+                },
+            )
+            .detail_as(
+                &format!("{row}: decision"),
+                Value::label(if *ok { "holds" } else { "fails" }),
+                Role::Entry {
+                    table: "readings".into(),
+                    row: row.into(),
+                    column: "decision".into(),
+                },
+            );
+    }
+    r
+}
+
 fn conditioning_result(
     b: &ResultBuilder,
     case: &P4f3ExampleCase,
@@ -448,28 +479,7 @@ fn conditioning_result(
         .detail_as("trials per level", case.trials, Role::Trials)
         .detail("seed", case.seed)
         .detail("reading, argued from the sentence's words", Value::label("\"the sensitivity to measurement errors\" names neither squares nor lengths nor how the edges' errors combine: all four readings are read, each against 10 ε at the smallest printed level"));
-    for (m, median, ok) in &each {
-        let row = metric_phrase(*m);
-        r = r
-            .detail_as(
-                &format!("{row}: median at the smallest level"),
-                median.unwrap_or(f64::MAX),
-                Role::Entry {
-                    table: "readings".into(),
-                    row: row.into(),
-                    column: "median at the smallest printed level".into(),
-                },
-            )
-            .detail_as(
-                &format!("{row}: decision"),
-                Value::label(if *ok { "holds" } else { "fails" }),
-                Role::Entry {
-                    table: "readings".into(),
-                    row: row.into(),
-                    column: "decision".into(),
-                },
-            );
-    }
+    r = reading_rows(r, &each);
     for (eps, pred, res) in &c.levels {
         r = r
             .detail("ε", *eps)
