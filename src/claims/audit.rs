@@ -4,7 +4,7 @@
 use super::Case;
 use crate::check::ClaimResult;
 use crate::check::ResultBuilder;
-use crate::claims::formula_audit::Place;
+use crate::claims::shared::Place;
 use crate::error::Result;
 
 /// What an audit item shows beside its claim result.

@@ -6,7 +6,7 @@ use std::path::{Path, PathBuf};
 
 use orthocheck::check::{ClaimResult, Verdict};
 use orthocheck::claims::audit::{Shown, Wanted};
-use orthocheck::claims::formula_audit::Place;
+use orthocheck::claims::shared::Place;
 use orthocheck::claims::twofold_squared::TwofoldAudit;
 use orthocheck::claims::twofold_squared::TwofoldCase;
 use orthocheck::claims::{Case, Check};

@@ -4,8 +4,6 @@ mod case;
 mod judge;
 pub mod request;
 
-pub(crate) use judge::check_runs_of_body;
-
 pub use case::*;
 
 use crate::cases::Validator;

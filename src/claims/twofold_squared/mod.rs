@@ -50,7 +50,7 @@ impl ClaimKind for TwofoldCase {
         }
         let (r, derived) = judge::audit_item(b, self)?;
         let shown = crate::claims::audit::Shown {
-            place: crate::claims::formula_audit::Place {
+            place: crate::claims::shared::Place {
                 section: source.section.clone(),
                 label: source.label.clone(),
                 macros: Vec::new(),
