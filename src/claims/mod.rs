@@ -27,6 +27,7 @@ pub mod p3f3_example;
 pub mod p3f4_census;
 pub mod p4f3_census;
 pub mod p4f3_example;
+pub mod rerun;
 pub mod restatements;
 pub mod shared;
 pub mod solution_count;
@@ -88,6 +89,24 @@ pub trait ClaimKind {
         _wanted: audit::Wanted,
     ) -> Result<Vec<(ClaimResult, audit::Shown)>> {
         Ok(Vec::new())
+    }
+
+    /// What `orthocheck audit ID` shows in full when `ID` names the case, instead of its
+    /// items. Most kinds show their items alone.
+    fn audit_in_full(&self) -> Option<Result<audit::InFull>> {
+        None
+    }
+
+    /// The SymPy scripts `orthocheck audit --export` writes, one per identity the kind
+    /// audits. Most kinds export none.
+    fn sympy_scripts(&self) -> Result<Vec<audit::Script>> {
+        Ok(Vec::new())
+    }
+
+    /// The noise runs `orthocheck noise` reruns with the user's levels, trials and seed.
+    /// Most kinds have none.
+    fn noise_runs(&self) -> Option<Result<rerun::NoiseRuns>> {
+        None
     }
 
     /// The facts of the source the case records beyond its quotes (the errata's pictures and

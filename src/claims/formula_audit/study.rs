@@ -26,7 +26,7 @@ mod expanded;
 mod export;
 mod reading;
 pub use expanded::{expanded, ExpandedFinding, Screened};
-pub use export::{sympy_scripts, Script};
+pub use export::sympy_scripts;
 use reading::{Reading, Text};
 
 /// Which form of a formula was accepted.

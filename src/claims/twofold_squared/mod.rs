@@ -38,6 +38,10 @@ impl ClaimKind for TwofoldCase {
         true
     }
 
+    fn audit_in_full(&self) -> Option<Result<crate::claims::audit::InFull>> {
+        Some(judge::audit(self).map(crate::claims::audit::InFull::TwofoldSquared))
+    }
+
     fn audit_items(
         &self,
         b: &ResultBuilder,
