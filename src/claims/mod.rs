@@ -3,7 +3,7 @@
 //! of [`crate::studies`]), its judge and its figures. A kind's folder is named as its case
 //! files name it under `check:`.
 //!
-//! Every kind implements [`ClaimKind`] and is registered once, in the [`kinds!`] list below:
+//! Every kind implements [`ClaimKind`] and is registered once, in the `kinds!` list below:
 //! that list is the only place where the kinds are enumerated.
 
 use serde::Deserialize;
