@@ -14,8 +14,8 @@ use std::fmt::Write as _;
 
 mod key;
 
-use super::html::escape;
 use crate::check::figure::{Figure, Layer, Plot, Shape, Style, CLOUD};
+use crate::mathtext::escape;
 use crate::numfmt::sig;
 use key::{draw_labels, draw_legend};
 

@@ -1,6 +1,7 @@
 //! The floors of docs/architecture.md, read from the sources: every path a file names
 //! (`crate::…`, `super::…`, and `orthocheck::…` in the binary) runs down a floor or sideways
-//! along an edge the table allows, never up; and no kind's folder names another kind.
+//! along an edge the table allows, never up; no kind's folder names another kind; and inside
+//! `report` the shared presentation lies below the outputs, without a circle.
 //! Comments and string literals are not read, so a doc link is not an import.
 
 use std::path::Path;
@@ -45,6 +46,25 @@ const SIDEWAYS: &[(&str, &str)] = &[
     ("model", "error"),
     ("input", "cases"),
 ];
+
+/// The floors inside `report`, bottom first: the report as data, the shared presentation,
+/// then one module per output (`mod.rs` binds them into files, above them all).
+const REPORT_FLOORS: &[(&str, u8)] = &[
+    ("model", 0),
+    ("math", 0),
+    ("values", 1),
+    ("layout", 1),
+    ("finite", 1),
+    ("evidence", 2),
+    ("words", 2),
+    ("style", 2),
+    ("svg", 3),
+    ("html", 3),
+    ("markdown", 3),
+];
+
+/// Names between outputs the report allows: the page embeds the figures' SVG.
+const REPORT_SIDEWAYS: &[(&str, &str)] = &[("html", "svg")];
 
 /// Which crate a source file belongs to, and its module path within it.
 #[derive(Clone, Copy, PartialEq)]
@@ -317,6 +337,44 @@ fn kind_violations(src: &Source, kinds: &[String]) -> Vec<String> {
         .collect()
 }
 
+/// The floor violations inside `report`: a module naming a module of its own floor (but the
+/// [`REPORT_SIDEWAYS`] pairs) or above, or one the table does not know.
+fn report_violations(src: &Source) -> Vec<String> {
+    let module = module_path(src.path);
+    let own = match module.as_slice() {
+        [report, own, ..] if report == "report" && src.krate == Crate::Top => own,
+        _ => return Vec::new(),
+    };
+    let floor = |m: &str| REPORT_FLOORS.iter().find(|f| f.0 == m).map(|f| f.1);
+    let Some(from) = floor(own) else {
+        return vec![format!(
+            "{}: report module `{own}` has no floor in the table",
+            src.path
+        )];
+    };
+    let mut out = Vec::new();
+    for path in named_paths(src) {
+        let [report, to_name, ..] = path.as_slice() else {
+            continue;
+        };
+        if report != "report" || to_name == own {
+            continue;
+        }
+        let sideways = REPORT_SIDEWAYS.contains(&(own.as_str(), to_name.as_str()));
+        match floor(to_name) {
+            Some(to) if to < from || sideways => {}
+            Some(to) => out.push(format!(
+                "{}: report's `{own}` (floor {from}) names `{}` (floor {to})",
+                src.path,
+                path.join("::")
+            )),
+            // an item of the facade (`report::Report`) or a name no module has
+            None => {}
+        }
+    }
+    out
+}
+
 /// Every `.rs` file under `dir`, as (path relative to `dir`, text), sorted.
 fn sources(dir: &Path) -> Vec<(String, String)> {
     let mut out = Vec::new();
@@ -375,6 +433,7 @@ fn no_import_runs_up_a_floor_and_no_kind_names_another() {
             };
             found.extend(floor_violations(&src));
             found.extend(kind_violations(&src, &kinds));
+            found.extend(report_violations(&src));
             files += 1;
         }
     }
@@ -422,6 +481,30 @@ fn a_planted_up_import_is_reported() {
         text: "use crate::files::write;",
     };
     assert_eq!(floor_violations(&src).len(), 1);
+}
+
+#[test]
+fn a_report_circle_is_reported() {
+    // the shared presentation may not name an output, nor an output the facade's renderers
+    let text =
+        "use crate::report::html::badge;\nuse super::model::Report;\nuse super::math::Macros;";
+    let src = Source {
+        krate: Crate::Top,
+        path: "report/values.rs",
+        text,
+    };
+    let found = report_violations(&src);
+    assert_eq!(found.len(), 1, "{found:?}");
+    assert!(found[0].contains("`report::html::badge`"), "{found:?}");
+    let text = "use crate::report::markdown::plain_text;\nuse crate::report::svg::figure_svg;";
+    let src = Source {
+        krate: Crate::Top,
+        path: "report/html/page.rs",
+        text,
+    };
+    let found = report_violations(&src);
+    assert_eq!(found.len(), 1, "{found:?}");
+    assert!(found[0].contains("markdown"), "{found:?}");
 }
 
 #[test]
