@@ -124,6 +124,58 @@ pub fn verify<C: Schema>(
     latex: &LatexSource,
     cases: &[super::Case<C>],
 ) -> Result<Verification> {
+    let macros = paper_in_source(origin, paper, latex)?;
+    let mut v = Verification {
+        sha256: latex.sha256.clone(),
+        sections: paper.sections.len(),
+        macros,
+        labels: paper.labels.len(),
+        quotes: 0,
+        verbatim: 0,
+        normalised: 0,
+        facts: 0,
+        disagreements: Vec::new(),
+    };
+    let canonical = Canonical::of_source(&latex.text);
+    for (path, text) in origin.case_texts()? {
+        let tree: serde_json::Value = parse_yaml(&text, &path)?;
+        let case = tree["id"].as_str().unwrap_or_default().to_string();
+        let file = file_name(&path);
+        for q in quoted(&tree) {
+            v.quotes += 1;
+            match locate(&latex.text, &canonical, &q.lines, &q.quote) {
+                Found::Verbatim => v.verbatim += 1,
+                Found::Normalised => v.normalised += 1,
+                Found::Not(message) => v.disagreements.push(Disagreement {
+                    file: file.clone(),
+                    case: case.clone(),
+                    claim: q.claim,
+                    field: format!("{}.quote", q.field),
+                    message,
+                }),
+            }
+        }
+        if let Some(c) = cases.iter().find(|c| c.id == case) {
+            for check in c.check.source_checks() {
+                v.facts += 1;
+                if let Some(message) = fact_fails(&latex.text, &check.fact) {
+                    v.disagreements.push(Disagreement {
+                        file: file.clone(),
+                        case: case.clone(),
+                        claim: Some(check.claim),
+                        field: check.field,
+                        message,
+                    });
+                }
+            }
+        }
+    }
+    Ok(v)
+}
+
+/// `paper.yml` against the source: every section title at its line, every macro definition
+/// verbatim, every label a `\label`; the number of macros.
+fn paper_in_source(origin: &CaseOrigin, paper: &Paper, latex: &LatexSource) -> Result<usize> {
     let (paper_path, paper_text) = origin.file(PAPER_FILE)?;
     let lines = &latex.text.lines;
     for (i, s) in paper.sections.iter().enumerate() {
@@ -170,52 +222,7 @@ pub fn verify<C: Schema>(
             format!("`{l}` is not a \\label of {}", latex.path.display()),
         ));
     }
-    let mut v = Verification {
-        sha256: latex.sha256.clone(),
-        sections: paper.sections.len(),
-        macros: defs.len(),
-        labels: paper.labels.len(),
-        quotes: 0,
-        verbatim: 0,
-        normalised: 0,
-        facts: 0,
-        disagreements: Vec::new(),
-    };
-    let canonical = Canonical::of_source(&latex.text);
-    for (path, text) in origin.case_texts()? {
-        let tree: serde_json::Value = parse_yaml(&text, &path)?;
-        let case = tree["id"].as_str().unwrap_or_default().to_string();
-        let file = file_name(&path);
-        for q in quoted(&tree) {
-            v.quotes += 1;
-            match locate(&latex.text, &canonical, &q.lines, &q.quote) {
-                Found::Verbatim => v.verbatim += 1,
-                Found::Normalised => v.normalised += 1,
-                Found::Not(message) => v.disagreements.push(Disagreement {
-                    file: file.clone(),
-                    case: case.clone(),
-                    claim: q.claim,
-                    field: format!("{}.quote", q.field),
-                    message,
-                }),
-            }
-        }
-        if let Some(c) = cases.iter().find(|c| c.id == case) {
-            for check in c.check.source_checks() {
-                v.facts += 1;
-                if let Some(message) = fact_fails(&latex.text, &check.fact) {
-                    v.disagreements.push(Disagreement {
-                        file: file.clone(),
-                        case: case.clone(),
-                        claim: Some(check.claim),
-                        field: check.field,
-                        message,
-                    });
-                }
-            }
-        }
-    }
-    Ok(v)
+    Ok(defs.len())
 }
 
 fn file_name(path: &Path) -> String {
