@@ -1,4 +1,4 @@
-//! The judges of the noise claims: small pure functions from numbers to a [`Decision`], by
+//! The judges of the noise claims: small pure functions from numbers to a `Decision`, by
 //! the rule of `docs/verdicts.md` ("Statistical claims"), each tested on both sides of its
 //! threshold.
 

@@ -4,7 +4,8 @@
 use super::Case;
 use crate::check::ClaimResult;
 use crate::check::ResultBuilder;
-use crate::claims::formula_audit::Place;
+use crate::claims::shared::Place;
+use crate::claims::twofold_squared::TwofoldAudit;
 use crate::error::Result;
 
 /// What an audit item shows beside its claim result.
@@ -17,6 +18,24 @@ pub struct Shown {
     pub defect: Option<String>,
     /// What it should be.
     pub should_be: String,
+}
+
+/// One exported SymPy script ([`super::ClaimKind::sympy_scripts`]).
+#[derive(Clone, Debug)]
+pub struct Script {
+    /// The audit item's id (`claim/suffix`).
+    pub id: String,
+    /// A file name for it (the id with `/` as `__`, `.py`).
+    pub file: String,
+    /// The Python source.
+    pub source: String,
+}
+
+/// What `orthocheck audit ID` shows of a case in full ([`super::ClaimKind::audit_in_full`]).
+#[derive(Clone, Debug)]
+pub enum InFull {
+    /// Eq. p3f3sqr: the printed polynomial, its derivation and their comparison.
+    TwofoldSquared(TwofoldAudit),
 }
 
 /// Which audit items a command asks for: every one, or those of one item id or claim id.

@@ -3,7 +3,7 @@
 //! of [`crate::studies`]), its judge and its figures. A kind's folder is named as its case
 //! files name it under `check:`.
 //!
-//! Every kind implements [`ClaimKind`] and is registered once, in the [`kinds!`] list below:
+//! Every kind implements [`ClaimKind`] and is registered once, in the `kinds!` list below:
 //! that list is the only place where the kinds are enumerated.
 
 use serde::Deserialize;
@@ -27,6 +27,7 @@ pub mod p3f3_example;
 pub mod p3f4_census;
 pub mod p4f3_census;
 pub mod p4f3_example;
+pub mod rerun;
 pub mod restatements;
 pub mod shared;
 pub mod solution_count;
@@ -88,6 +89,24 @@ pub trait ClaimKind {
         _wanted: audit::Wanted,
     ) -> Result<Vec<(ClaimResult, audit::Shown)>> {
         Ok(Vec::new())
+    }
+
+    /// What `orthocheck audit ID` shows in full when `ID` names the case, instead of its
+    /// items. Most kinds show their items alone.
+    fn audit_in_full(&self) -> Option<Result<audit::InFull>> {
+        None
+    }
+
+    /// The SymPy scripts `orthocheck audit --export` writes, one per identity the kind
+    /// audits. Most kinds export none.
+    fn sympy_scripts(&self) -> Result<Vec<audit::Script>> {
+        Ok(Vec::new())
+    }
+
+    /// The noise runs `orthocheck noise` reruns with the user's levels, trials and seed.
+    /// Most kinds have none.
+    fn noise_runs(&self) -> Option<Result<rerun::NoiseRuns>> {
+        None
     }
 
     /// The facts of the source the case records beyond its quotes (the errata's pictures and

@@ -4,10 +4,9 @@ use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
 use orthocheck::check::{ClaimResult, Verdict};
-use orthocheck::claims::audit::{Shown, Wanted};
-use orthocheck::claims::formula_audit::Place;
+use orthocheck::claims::audit::{InFull, Shown, Wanted};
+use orthocheck::claims::shared::Place;
 use orthocheck::claims::twofold_squared::TwofoldAudit;
-use orthocheck::claims::twofold_squared::TwofoldCase;
 use orthocheck::claims::{Case, Check};
 use orthocheck::report::values::quantities_text;
 use orthocheck::{cases, report, Error};
@@ -71,9 +70,7 @@ fn selected(script_id: &str, id: &str) -> bool {
 fn export(loaded: &[Case], a: &Args, dir: &Path) -> Result<(), Error> {
     let mut scripts = Vec::new();
     for case in loaded {
-        if let Check::FormulaAudit(c) = &case.check {
-            scripts.extend(orthocheck::claims::formula_audit::study::sympy_scripts(c)?);
-        }
+        scripts.extend(case.check.kind().sympy_scripts()?);
     }
     if a.export == Some(Export::Sympy) && !a.all {
         let Some(id) = &a.id else {
@@ -106,12 +103,12 @@ fn export(loaded: &[Case], a: &Args, dir: &Path) -> Result<(), Error> {
     out(&listing)
 }
 
-/// The twofold-squared case named `id`, if `id` names one: it is shown in full.
-fn twofold_case<'a>(loaded: &'a [Case], id: &str) -> Option<&'a TwofoldCase> {
-    loaded.iter().find_map(|c| match &c.check {
-        Check::TwofoldSquared(t) if c.id == id => Some(t),
-        _ => None,
-    })
+/// What the case named `id` shows in full, if `id` names a case that does.
+fn in_full(loaded: &[Case], id: &str) -> Option<Result<InFull, Error>> {
+    loaded
+        .iter()
+        .filter(|c| c.id == id)
+        .find_map(|c| c.check.kind().audit_in_full())
 }
 
 /// One twofold-squared case in full, the errata list, or the items an id names.
@@ -135,9 +132,10 @@ pub fn run(a: Args) -> Result<(), Error> {
         out(&report::errata_markdown(&r.claims))?;
         return Ok(());
     }
-    if let Some(case) = a.id.as_deref().and_then(|id| twofold_case(loaded, id)) {
-        let audit = orthocheck::claims::twofold_squared::audit(case)?;
-        emit(a.json, &audit, twofold_text)?;
+    if let Some(full) = a.id.as_deref().and_then(|id| in_full(loaded, id)) {
+        match full? {
+            InFull::TwofoldSquared(audit) => emit(a.json, &audit, twofold_text)?,
+        }
         return Ok(());
     }
     let wanted = a.id.as_deref().map_or(Wanted::All, Wanted::Id);

@@ -1,7 +1,9 @@
 //! `orthocheck dof`: degrees of freedom (§2.1) and identifiability by Jacobian rank.
 
 use orthocheck::derivations::dof;
-use orthocheck::{report, Error};
+use std::fmt::Write as _;
+
+use orthocheck::Error;
 
 use super::emit;
 
@@ -46,11 +48,11 @@ pub fn run(a: Args) -> Result<(), Error> {
     check_limits(&a).map_err(Error::InvalidInput)?;
     if a.table {
         let rows = dof::table(a.max_points, a.max_frames, a.seed)?;
-        emit(a.json, &rows, |r| report::dof_table_text(r))?;
+        emit(a.json, &rows, |r| dof_table_text(r))?;
     } else {
         let (p, k) = (a.points.unwrap_or(0), a.frames.unwrap_or(0));
         let r = dof::identifiability(p, k, a.seed)?;
-        emit(a.json, &r, report::dof_text)?;
+        emit(a.json, &r, dof_text)?;
     }
     Ok(())
 }
@@ -74,5 +76,68 @@ fn check_limits(a: &Args) -> Result<(), String> {
         "--points × --frames",
         p.saturating_mul(k),
         DOF_POINTS_TIMES_FRAMES,
+    )
+}
+
+/// The `dof --table` grid as text: counted against the real (Jacobian) rank.
+fn dof_table_text(rows: &[dof::Identifiability]) -> String {
+    let mut s = String::from(
+        "  p  k  unknowns  measurements  balance  rank  deficiency  count says  rank says\n",
+    );
+    for r in rows {
+        let c = &r.count;
+        let _ = writeln!(
+            s,
+            "{:>3}{:>3}{:>10}{:>14}{:>9}{:>6}{:>12}  {:<10}  {}",
+            c.points,
+            c.frames,
+            c.unknowns,
+            c.measurements,
+            c.balance,
+            r.exact_rank,
+            r.deficiency,
+            if c.balance >= 0 { "enough" } else { "too few" },
+            if r.deficiency == 0 {
+                "identifiable"
+            } else {
+                "ambiguous"
+            }
+        );
+    }
+    s
+}
+
+/// One `dof` cell as text.
+fn dof_text(r: &dof::Identifiability) -> String {
+    let c = &r.count;
+    format!(
+        "points {p}, frames {k}\n\
+         unknowns      -1+3p+5(k-1) = {u}\n\
+         measurements  2kp          = {m}\n\
+         balance                    = {b}\n\
+         jacobian rank (svd)        = {jr} of {n} parameters (condition {cond})\n\
+         exact rank                 = {er} ({method})\n\
+         deficiency                 = {d}  ({verdict})\n",
+        p = c.points,
+        k = c.frames,
+        u = c.unknowns,
+        m = c.measurements,
+        b = c.balance,
+        jr = r.jacobian_rank,
+        n = r.parameters,
+        cond = r
+            .condition
+            .map_or("- (rank-deficient)".into(), orthocheck::numfmt::sig),
+        er = r.exact_rank,
+        method = r.exact_method.describe(),
+        d = r.deficiency,
+        verdict = if r.deficiency == 0 {
+            "finitely many solutions near this scene".to_string()
+        } else {
+            format!(
+                "a {}-dimensional family of scenes gives the same images",
+                r.deficiency
+            )
+        }
     )
 }

@@ -4,7 +4,10 @@ use std::path::PathBuf;
 
 use orthocheck::input::PointOrder;
 use orthocheck::studies::family_samples::sample_family;
-use orthocheck::{report, Error};
+use std::fmt::Write as _;
+
+use orthocheck::Error;
+use serde::Serialize;
 
 use super::{emit, in_file, two_frames};
 
@@ -40,7 +43,57 @@ pub fn run(a: Args) -> Result<(), Error> {
     })?;
     let members =
         sample_family(&t.frames[0], &t.frames[1], a.samples).map_err(|e| in_file(&a.input, e))?;
-    let view = report::family_view(&t.names, &members);
-    emit(a.json, &view, |v| report::family_text(v))?;
+    let view = family_view(&t.names, &members);
+    emit(a.json, &view, |v| family_text(v))?;
     Ok(())
+}
+
+/// One member of the two-frame family, for display.
+#[derive(Clone, Debug, Serialize)]
+struct FamilyMember {
+    /// The angle between the views.
+    pub beta: f64,
+    /// The points, named.
+    pub points: Vec<(String, [f64; 3])>,
+    /// Largest reprojection error (relative).
+    pub reprojection: f64,
+}
+
+/// The family as shown: names with coordinates.
+fn family_view(
+    names: &[String],
+    members: &[orthocheck::derivations::two_frames::Member],
+) -> Vec<FamilyMember> {
+    members
+        .iter()
+        .map(|m| FamilyMember {
+            beta: m.beta,
+            points: names
+                .iter()
+                .zip(&m.points)
+                .map(|(n, p)| (n.clone(), [p.x, p.y, p.z]))
+                .collect(),
+            reprojection: m.reprojection,
+        })
+        .collect()
+}
+
+/// `orthocheck family` as text.
+fn family_text(members: &[FamilyMember]) -> String {
+    use orthocheck::numfmt::{below, sig, sig_list};
+    let mut s = String::from(
+        "members of the family of bodies both frames allow (frame 1's camera coordinates; the depth is fixed up to a shift)\n",
+    );
+    for m in members {
+        let _ = writeln!(
+            s,
+            "β = {} rad (reprojection {}):",
+            sig(m.beta),
+            below(m.reprojection)
+        );
+        for (n, p) in &m.points {
+            let _ = writeln!(s, "  {n:<6} {}", sig_list(p));
+        }
+    }
+    s
 }

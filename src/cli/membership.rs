@@ -4,8 +4,10 @@ use std::path::PathBuf;
 
 use orthocheck::derivations::identity;
 use orthocheck::input::PointOrder;
-use orthocheck::report::MemberRow;
-use orthocheck::{report, Error};
+use std::fmt::Write as _;
+
+use orthocheck::Error;
+use serde::Serialize;
 
 use super::{emit, in_file, two_frames};
 
@@ -72,8 +74,41 @@ pub fn run(a: Args) -> Result<(), Error> {
             distance: *d,
         })
         .collect();
-    emit(a.json, &rows, |r| {
-        report::membership_text(r, tolerance, from_data)
-    })?;
+    emit(a.json, &rows, |r| membership_text(r, tolerance, from_data))?;
     Ok(())
+}
+
+/// One point of `orthocheck membership`.
+#[derive(Clone, Debug, Serialize)]
+struct MemberRow {
+    /// The point's name.
+    pub point: String,
+    /// Whether it belongs to the body.
+    pub member: bool,
+    /// Its epipolar distance, relative to the image size.
+    pub distance: f64,
+}
+
+/// `orthocheck membership` as text.
+fn membership_text(rows: &[MemberRow], tolerance: f64, from_data: bool) -> String {
+    use orthocheck::numfmt::sig;
+    let mut s = format!(
+        "members: epipolar distance at most {} of the image size{}\n",
+        sig(tolerance),
+        if from_data {
+            " (from the data: 3 robust standard deviations of the distances; --tolerance sets it)"
+        } else {
+            ""
+        }
+    );
+    for r in rows {
+        let _ = writeln!(
+            s,
+            "{:<6} {:<9} {}",
+            r.point,
+            if r.member { "member" } else { "outside" },
+            sig(r.distance)
+        );
+    }
+    s
 }

@@ -4,7 +4,7 @@ use std::fmt::Write as _;
 use std::path::PathBuf;
 
 use clap::ValueEnum;
-use orthocheck::claims::noise_study::request::{ModelChoice, NoiseRequest, RequestError};
+use orthocheck::claims::rerun::{ModelChoice, NoiseRequest, RequestError};
 use orthocheck::claims::{Case, Check};
 use orthocheck::derivations::noise::LevelSummary;
 use orthocheck::{cases, Error};
@@ -97,7 +97,7 @@ pub fn run(a: Args) -> Result<(), Error> {
 fn noise_ids(all: &[Case]) -> String {
     let ids: Vec<&str> = all
         .iter()
-        .filter(|c| matches!(c.check, Check::NoiseStudy(_) | Check::P4f3Example(_)))
+        .filter(|c| c.check.kind().noise_runs().is_some())
         .map(|c| c.id.as_str())
         .collect();
     if ids.is_empty() {

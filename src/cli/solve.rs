@@ -7,7 +7,7 @@ use clap::ValueEnum;
 use orthocheck::derivations::solver::{solve_tracks, Method, Solution, Solved, Structure};
 use orthocheck::input::{load_observations, load_tracks, PointOrder};
 use orthocheck::numfmt::{below, sig, sig_list};
-use orthocheck::{report, Error};
+use orthocheck::Error;
 
 use super::{in_file, json_out, non_finite, out};
 
@@ -69,7 +69,7 @@ pub fn run(a: Args) -> Result<(), Error> {
         if let Some(bad) = orthocheck::report::finite::first_non_finite(&solved) {
             return Err(non_finite(&bad.to_string()));
         }
-        json_out(&report::solve_json(&solved))?;
+        json_out(&solve_json(&solved))?;
     } else {
         out(&solve_text(&solved))?;
     }
@@ -182,4 +182,52 @@ fn body_text(st: &Structure) -> String {
         st.motions,
         2 * u128::from(st.motions)
     )
+}
+
+/// `orthocheck solve --json`: `{"method", "why", "solutions": [{"squared_edges": {"PQ": …},
+/// "feasible", "reason", "residual", …}], "degenerate": null | "…", "condition"}`.
+fn solve_json(s: &Solved) -> serde_json::Value {
+    use serde_json::{json, Map, Value};
+    let o = &s.output;
+    let solutions: Vec<Value> = o
+        .solutions
+        .iter()
+        .zip(&s.structures)
+        .map(|(sol, st)| {
+            let edges: Map<String, Value> = o
+                .edges
+                .iter()
+                .zip(&sol.squared_edges)
+                .map(|(n, v)| (n.clone(), json!(v)))
+                .collect();
+            let mut v = json!({
+                "squared_edges": edges,
+                "feasible": sol.feasibility.is_feasible(),
+                "reason": sol.feasibility.reason(),
+                "residual": sol.residual,
+                "error_bound": sol.error_bound,
+            });
+            if sol.imaginary.iter().any(|x| *x != 0.0) {
+                let im: Map<String, Value> = o
+                    .edges
+                    .iter()
+                    .zip(&sol.imaginary)
+                    .map(|(n, v)| (n.clone(), json!(v)))
+                    .collect();
+                v["imaginary"] = Value::Object(im);
+            }
+            if let Some(st) = st {
+                v["structure"] = json!(st);
+            }
+            v
+        })
+        .collect();
+    json!({
+        "method": o.method,
+        "why": s.why,
+        "solutions": solutions,
+        "degenerate": o.degenerate.map(|d| d.to_string()),
+        "condition": o.condition,
+        "validation": s.validation,
+    })
 }

@@ -8,7 +8,7 @@ use orthocheck::input::{tracks_to_csv, tracks_to_yaml};
 use orthocheck::model::Tracks;
 use orthocheck::numfmt::round_trip;
 use orthocheck::seeds::synthetic;
-use orthocheck::{report, Error};
+use orthocheck::Error;
 use rand::seq::SliceRandom as _;
 
 use super::{out, write_new};
@@ -81,7 +81,7 @@ pub fn run(a: Args) -> Result<(), Error> {
         return turntable(&a);
     }
     let s = synthetic(a.points, a.frames, a.seed, a.noise);
-    let header = report::synth_header(&s.scene, a.seed, a.noise);
+    let header = synth_header(&s.scene, a.seed, a.noise);
     let text = if a.shuffle {
         let orders = shuffled_orders(a.points, a.frames, a.seed);
         let tracks = reorder(&s.tracks, &orders)?;
@@ -121,7 +121,7 @@ fn turntable(a: &Args) -> Result<(), Error> {
         seed: a.seed,
     };
     let (scene, obs) = t.generate();
-    let header = report::synth_header(&scene, a.seed, a.noise).replacen(
+    let header = synth_header(&scene, a.seed, a.noise).replacen(
         "\n",
         &format!(
             " --turntable --window {} --elevation {}\n",
@@ -259,4 +259,40 @@ fn check_limits(a: &Args) -> Result<(), String> {
     }
     a.noise
         .map_or(Ok(()), |e| orthocheck::limits::noise_level("--noise", e))
+}
+
+/// The comment block `orthocheck synth` writes above the tracks: how to make them again, and
+/// the truth to compare a solve with.
+fn synth_header(scene: &orthocheck::model::Scene, seed: u64, noise: Option<f64>) -> String {
+    // The edges among the first points only: a header listing all p(p−1)/2 edges of a large
+    // scene would outgrow the tracks themselves (10,000 points: 49,995,000 edges, ~1 GB).
+    const LISTED_POINTS: usize = 10;
+    let b = &scene.body;
+    let p = b.points.len();
+    let shown = p.min(LISTED_POINTS);
+    let truth: Vec<String> = orthocheck::derivations::solver::edges(shown)
+        .iter()
+        .map(|&(i, j)| {
+            format!(
+                "{}={}",
+                orthocheck::derivations::solver::edge_name(&b.names[i], &b.names[j]),
+                orthocheck::numfmt::sig(b.squared_distance(i, j))
+            )
+        })
+        .collect();
+    let label = if shown == p {
+        "true squared edges".to_string()
+    } else {
+        format!(
+            "true squared edges among the first {shown} points ({} of {}; the same seed gives the rest)",
+            truth.len(),
+            p * (p - 1) / 2
+        )
+    };
+    format!(
+        "# orthocheck synth --points {p} --frames {} --seed {seed}{}\n# {label}: {}\n",
+        scene.motions.len(),
+        noise.map_or(String::new(), |e| format!(" --noise {e}")),
+        truth.join(" ")
+    )
 }

@@ -4,7 +4,7 @@
 
 use std::collections::BTreeSet;
 
-use super::Report;
+use super::model::Report;
 use crate::check::{ClaimResult, Verdict};
 
 /// One section of the paper and the claims it holds.

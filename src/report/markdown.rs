@@ -7,11 +7,20 @@
 use std::collections::BTreeSet;
 use std::fmt::Write as _;
 
-use super::glance::{holds_word, is_statistical, printed_side, LISTS};
 use super::layout::{self, anchor, section_anchor, verdict_anchor, GROUPS};
-use super::math::{math_text, prose_text_in, quote_text, Macros};
-use super::values::{power_phrase, shown_text, tolerance_text, trials_of};
-use super::Report;
+use super::model::Report;
+use super::values::{
+    computed_text, power_phrase, printed_text, quantities_line, shown_text, tolerance_text,
+    trials_of, value_text,
+};
+use super::words::{
+    capitalised, correction_is_prose, defect_sentence, findings, holds_word, is_statistical,
+    printed_side, Why, LISTS,
+};
+use super::{
+    evidence,
+    math::{math_text, prose_text_in, quote_text, Macros},
+};
 use crate::check::{ClaimResult, Quantity, Role, Value, Verdict};
 
 /// What the Markdown renderer needs beside a claim: the ids to link, the claims in order, the
@@ -68,7 +77,7 @@ impl Ctx<'_> {
     }
 
     fn quantities(&self, qs: &[Quantity], trials: Option<u64>) -> String {
-        super::values::quantities_line(qs, md_escape, |q| self.value(&q.role, &q.value, trials))
+        quantities_line(qs, md_escape, |q| self.value(&q.role, &q.value, trials))
     }
 }
 
@@ -88,7 +97,7 @@ fn strip_backslashes(s: &str) -> String {
 /// A claim's correction: words as running text, a formula as mathematics.
 fn correction_md(ctx: &Ctx, c: &ClaimResult) -> String {
     let corr = c.correction.as_deref().unwrap_or("");
-    if super::glance::correction_is_prose(c) {
+    if correction_is_prose(c) {
         md_escape(&layout::readable_labels(
             &prose_text_in(corr, &ctx.macros),
             &ctx.labels,
@@ -148,7 +157,7 @@ fn claim_in(
         c.section
     );
     if matches!(c.verdict, Verdict::Erratum | Verdict::Note)
-        && let super::findings::Why::Text(d) = super::findings::defect_sentence(c)
+        && let Why::Text(d) = defect_sentence(c)
     {
         let _ = writeln!(s, "- **defect:** {}", ctx.linked(&d));
     }
@@ -170,7 +179,7 @@ fn claim_in(
         let _ = writeln!(s, "- corrected: {}", correction_md(ctx, c));
     }
     let _ = writeln!(s, "- method: {}", ctx.linked(&c.evidence.method));
-    let ev = super::evidence::layout(c);
+    let ev = evidence::layout(c);
     for d in &ev.rows {
         let _ = writeln!(
             s,
@@ -246,7 +255,7 @@ pub fn render(r: &Report) -> String {
     if !p.transcription.is_empty() {
         let _ = writeln!(s, "{}\n", p.transcription);
     }
-    super::findings::push_findings_markdown(&mut s, &ctx.ordered, &ctx.macros, &ctx.labels);
+    push_findings(&mut s, &ctx.ordered, &ctx.macros, &ctx.labels);
     push_summary(&mut s, r);
     push_contents(&mut s, r);
     push_glance(&mut s, &ctx);
@@ -346,7 +355,7 @@ fn push_glance(s: &mut String, ctx: &Ctx) {
                     md_escape(&math_text(text, &ctx.macros, true))
                 }
                 Value::Quote { text } => ctx.quote(text),
-                v => md_escape(&super::values::value_text(v)),
+                v => md_escape(&value_text(v)),
             })
             .collect();
         let corrected = if c.correction.is_some() {
@@ -354,9 +363,9 @@ fn push_glance(s: &mut String, ctx: &Ctx) {
         } else {
             ctx.quantities(&c.computed, None)
         };
-        let wrong = match super::findings::defect_sentence(c) {
-            super::findings::Why::Text(d) => ctx.linked(&d),
-            super::findings::Why::ShouldRead(_) => String::new(),
+        let wrong = match defect_sentence(c) {
+            Why::Text(d) => ctx.linked(&d),
+            Why::ShouldRead(_) => String::new(),
         };
         let _ = writeln!(
             s,
@@ -436,4 +445,83 @@ fn push_seeds(s: &mut String, r: &Report) {
                 .join(", ")
         );
     }
+}
+
+/// The summary as Markdown.
+fn push_findings(
+    s: &mut String,
+    ordered: &[&ClaimResult],
+    macros: &Macros,
+    labels: &std::collections::BTreeMap<String, String>,
+) {
+    let plain = |t: &str| plain_text(&layout::readable_labels(t, labels));
+    s.push_str("## What was found\n\n");
+    for f in findings(ordered) {
+        let _ = writeln!(s, "**{}.** {}\n", capitalised(f.group), f.sentence);
+        for (c, why) in &f.items {
+            let text = match why {
+                Why::Text(t) => plain(t),
+                Why::ShouldRead(t) if correction_is_prose(c) => {
+                    format!("should read: {}", plain_text(&prose_text_in(t, macros)))
+                }
+                Why::ShouldRead(t) => {
+                    format!("should read {}", plain_text(&math_text(t, macros, true)))
+                }
+            };
+            let _ = writeln!(
+                s,
+                "- [`{}`](#{}) (§{}): {text}",
+                c.id,
+                anchor(&c.id),
+                c.section,
+            );
+        }
+        if !f.items.is_empty() {
+            s.push('\n');
+        }
+    }
+    s.push_str("What the verdict words mean:\n\n");
+    for v in Verdict::ALL {
+        let _ = writeln!(s, "- `{}`: {}", v.name(), v.meaning());
+    }
+    s.push('\n');
+}
+
+/// The errata list (Markdown): every claim result whose verdict is `erratum`, `contradicted`
+/// or `holds-generically` (an exception the paper never names), in report order — what
+/// `docs/errata.md` holds.
+pub fn errata_markdown(claims: &[ClaimResult]) -> String {
+    let mut s = String::from(
+        "# Errata\n\nGenerated by `orthocheck audit --all --markdown` from `paper_cases/`; do not edit.\n\
+         Every entry is decided by computation; the report gives the method and the evidence.\n",
+    );
+    for c in claims.iter().filter(|c| {
+        matches!(
+            c.verdict,
+            Verdict::Erratum | Verdict::Contradicted | Verdict::HoldsGenerically
+        )
+    }) {
+        let _ = write!(
+            s,
+            "\n## `{}` — {} (§{}, lines {})\n\n- printed: {}\n",
+            c.id,
+            c.verdict.name(),
+            c.section,
+            c.lines,
+            printed_text(c)
+        );
+        for d in c
+            .evidence
+            .details
+            .iter()
+            .filter(|d| matches!(d.role, Role::Defect | Role::ShouldBe))
+        {
+            let _ = writeln!(s, "- {}: {}", d.name, value_text(&d.value));
+        }
+        if let Some(corr) = &c.correction {
+            let _ = writeln!(s, "- corrected: {corr}");
+        }
+        let _ = writeln!(s, "- found: {}", computed_text(c));
+    }
+    s
 }

@@ -14,8 +14,8 @@ use std::fmt::Write as _;
 
 mod key;
 
-use super::html::escape;
 use crate::check::figure::{Figure, Layer, Plot, Shape, Style, CLOUD};
+use crate::mathtext::escape;
 use crate::numfmt::sig;
 use key::{draw_labels, draw_legend};
 
@@ -479,7 +479,7 @@ fn shrink_limit(width: f64) -> Option<f64> {
 }
 
 /// The narrowest a figure is shown, in CSS px (its SVG's `min-width`): the width at which its
-/// smallest text is still [`READABLE_TEXT`] px, so that on a narrow screen a figure of several
+/// smallest text is still `READABLE_TEXT` px, so that on a narrow screen a figure of several
 /// panels keeps its text legible and scrolls sideways (in a container with `overflow-x: auto`)
 /// instead of shrinking. `None` for a figure no wider than one panel, which may shrink.
 pub fn min_width(f: &Figure) -> Option<f64> {

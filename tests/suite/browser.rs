@@ -64,7 +64,10 @@ fn report_html_in_headless_chromium() {
     let paper = orthocheck::cases::load_paper(Path::new(crate::common::CASES_DIR)).unwrap();
     let page = orthocheck::report::html::render(&r.clone().with_paper(paper));
     let dir = tempfile::tempdir().unwrap();
-    let profile = dir.path().join("profile");
+    let chrome = Browser {
+        path: browser,
+        profile: dir.path().join("profile"),
+    };
     let html = dir.path().join("report.html");
     std::fs::write(&html, &page).unwrap();
     // a copy that records its own width once laid out (the report itself stays as it is)
@@ -79,10 +82,40 @@ fn report_html_in_headless_chromium() {
         ),
     )
     .unwrap();
-    let url = |p: &Path| format!("file://{}", p.display());
+    let out = chrome.run(&["--dump-dom"], &html);
+    check_links(&String::from_utf8_lossy(&out.stdout), r.claims.len());
+    for width in [1400, 400] {
+        check_width(&chrome, &probe, width);
+        check_screenshot(
+            &chrome,
+            &html,
+            &dir.path().join(format!("shot-{width}.png")),
+            width,
+        );
+    }
+}
 
-    let out = headless(&browser, &profile, &["--dump-dom"], &url(&html));
-    let dom = String::from_utf8_lossy(&out.stdout);
+/// Headless Chromium with its own profile.
+struct Browser {
+    path: PathBuf,
+    profile: PathBuf,
+}
+
+impl Browser {
+    /// The browser's output on the local file `page`, with the `extra` arguments.
+    fn run(&self, extra: &[&str], page: &Path) -> std::process::Output {
+        headless(
+            &self.path,
+            &self.profile,
+            extra,
+            &format!("file://{}", page.display()),
+        )
+    }
+}
+
+/// The page loaded, its script ran, every claim is on it, and every in-page link lands on an
+/// element.
+fn check_links(dom: &str, claims: usize) {
     assert!(
         dom.contains("id=\"contents\""),
         "the page did not load: {dom:.300}"
@@ -91,8 +124,11 @@ fn report_html_in_headless_chromium() {
         dom.contains("id=\"search\""),
         "the page's script did not run"
     );
-    let claims = dom.matches("<article ").count();
-    assert_eq!(claims, r.claims.len(), "every claim is on the page");
+    assert_eq!(
+        dom.matches("<article ").count(),
+        claims,
+        "every claim is on the page"
+    );
     let ids: BTreeSet<&str> = dom
         .split(" id=\"")
         .skip(1)
@@ -106,64 +142,57 @@ fn report_html_in_headless_chromium() {
     assert!(links.len() > 2 * claims, "{} in-page links", links.len());
     let dangling: Vec<&&str> = links.iter().filter(|l| !ids.contains(**l)).collect();
     assert!(dangling.is_empty(), "links to nowhere: {dangling:?}");
+}
 
-    for width in [1400, 400] {
-        let out = headless(
-            &browser,
-            &profile,
-            &["--dump-dom", &format!("--window-size={width},900")],
-            &url(&probe),
-        );
-        let dom = String::from_utf8_lossy(&out.stdout);
-        // headless Chromium lays a narrow window out at its minimum width (500 px): the page
-        // must fit whatever width it gets, without scrolling sideways
-        let (content, view): (u32, u32) = dom
-            .split("data-width=\"")
-            .nth(1)
-            .and_then(|s| s.split('"').next())
-            .and_then(|s| s.split_once(' '))
-            .and_then(|(a, b)| Some((a.parse().ok()?, b.parse().ok()?)))
-            .expect("the probe reports the page width");
-        assert!(
-            view <= width.max(500),
-            "a {width} px window is {view} px wide"
-        );
-        assert!(
-            content <= view,
-            "at {view} px the page is {content} px wide"
-        );
+/// In a window `width` px wide the page does not scroll sideways.
+fn check_width(chrome: &Browser, probe: &Path, width: u32) {
+    let size = format!("--window-size={width},900");
+    let out = chrome.run(&["--dump-dom", &size], probe);
+    let dom = String::from_utf8_lossy(&out.stdout);
+    // headless Chromium lays a narrow window out at its minimum width (500 px): the page
+    // must fit whatever width it gets, without scrolling sideways
+    let (content, view): (u32, u32) = dom
+        .split("data-width=\"")
+        .nth(1)
+        .and_then(|s| s.split('"').next())
+        .and_then(|s| s.split_once(' '))
+        .and_then(|(a, b)| Some((a.parse().ok()?, b.parse().ok()?)))
+        .expect("the probe reports the page width");
+    assert!(
+        view <= width.max(500),
+        "a {width} px window is {view} px wide"
+    );
+    assert!(
+        content <= view,
+        "at {view} px the page is {content} px wide"
+    );
+}
 
-        let png = dir.path().join(format!("shot-{width}.png"));
-        let out = headless(
-            &browser,
-            &profile,
-            &[
-                &format!("--screenshot={}", png.display()),
-                &format!("--window-size={width},1600"),
-            ],
-            &url(&html),
-        );
-        let bytes = std::fs::read(&png).unwrap_or_else(|e| {
-            panic!(
-                "no screenshot at {width} px ({e}): {}",
-                String::from_utf8_lossy(&out.stderr)
-            )
-        });
-        let image = png::decode(&bytes).expect("a PNG chromium wrote");
-        assert_eq!(image.width, width);
-        assert!(image.height >= 900, "{} px tall", image.height);
-        let (colours, ink) = image.colours_and_ink();
-        assert!(
-            colours > 8,
-            "at {width} px the screenshot has {colours} colours"
-        );
-        assert!(
-            ink > 0.01,
-            "at {width} px only {ink} of the screenshot is not background"
-        );
-        if let Some(keep) = std::env::var_os("ORTHOCHECK_KEEP_SCREENSHOTS") {
-            let _ = std::fs::copy(&png, Path::new(&keep).join(format!("shot-{width}.png")));
-        }
+/// A screenshot `width` px wide into `png` is as wide, tall enough, and not blank.
+fn check_screenshot(chrome: &Browser, html: &Path, png: &Path, width: u32) {
+    let shot = format!("--screenshot={}", png.display());
+    let size = format!("--window-size={width},1600");
+    let out = chrome.run(&[&shot, &size], html);
+    let bytes = std::fs::read(png).unwrap_or_else(|e| {
+        panic!(
+            "no screenshot at {width} px ({e}): {}",
+            String::from_utf8_lossy(&out.stderr)
+        )
+    });
+    let image = png::decode(&bytes).expect("a PNG chromium wrote");
+    assert_eq!(image.width, width);
+    assert!(image.height >= 900, "{} px tall", image.height);
+    let (colours, ink) = image.colours_and_ink();
+    assert!(
+        colours > 8,
+        "at {width} px the screenshot has {colours} colours"
+    );
+    assert!(
+        ink > 0.01,
+        "at {width} px only {ink} of the screenshot is not background"
+    );
+    if let Some(keep) = std::env::var_os("ORTHOCHECK_KEEP_SCREENSHOTS") {
+        let _ = std::fs::copy(png, Path::new(&keep).join(format!("shot-{width}.png")));
     }
 }
 

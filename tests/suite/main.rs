@@ -16,6 +16,9 @@ mod errata;
 /// Every figure of the paper run, drawn: data inside the axes, keys outside, one colour per
 /// series, equal scales where claimed, captions without LaTeX.
 mod figures;
+/// The floors of docs/architecture.md on the sources: no import runs up a floor, no kind
+/// names another.
+mod floors;
 /// Structured fuzzing of the tracks and case parsers (proptest; long run in docs/limits.md).
 mod fuzz;
 mod hardening;

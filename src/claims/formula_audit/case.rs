@@ -1,12 +1,12 @@
 //! The formula audit: displayed formulas, definitions, printed arithmetic, computed statements, textual errata.
 
 use std::collections::BTreeMap;
-use std::fmt;
 
 use serde::Deserialize;
 
 use crate::algebra::Poly;
 use crate::cases::{ClaimRef, Printed, Validator};
+use crate::claims::shared::Place;
 use crate::derivations::formulas::NAMES;
 use crate::error::Result;
 
@@ -33,34 +33,6 @@ pub struct FormulaAuditCase {
     /// Textual and typographic errata.
     #[serde(default)]
     pub text: Vec<TextItem>,
-}
-
-/// Where an audit item sits in the paper.
-#[derive(Clone, Debug, Deserialize, PartialEq, serde::Serialize)]
-#[serde(deny_unknown_fields)]
-pub struct Place {
-    /// Section as numbered ("2.2", "A").
-    pub section: String,
-    /// Equation label, if any.
-    #[serde(default)]
-    pub label: Option<String>,
-    /// The LaTeX macros involved.
-    #[serde(default)]
-    pub macros: Vec<String>,
-}
-
-impl fmt::Display for Place {
-    /// `§5.2, label p4f2, macros \faca \facb`
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "§{}", self.section)?;
-        if let Some(l) = &self.label {
-            write!(f, ", label {l}")?;
-        }
-        if !self.macros.is_empty() {
-            write!(f, ", macros {}", self.macros.join(" "))?;
-        }
-        Ok(())
-    }
 }
 
 /// A macro of the paper, transcribed.

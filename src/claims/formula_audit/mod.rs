@@ -52,4 +52,8 @@ impl ClaimKind for FormulaAuditCase {
             .filter(|(r, _)| wanted.shows(&r.id, &r.claim))
             .collect())
     }
+
+    fn sympy_scripts(&self) -> Result<Vec<crate::claims::audit::Script>> {
+        study::sympy_scripts(self)
+    }
 }

@@ -20,13 +20,13 @@ use crate::derivations::formulas::{
 use crate::derivations::two_frames::{fourth_relation, FourthRelation};
 use crate::derivations::twofold::{frame_equation, relation_squared};
 use crate::error::{Error, Result};
-use crate::studies::points::{agree_at_points, PointCheck};
+use crate::studies::points::{agree_at_points, flip_one_term, PointCheck};
 
 mod expanded;
 mod export;
 mod reading;
 pub use expanded::{expanded, ExpandedFinding, Screened};
-pub use export::{sympy_scripts, Script};
+pub use export::sympy_scripts;
 use reading::{Reading, Text};
 
 /// Which form of a formula was accepted.
@@ -184,25 +184,6 @@ fn accepted_quadratic(e: &RatFn, f: &FormulaItem) -> Vec<(Vec<String>, bool)> {
             (group.clone(), q)
         })
         .collect()
-}
-
-/// The formula with the sign of the first term of its numerator flipped (a single-term
-/// numerator gets `+1` instead, so that a proportional check cannot absorb the change).
-pub fn flip_one_term(e: &RatFn) -> Option<(Monomial, RatFn)> {
-    let (m, c) = e.num.first_term()?;
-    let term = &Poly::from_monomial(m.clone()).scale(&c);
-    let num = if e.num.len() == 1 {
-        &e.num + &Poly::int(1)
-    } else {
-        &e.num - &term.scale(&BigRational::from_integer(2.into()))
-    };
-    Some((
-        m.clone(),
-        RatFn {
-            num,
-            den: e.den.clone(),
-        },
-    ))
 }
 
 /// Printed arithmetic, evaluated exactly.

@@ -1,12 +1,12 @@
 //! Claims of §5.2 and §5.3 over seeded random scenes: the paper's four-point test, its
 //! independence of the arbitrary c, the assignment ranking, five points. The census is
-//! `study`; here it is judged, with its controls (wrong assignments and a
+//! [`crate::studies::identity`]; here it is judged, with its controls (wrong assignments and a
 //! point moved off the rigid body) as the power.
 
 use crate::check::{ClaimResult, Power, ResultBuilder, Tolerance, ToleranceSource, Value, Verdict};
-use crate::claims::identity_census::study::{census, distance_level, IdentityCensus};
 use crate::claims::identity_census::IdentityCensusCase;
 use crate::error::Result;
+use crate::studies::identity::{census, distance_level, IdentityCensus};
 
 /// A line test holds when the true assignment stays within `level` while every control (the
 /// best wrong assignment, the moved point) lies beyond it.

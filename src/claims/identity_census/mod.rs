@@ -2,7 +2,6 @@
 
 mod case;
 mod judge;
-pub mod study;
 
 pub use case::*;
 

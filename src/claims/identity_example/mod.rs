@@ -4,6 +4,7 @@ pub mod author_program;
 mod case;
 mod judge;
 pub mod panels;
+pub mod ranking;
 
 pub use case::*;
 

@@ -2,14 +2,12 @@
 
 mod case;
 mod judge;
-pub mod request;
-
-pub(crate) use judge::check_runs_of_body;
 
 pub use case::*;
 
 use crate::cases::Validator;
 use crate::check::{ClaimResult, ResultBuilder};
+use crate::claims::rerun::NoiseRuns;
 use crate::claims::ClaimKind;
 use crate::derivations::noise::{LevelResult, Study};
 use crate::error::Result;
@@ -31,6 +29,11 @@ impl ClaimKind for NoiseStudyCase {
 
     fn run(&self, b: &ResultBuilder, _earlier: &[ClaimResult]) -> Result<Vec<ClaimResult>> {
         judge::check(b, self)
+    }
+
+    fn noise_runs(&self) -> Option<Result<NoiseRuns>> {
+        let levels = self.levels.iter().map(|l| l.level.to_f64()).collect();
+        Some(study_of(self).map(|study| NoiseRuns { study, levels }))
     }
 }
 

@@ -13,9 +13,12 @@ use crate::check::{
 use crate::claims::p4f3_example::joint as p4f3_joint;
 use crate::claims::p4f3_example::study::{self as ex4, Conditioning, FigureFit, SolutionCheck};
 use crate::claims::p4f3_example::P4f3ExampleCase;
-use crate::derivations::noise::{LevelResult, METRICS};
+use crate::claims::shared::{setting, Context};
+use crate::derivations::noise::{LevelResult, Study, METRICS};
+use crate::derivations::solver::default_edge_names;
 use crate::error::Result;
 use crate::model::Body;
+use crate::studies::noise::run_both;
 use crate::studies::printed_matrix::{self, Audit};
 use crate::studies::rounding::Acceptance;
 use crate::studies::rounding::RoundingBox;
@@ -500,7 +503,9 @@ fn conditioning_result(
     r.verdict(Verdict::statistical(holds))
 }
 
-/// The printed noise runs, against random motions (both noise models) and the scene.
+/// The printed noise runs: the edge table's body under random motions (both noise models)
+/// and at the paper's own scene (`scene_results[i]` for level `i`), each level judged by the
+/// shared noise judge.
 fn noise_results(
     b: &ResultBuilder,
     case: &P4f3ExampleCase,
@@ -508,14 +513,38 @@ fn noise_results(
     squares: &[f64],
     scene_results: &[LevelResult],
 ) -> Vec<ClaimResult> {
-    crate::claims::noise_study::check_runs_of_body(
-        b,
-        &case.noise,
-        squares,
-        Body::new(body.to_vec()),
-        (case.trials, case.seed),
-        scene_results,
-    )
+    let random = Study {
+        solver: crate::model::StudySolver::P4f3,
+        body: Body::new(body.to_vec()),
+        frames: 3,
+        trials: case.trials,
+        seed: case.seed,
+        motions: None,
+    };
+    let eps: Vec<f64> = case.noise.iter().map(|l| l.level.to_f64()).collect();
+    let all: Vec<Vec<LevelResult>> = run_both(&random, &eps)
+        .into_iter()
+        .enumerate()
+        .map(|(i, pair)| {
+            let mut v = pair.to_vec();
+            v.extend(scene_results.get(i).cloned());
+            v
+        })
+        .collect();
+    let ctx = Context {
+        truth: squares,
+        names: &default_edge_names(squares.len()),
+        trials: case.trials,
+        seed: case.seed,
+        setting: setting(squares.len(), random.frames),
+        scene: !scene_results.is_empty(),
+    };
+    let mut out = Vec::new();
+    for (i, (lv, res)) in case.noise.iter().zip(&all).enumerate() {
+        let neighbour = all.get(i + 1).or(i.checked_sub(1).and_then(|j| all.get(j)));
+        out.extend(ctx.level(b, lv, false, res, neighbour.map(|n| n.as_slice())));
+    }
+    out
 }
 
 #[cfg(test)]

@@ -9,8 +9,12 @@ pub use case::*;
 
 use crate::cases::Validator;
 use crate::check::{ClaimResult, ResultBuilder};
+use crate::claims::rerun::NoiseRuns;
 use crate::claims::ClaimKind;
+use crate::derivations::noise::Study;
 use crate::error::Result;
+use crate::model::StudySolver;
+use crate::studies::noise::body_of;
 
 impl ClaimKind for P4f3ExampleCase {
     fn trials(&self) -> Vec<(&'static str, usize)> {
@@ -28,5 +32,22 @@ impl ClaimKind for P4f3ExampleCase {
 
     fn run(&self, b: &ResultBuilder, _earlier: &[ClaimResult]) -> Result<Vec<ClaimResult>> {
         judge::check(b, self)
+    }
+
+    /// §4's printed runs: the edge table's body under random motions, as the report runs them.
+    fn noise_runs(&self) -> Option<Result<NoiseRuns>> {
+        let squares: Vec<f64> = self.body.squares.iter().map(|s| s.to_f64()).collect();
+        let levels = self.noise.iter().map(|l| l.level.to_f64()).collect();
+        Some(body_of(&[], &squares).map(|body| NoiseRuns {
+            study: Study {
+                solver: StudySolver::P4f3,
+                body,
+                frames: 3,
+                trials: self.trials,
+                seed: self.seed,
+                motions: None,
+            },
+            levels,
+        }))
     }
 }

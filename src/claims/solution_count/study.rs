@@ -10,7 +10,7 @@
 //! structure-and-motion solution (gauge: frame 1's rotation and P fixed) is a root z with one
 //! sign per frame: the rotation into frame i is then unique. The polynomial whose roots are
 //! t = Σ kᵢ sᵢ over all solutions is obtained by eliminating each sᵢ (a resultant with
-//! sᵢ² − wᵢ) and then z (the norm from ℚ[z]/(q)); its square-free degree counts the complex
+//! sᵢ² − wᵢ) and then z (the norm from ℚ\[z\]/(q)); its square-free degree counts the complex
 //! solutions, its Sturm count the real ones.
 
 use num_rational::BigRational;

@@ -57,7 +57,7 @@ impl ClaimKind for SourceErrataCase {
             .zip(&results)
             .map(|(f, r)| {
                 let shown = crate::claims::audit::Shown {
-                    place: crate::claims::formula_audit::Place {
+                    place: crate::claims::shared::Place {
                         section: r.section.clone(),
                         label: None,
                         macros: Vec::new(),

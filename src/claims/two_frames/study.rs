@@ -92,7 +92,7 @@ pub fn family_census(
             out.truth_found += usize::from(d <= member_bound(f1, f2, beta));
         }
         let mut moved = f2.clone();
-        let size = crate::claims::identity_census::study::image_size(f2);
+        let size = crate::model::image_size(f2);
         if let Some(last) = moved.last_mut() {
             *last += Vector2::new(shift * size, 0.0);
         }

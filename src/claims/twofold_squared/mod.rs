@@ -38,6 +38,10 @@ impl ClaimKind for TwofoldCase {
         true
     }
 
+    fn audit_in_full(&self) -> Option<Result<crate::claims::audit::InFull>> {
+        Some(judge::audit(self).map(crate::claims::audit::InFull::TwofoldSquared))
+    }
+
     fn audit_items(
         &self,
         b: &ResultBuilder,
@@ -50,7 +54,7 @@ impl ClaimKind for TwofoldCase {
         }
         let (r, derived) = judge::audit_item(b, self)?;
         let shown = crate::claims::audit::Shown {
-            place: crate::claims::formula_audit::Place {
+            place: crate::claims::shared::Place {
                 section: source.section.clone(),
                 label: source.label.clone(),
                 macros: Vec::new(),

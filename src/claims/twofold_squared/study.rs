@@ -6,12 +6,11 @@ use num_rational::BigRational;
 use num_traits::One;
 
 use crate::algebra::{Monomial, Poly, RatFn};
-use crate::claims::formula_audit::study::flip_one_term;
 use crate::derivations::twofold::{
     relation_census, sign_class_product, twofold_squared, RelationCensus,
 };
 use crate::error::{Error, Result};
-use crate::studies::points::{agree_at_points, PointCheck};
+use crate::studies::points::{agree_at_points, flip_one_term, PointCheck};
 
 /// The printed polynomial against the derivation.
 #[derive(Clone, Debug)]

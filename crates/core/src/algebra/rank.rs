@@ -80,7 +80,7 @@ fn inv_mod(a: u64) -> u64 {
     acc
 }
 
-/// Rank modulo [`PRIME`]; `None` if a denominator vanishes modulo the prime.
+/// Rank modulo the word prime `PRIME`; `None` if a denominator vanishes modulo the prime.
 pub fn modular_rank(rows: &[Vec<BigRational>]) -> Option<usize> {
     let mut a: Vec<Vec<u64>> = rows
         .iter()

@@ -27,7 +27,7 @@ pub struct Elimination {
     pub slope: [f64; 3],
     /// Intercepts (A_Cst, B_Cst, 0).
     pub intercept: [f64; 3],
-    /// Quadratic in t: q[0] + q[1] t + q[2] t².
+    /// Quadratic in t: `q[0] + q[1] t + q[2] t²`.
     pub quadratic: [f64; 3],
 }
 

@@ -22,3 +22,11 @@ pub fn point_line_distance(x: Vector2<f64>, a: Vector2<f64>, b: Vector2<f64>) ->
         (dir.x * off.y - dir.y * off.x).abs() / n
     }
 }
+
+/// The image size: the largest distance of a point from the centroid.
+pub fn image_size(f: &[Vector2<f64>]) -> f64 {
+    let m = f.iter().sum::<Vector2<f64>>() / f.len().max(1) as f64;
+    f.iter()
+        .map(|p| (p - m).norm())
+        .fold(f64::MIN_POSITIVE, f64::max)
+}

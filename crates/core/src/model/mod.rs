@@ -10,7 +10,7 @@ use rand_chacha::ChaCha8Rng;
 use crate::error::{Error, Result};
 
 pub mod image;
-pub use image::point_line_distance;
+pub use image::{image_size, point_line_distance};
 
 /// The seeded, portable generator used everywhere (ChaCha8: same stream on every platform).
 pub fn rng(seed: u64) -> ChaCha8Rng {

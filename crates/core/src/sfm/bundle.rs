@@ -1,5 +1,5 @@
 //! Bundle adjustment: Levenberg–Marquardt on the orthographic reprojection error over the
-//! points, the rotations (a local update R·exp([δ]×), three parameters) and the image
+//! points, the rotations (a local update R·exp(\[δ\]×), three parameters) and the image
 //! translations (two), with the normal equations reduced by the Schur complement on the 3 × 3
 //! point blocks to a dense 5k × 5k camera system, accumulated by matrix products over chunks
 //! of points and factored by a blocked Cholesky (`algebra::cholesky`).

@@ -9,10 +9,10 @@
 //! depth-sign patterns, the other frames resected from the points they place. With a
 //! threshold, the best sample puts the most observations within it of their reprojections;
 //! without one, the best has the least median residual (least median of squares), and the
-//! threshold comes from that median ([`threshold`](super::threshold): the Rayleigh rule on
+//! threshold comes from that median ([`threshold`]: the Rayleigh rule on
 //! residual norms).
 //!
-//! The best sample's cameras judge every observation ([`judge`](super::judge): a point keeps
+//! The best sample's cameras judge every observation ([`judge`]: a point keeps
 //! the images its cameras explain, at least three of them, or both of two). The kept images
 //! go on to Tomasi–Kanade (or, with dropped images, the gaps machinery) and bundle
 //! adjustment; that fit's residuals give the threshold again (σ now corrected for the fit's
@@ -53,7 +53,7 @@ pub const HUBER_CORNER: f64 = 1.345;
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct RansacOptions {
     /// Largest distance (image units) from an image to its reprojection for an inlier;
-    /// `None`: from the data (see [`threshold`](super::threshold)).
+    /// `None`: from the data (see [`threshold`]).
     pub threshold: Option<f64>,
     /// The seed of the sample generator.
     pub seed: u64,

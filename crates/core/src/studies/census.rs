@@ -19,14 +19,14 @@ pub struct P3f3Census {
     /// Scenes with 0, 1, 2 feasible edge solutions.
     pub feasible_counts: [usize; 3],
     /// Scenes whose true squared edges were among the feasible solutions, within the
-    /// first-order rounding bound [`forward_error_bound`](p3f3::forward_error_bound).
+    /// first-order rounding bound [`forward_error_bound`].
     pub truth_found: usize,
     /// Largest relative error of the true solution's recovery.
     pub max_truth_error: f64,
     /// Structure-and-motion solutions behind one edge solution (depth-sign combinations that
     /// reproject), counted up to the global mirror reversal; the same in every scene checked.
     pub motions_per_edge_solution: Vec<usize>,
-    /// Largest relative disagreement of the independent routes ([`validate`](p3f3::validate)) with the
+    /// Largest relative disagreement of the independent routes ([`validate`]) with the
     /// solver, over the first scenes (at most 200: the exact route is slow).
     pub max_route_disagreement: f64,
     /// Scenes validated, and how many of them every route found the same number of roots.

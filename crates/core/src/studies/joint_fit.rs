@@ -254,7 +254,7 @@ pub type Residuals<'a> = &'a dyn Fn(&[f64]) -> Option<Vec<f64>>;
 /// The Jacobian of [`Residuals`] (`None`: undefined there).
 pub type ResidualJacobian<'a> = &'a dyn Fn(&[f64]) -> Option<DMatrix<f64>>;
 
-/// Minimise the largest |rᵢ| of `f` from `x0`: the Lᵖ stages of [`STAGES`], least squares
+/// Minimise the largest |rᵢ| of `f` from `x0`: the Lᵖ stages of `STAGES`, least squares
 /// first, with central-difference Jacobians. `None` when `f` is undefined at the start.
 pub fn lp_minimax(f: Residuals, x0: &[f64]) -> Option<Vec<f64>> {
     lp_minimax_with(f, None, x0)

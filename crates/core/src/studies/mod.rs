@@ -5,6 +5,7 @@
 pub mod census;
 pub mod exact_views;
 pub mod family_samples;
+pub mod identity;
 pub mod joint_fit;
 pub mod noise;
 pub mod points;

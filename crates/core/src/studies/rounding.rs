@@ -35,7 +35,7 @@ pub fn reproduce(b: &RoundingBox, scaled: &dyn Fn(&[f64]) -> Option<Vec<f64>>) -
 }
 
 /// [`reproduce`] for more targets than free coordinates, with directions the targets do not
-/// see: the shift, weighted by [`SHIFT_WEIGHT`], joins the residuals.
+/// see: the shift, weighted by `SHIFT_WEIGHT`, joins the residuals.
 pub fn reproduce_gauged(
     b: &RoundingBox,
     scaled: &dyn Fn(&[f64]) -> Option<Vec<f64>>,

@@ -7,6 +7,7 @@ mod algebra_props;
 mod derivations;
 mod limits;
 mod model;
+mod numfmt;
 mod sfm;
 /// Property tests of the solvers on seeded random scenes, generic and degenerate.
 mod solver_props;
@@ -18,4 +19,30 @@ fn truth(scene: &orthocheck_core::model::Scene) -> Vec<f64> {
         .iter()
         .map(|&(i, j)| scene.body.squared_distance(i, j))
         .collect()
+}
+
+/// The library is built without `cfg(test)` (`[lib] test = false`): a test written inside it
+/// would never run, so every unit test lives here.
+#[test]
+fn no_test_hides_in_the_library() {
+    let mut stack = vec![std::path::PathBuf::from(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/src"
+    ))];
+    let mut read = 0;
+    while let Some(dir) = stack.pop() {
+        for entry in std::fs::read_dir(&dir).unwrap().flatten() {
+            let path = entry.path();
+            if path.is_dir() {
+                stack.push(path);
+            } else if path.extension().is_some_and(|e| e == "rs") {
+                let text = std::fs::read_to_string(&path).unwrap();
+                for mark in ["#[test]", "#[cfg(test)]"] {
+                    assert!(!text.contains(mark), "{} holds {mark}", path.display());
+                }
+                read += 1;
+            }
+        }
+    }
+    assert!(read >= 50, "only {read} files read");
 }

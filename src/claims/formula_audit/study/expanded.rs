@@ -12,7 +12,7 @@ use num_traits::One;
 use rayon::prelude::*;
 
 use super::reading::{Reading, Text};
-use super::{accepted_quadratic, flip_one_term, Form, Judged};
+use super::{accepted_quadratic, Form, Judged};
 use crate::algebra::modp::{agree_mod_p, proportional_mod_p, ModPAgreement};
 use crate::algebra::{Monomial, Poly, RatFn};
 use crate::claims::formula_audit::{FormulaAuditCase, FormulaItem, Relation};
@@ -20,6 +20,7 @@ use crate::derivations::appendix_a::in_squares;
 use crate::derivations::formulas::derived;
 use crate::derivations::twofold::frame_equation;
 use crate::error::{Error, Result};
+use crate::studies::points::flip_one_term;
 
 /// One form run through the screen and, when it passes, the exact comparison.
 #[derive(Clone, Debug)]

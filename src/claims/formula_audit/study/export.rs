@@ -11,6 +11,7 @@ use num_rational::BigRational;
 use super::expanded::Expansions;
 use super::{expanded, formulas};
 use crate::algebra::{Poly, RatFn};
+use crate::claims::audit::Script;
 use crate::claims::formula_audit::FormulaAuditCase;
 use crate::derivations::formulas::derived;
 use crate::error::{Error, Result};
@@ -49,17 +50,6 @@ def parse(text, defs, keep=()):
 
 defs = {}
 "#;
-
-/// One exported script.
-#[derive(Clone, Debug)]
-pub struct Script {
-    /// The audit item's id (`claim/suffix`).
-    pub id: String,
-    /// A file name for it (the id with `/` as `__`, `.py`).
-    pub file: String,
-    /// The Python source.
-    pub source: String,
-}
 
 /// A polynomial as a Python/SymPy expression string: exact rationals, `**` powers.
 fn py_poly(p: &Poly) -> String {

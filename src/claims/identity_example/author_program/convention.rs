@@ -6,9 +6,9 @@
 use nalgebra::Vector2;
 
 use super::program::replay;
-use crate::claims::identity_census::study::{distance_level, image_size};
 use crate::derivations::identity::{b_squared, paper_tests, smallest_c};
-use crate::model::Scene;
+use crate::model::{image_size, Scene};
+use crate::studies::identity::distance_level;
 
 /// What the seeded scenes give.
 #[derive(Clone, Debug, Default, PartialEq)]

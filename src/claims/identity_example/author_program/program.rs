@@ -201,7 +201,7 @@ fn extras(b: &ProgramBlock) -> Vec<f64> {
     v
 }
 
-/// [`run`] with first-order bounds: every coordinate of both frames ±`coord_half`, d0 ±
+/// [`replay`] with first-order bounds: every coordinate of both frames ±`coord_half`, d0 ±
 /// `d0_half`.
 pub fn run_bounded(
     f1: &[Vector2<f64>; 4],

@@ -4,10 +4,11 @@
 
 use super::blocks::Block;
 use super::{ClaimResult, Power, ResultBuilder, Tolerance, ToleranceSource, Value, Verdict};
-use crate::claims::identity_census::study::{distance_level, rank_example, ExampleRanking};
 use crate::claims::identity_example::author_program::convention::{census, ConventionCensus};
 use crate::claims::identity_example::author_program::Example;
+use crate::claims::identity_example::ranking::{rank_example, ExampleRanking};
 use crate::claims::identity_example::IdentityExampleCase;
+use crate::studies::identity::distance_level;
 
 pub(super) fn results(
     b: &ResultBuilder,

@@ -11,7 +11,7 @@ use super::monomial::{with_key, Key};
 use super::MPoly;
 
 impl MPoly {
-    /// `self / d` when `d` divides `self` exactly in ℤ[x], else `None` (also for `d = 0`).
+    /// `self / d` when `d` divides `self` exactly in ℤ\[x\], else `None` (also for `d = 0`).
     pub fn div_exact(&self, d: &MPoly) -> Option<MPoly> {
         if d.is_zero() {
             return None;

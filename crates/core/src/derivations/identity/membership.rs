@@ -20,9 +20,9 @@ const EPIPOLAR_DOF: usize = 3;
 /// many drawn with a fixed seed (the same input gives the same tolerance).
 const LMEDS_SUBSETS: usize = 500;
 
-/// The default tolerance of [`membership`], from the data's own noise, by least median of
+/// The default tolerance of [`membership()`], from the data's own noise, by least median of
 /// squares (Rousseeuw): the epipolar geometry of every four-point subset (or
-/// [`LMEDS_SUBSETS`] of them) is fitted exactly, the subset whose h-th smallest distance over
+/// `LMEDS_SUBSETS` of them) is fitted exactly, the subset whose h-th smallest distance over
 /// all points (h = ⌊(n + 4)/2⌋, Rousseeuw's choice for 3 degrees of freedom) is least is
 /// kept, and σ = 1.4826 (1 + 5/(n − 3)) × that distance (the finite-sample correction). The tolerance is [`MEMBER_SIGMAS`] σ, at least
 /// 2¹⁰ ε (exact data). Up to half the points may be foreign and the scale still holds.

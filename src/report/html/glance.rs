@@ -4,38 +4,14 @@
 
 use std::fmt::Write as _;
 
-use super::html::{anchor, badge, escape, Page};
-use super::math::{math_html, prose_html};
-use super::values::power_phrase;
-use crate::check::Role;
-use crate::check::{ClaimResult, ToleranceSource, Value, Verdict};
-
-/// Whether a claim rests on a noise study (its verdict is statistical, or its tolerance is a
-/// Monte Carlo percentile).
-pub fn is_statistical(c: &ClaimResult) -> bool {
-    matches!(
-        c.verdict,
-        Verdict::StatisticalHolds | Verdict::StatisticalFails
-    ) || c
-        .tolerance
-        .as_ref()
-        .is_some_and(|t| matches!(t.source, ToleranceSource::MonteCarlo { .. }))
-}
-
-/// What an erratum's printed side shows: the LaTeX as printed when the check kept it, else
-/// every printed value.
-pub fn printed_side(c: &ClaimResult) -> Vec<&crate::check::Quantity> {
-    let latex: Vec<_> = c
-        .printed
-        .iter()
-        .filter(|q| q.role == Role::AsPrinted)
-        .collect();
-    if latex.is_empty() {
-        c.printed.iter().collect()
-    } else {
-        latex
-    }
-}
+use super::page::{badge, Page};
+use crate::check::{ClaimResult, Value, Verdict};
+use crate::mathtext::{escape, math_html, prose_html};
+use crate::report::layout::anchor;
+use crate::report::values::{power_phrase, trials_of, value_text};
+use crate::report::words::{
+    correction_is_prose, defect_sentence, holds_word, is_statistical, printed_side, Why, LISTS,
+};
 
 fn side(page: &Page, qs: &[&crate::check::Quantity]) -> String {
     qs.iter()
@@ -47,18 +23,10 @@ fn side(page: &Page, qs: &[&crate::check::Quantity]) -> String {
                     math_html(text, &page.macros, true)
                 )
             }
-            v => escape(&super::values::value_text(v)),
+            v => escape(&value_text(v)),
         })
         .collect::<Vec<_>>()
         .join("; ")
-}
-
-/// Whether a claim's correction is words rather than a formula: none of what it printed is
-/// a formula.
-pub(crate) fn correction_is_prose(c: &ClaimResult) -> bool {
-    !c.printed
-        .iter()
-        .any(|q| matches!(q.value, Value::Formula { .. }))
 }
 
 /// A claim's correction as HTML: words as running text, a formula as mathematics.
@@ -182,23 +150,6 @@ fn claim_link(c: &ClaimResult) -> String {
     )
 }
 
-/// The verdicts listed one by one at a glance, with their headings.
-pub const LISTS: [(&str, Verdict); 4] = [
-    ("Contradicted", Verdict::Contradicted),
-    (
-        "Cannot be decided (the paper lacks the data)",
-        Verdict::NotReproducible,
-    ),
-    (
-        "Inconclusive (the check cannot discriminate)",
-        Verdict::Inconclusive,
-    ),
-    (
-        "Holds except on a case the paper never names",
-        Verdict::HoldsGenerically,
-    ),
-];
-
 /// The at-a-glance part of the page.
 pub(crate) fn push_glance(s: &mut String, page: &Page) {
     s.push_str("<section aria-labelledby=\"glance\"><h2 id=\"glance\">At a glance</h2>");
@@ -217,24 +168,13 @@ pub(crate) fn push_glance(s: &mut String, page: &Page) {
                 badge(c.verdict),
                 claim_link(c),
                 escape(&c.section),
-                page.quantities(&c.computed, super::values::trials_of(c)),
+                page.quantities(&c.computed, trials_of(c)),
                 escape(&power_phrase(&c.power))
             );
         }
         s.push_str("</ul>");
     }
     s.push_str("</section>");
-}
-
-/// Whether a statistical claim holds, in one word.
-pub fn holds_word(v: Verdict) -> &'static str {
-    match v {
-        Verdict::StatisticalHolds => "holds",
-        Verdict::StatisticalFails => "fails",
-        Verdict::Inconclusive | Verdict::NotReproducible => "undecided",
-        v if v.is_positive() => "holds",
-        _ => "fails",
-    }
 }
 
 fn push_statistical(s: &mut String, page: &Page) {
@@ -271,12 +211,12 @@ fn push_errata(s: &mut String, page: &Page) {
     }
     s.push_str("<h3>Errata: printed → what is wrong → corrected</h3>");
     for c in errata {
-        let wrong = match super::findings::defect_sentence(c) {
-            super::findings::Why::Text(d) => format!(
+        let wrong = match defect_sentence(c) {
+            Why::Text(d) => format!(
                 "<p class=\"defect\"><strong>what is wrong:</strong> {}</p>",
                 page.linked(&d)
             ),
-            super::findings::Why::ShouldRead(_) => String::new(),
+            Why::ShouldRead(_) => String::new(),
         };
         let _ = write!(
             s,

@@ -3,127 +3,24 @@
 //! strip, the contents in the paper's order, the claims at a glance, a filter by verdict that
 //! works without JavaScript (`:target`), then every claim with its evidence and figures.
 
-use std::collections::BTreeSet;
+mod findings;
+mod glance;
+mod page;
+
 use std::fmt::Write as _;
 
-use super::layout::{self, section_anchor, verdict_anchor, Section, GROUPS};
-use super::math::{math_html, quote_html, Macros};
-use super::values::{power_phrase, quantities_shown, tolerance_text, trials_of};
-use super::Report;
 use crate::check::figure::Figure;
-use crate::check::{ClaimResult, Quantity, Role, Value, Verdict};
-
-pub use super::layout::anchor;
+use crate::check::{ClaimResult, Verdict};
+use crate::report::layout::{self, section_anchor, verdict_anchor, Section, GROUPS};
+use crate::report::model::Report;
+use crate::report::values::{power_phrase, tolerance_text, trials_of};
+use crate::report::words::{defect_sentence, Why};
+use crate::report::{evidence, style, svg};
+use page::{plain_label, Page};
 
 pub use crate::mathtext::escape;
-
-/// What every part of the page needs: the claims in order, the ids a text may link, the
-/// paper's macros.
-pub(crate) struct Page<'a> {
-    pub(crate) report: &'a Report,
-    pub(crate) ordered: Vec<&'a ClaimResult>,
-    ids: BTreeSet<String>,
-    pub(crate) macros: Macros,
-    labels: std::collections::BTreeMap<String, String>,
-}
-
-impl<'a> Page<'a> {
-    fn new(report: &'a Report) -> Page<'a> {
-        Page {
-            report,
-            ordered: layout::ordered(report),
-            ids: layout::linkable_ids(report),
-            macros: Macros::parse(report.paper.as_ref().map_or("", |p| p.macros.as_str())),
-            labels: report
-                .paper
-                .as_ref()
-                .map(|p| p.labels.clone())
-                .unwrap_or_default(),
-        }
-    }
-
-    /// Escaped text with every claim id it mentions turned into a link.
-    pub(crate) fn linked(&self, text: &str) -> String {
-        let mut s = String::new();
-        for (part, is_id) in layout::split_ids(text, &self.ids) {
-            match layout::target_of(&self.ordered, part) {
-                Some(c) if is_id => {
-                    let _ = write!(
-                        s,
-                        "<a href=\"#{}\"><code>{}</code></a>",
-                        anchor(&c.id),
-                        escape(part)
-                    );
-                }
-                _ => s.push_str(&plain_label(&self.readable(part))),
-            }
-        }
-        s
-    }
-
-    /// `text` with the paper's label names as the report names them.
-    pub(crate) fn readable(&self, text: &str) -> String {
-        layout::readable_labels(text, &self.labels)
-    }
-
-    /// A quote of the paper as HTML: running text or mathematics, label names readable.
-    pub(crate) fn quote(&self, text: &str) -> String {
-        self.readable(&quote_html(text, &self.macros))
-    }
-
-    /// A value as HTML: formulas as mathematics, labels with their ids linked.
-    pub(crate) fn value(&self, role: &Role, v: &Value, trials: Option<u64>) -> String {
-        match v {
-            Value::Formula { text } => format!(
-                "<span class=\"math\">{}</span>",
-                math_html(text, &self.macros, true)
-            ),
-            Value::Label { text } => self.linked(text),
-            Value::Quote { text } => self.quote(text),
-            v => escape(&super::values::shown_text(role, v, trials)),
-        }
-    }
-
-    /// Named values on one line.
-    pub(crate) fn quantities(&self, qs: &[Quantity], trials: Option<u64>) -> String {
-        if qs.iter().all(|q| {
-            !matches!(
-                q.value,
-                Value::Formula { .. } | Value::Label { .. } | Value::Quote { .. }
-            )
-        }) {
-            return escape(&quantities_shown(qs, trials));
-        }
-        super::values::quantities_line(qs, escape, |q| self.value(&q.role, &q.value, trials))
-    }
-}
-
-/// Escaped text in which a backslash command names a macro (`\faca` → `faca` in code), so
-/// that no raw LaTeX reaches the reader.
-fn plain_label(text: &str) -> String {
-    let mut s = String::new();
-    let mut rest = text;
-    while let Some(at) = rest.find('\\') {
-        s.push_str(&escape(&rest[..at]));
-        let after = &rest[at + 1..];
-        let n = after
-            .find(|c: char| !c.is_ascii_alphabetic())
-            .unwrap_or(after.len());
-        if n == 0 {
-            s.push('\\');
-        } else {
-            let _ = write!(s, "<code>{}</code>", &after[..n]);
-        }
-        rest = &after[n..];
-    }
-    s.push_str(&escape(rest));
-    s
-}
-
-/// A verdict badge.
-pub fn badge(v: Verdict) -> String {
-    format!("<span class=\"badge v-{0}\">{0}</span>", v.name())
-}
+pub use crate::report::layout::anchor;
+pub use page::badge;
 
 /// The whole page.
 pub fn render(r: &Report) -> String {
@@ -133,10 +30,10 @@ pub fn render(r: &Report) -> String {
          <meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">",
     );
     push_header(&mut s, r);
-    super::findings::push_findings_html(&mut s, &page);
+    findings::push_findings_html(&mut s, &page);
     push_strip(&mut s, r);
     push_contents(&mut s, &page);
-    super::glance::push_glance(&mut s, &page);
+    glance::push_glance(&mut s, &page);
     push_verdict_lists(&mut s, &page);
     s.push_str("<main id=\"claims\">");
     let sections = layout::sections(r);
@@ -174,7 +71,7 @@ fn push_header(s: &mut String, r: &Report) {
         s,
         "<title>Reproducibility report — {}</title><style>{}</style></head><body>",
         escape(title),
-        super::style::css()
+        style::css()
     );
     let p = &r.provenance;
     let _ = write!(
@@ -353,7 +250,7 @@ fn claim_html(page: &Page, c: &ClaimResult, figures: &[&Figure], h: usize) -> St
         escape(&c.section)
     );
     if matches!(c.verdict, Verdict::Erratum | Verdict::Note)
-        && let super::findings::Why::Text(d) = super::findings::defect_sentence(c)
+        && let Why::Text(d) = defect_sentence(c)
     {
         let _ = write!(
             s,
@@ -390,7 +287,7 @@ fn claim_html(page: &Page, c: &ClaimResult, figures: &[&Figure], h: usize) -> St
     }
     s.push_str("</dl>");
     if c.correction.is_some() {
-        s.push_str(&super::glance::fix_html(page, c));
+        s.push_str(&glance::fix_html(page, c));
     }
     s.push_str(&evidence_html(page, c, trials));
     for f in figures {
@@ -402,7 +299,7 @@ fn claim_html(page: &Page, c: &ClaimResult, figures: &[&Figure], h: usize) -> St
 
 /// The folded evidence: the method, the single details, the per-model tables.
 fn evidence_html(page: &Page, c: &ClaimResult, trials: Option<u64>) -> String {
-    let ev = super::evidence::layout(c);
+    let ev = evidence::layout(c);
     let mut s = format!(
         "<details class=\"evidence\"><summary>evidence</summary><p><strong>method:</strong> {}</p>",
         page.linked(&c.evidence.method)
@@ -454,13 +351,13 @@ fn evidence_html(page: &Page, c: &ClaimResult, trials: Option<u64>) -> String {
 /// SVG beside the plot; the caption says in words what the figure shows.
 pub fn figure_html(f: &Figure) -> String {
     // a figure with a minimum width scrolls sideways in its box on a narrow screen
-    let panels = if super::svg::min_width(f).is_some() {
+    let panels = if svg::min_width(f).is_some() {
         "panels scroll"
     } else {
         "panels"
     };
     let mut s = format!("<figure id=\"{}\"><div class=\"{panels}\">", escape(&f.id));
-    s.push_str(&super::svg::figure_svg(f, false));
+    s.push_str(&svg::figure_svg(f, false));
     let _ = write!(
         s,
         "</div><figcaption><strong>{}</strong> — {}</figcaption></figure>",

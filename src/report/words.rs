@@ -1,15 +1,11 @@
-//! What was found, in sentences: the first thing the report says. What holds (by kind), what is
-//! wrong in the paper (each erratum with its defect), what fails, what cannot be decided and
-//! why, what is inconclusive and why; then what each verdict word means.
+//! What the report says in words, the same in every output: the findings' sentences and
+//! why each claim is listed, which claims are statistical, an erratum's printed side, and the
+//! verdicts the glance lists.
 
-use std::fmt::Write as _;
-
-use super::html::{anchor, escape, Page};
 use super::layout::GROUPS;
-use super::math::{math_text, prose_text_in, Macros};
 use super::values::value_text;
 use crate::check::Role;
-use crate::check::{ClaimResult, Verdict};
+use crate::check::{ClaimResult, ToleranceSource, Value, Verdict};
 
 /// One paragraph of the summary: a sentence and the claims it names, each with a phrase.
 pub(crate) struct Finding<'a> {
@@ -143,100 +139,76 @@ pub(crate) fn findings<'a>(ordered: &[&'a ClaimResult]) -> Vec<Finding<'a>> {
     out
 }
 
-/// The summary as HTML, with every claim linked, and the verdict words explained.
-pub(crate) fn push_findings_html(s: &mut String, page: &Page) {
-    s.push_str("<section id=\"findings\" aria-labelledby=\"findings-h\"><h2 id=\"findings-h\">What was found</h2>");
-    for f in findings(&page.ordered) {
-        let _ = write!(
-            s,
-            "<p><strong>{}.</strong> {}</p>",
-            escape(&capitalised(f.group)),
-            escape(&f.sentence)
-        );
-        if f.items.is_empty() {
-            continue;
-        }
-        s.push_str("<ul class=\"findings\">");
-        for (c, why) in &f.items {
-            let text = match why {
-                Why::Text(t) => page.linked(t),
-                Why::ShouldRead(_) => {
-                    format!("should read {}", super::glance::correction_html(page, c))
-                }
-            };
-            let _ = write!(
-                s,
-                "<li><a href=\"#{}\"><code>{}</code></a> (§{}): {text}</li>",
-                anchor(&c.id),
-                escape(&c.id),
-                escape(&c.section),
-            );
-        }
-        s.push_str("</ul>");
-    }
-    s.push_str("<details><summary>what the verdict words mean</summary><dl class=\"verdicts\">");
-    for v in Verdict::ALL {
-        let _ = write!(
-            s,
-            "<dt>{}</dt><dd>{}</dd>",
-            super::html::badge(v),
-            escape(v.meaning())
-        );
-    }
-    s.push_str("</dl></details></section>");
-}
-
-/// The summary as Markdown.
-pub(crate) fn push_findings_markdown(
-    s: &mut String,
-    ordered: &[&ClaimResult],
-    macros: &Macros,
-    labels: &std::collections::BTreeMap<String, String>,
-) {
-    let plain = |t: &str| super::markdown::plain_text(&super::layout::readable_labels(t, labels));
-    s.push_str("## What was found\n\n");
-    for f in findings(ordered) {
-        let _ = writeln!(s, "**{}.** {}\n", capitalised(f.group), f.sentence);
-        for (c, why) in &f.items {
-            let text = match why {
-                Why::Text(t) => plain(t),
-                Why::ShouldRead(t) if super::glance::correction_is_prose(c) => {
-                    format!(
-                        "should read: {}",
-                        super::markdown::plain_text(&prose_text_in(t, macros))
-                    )
-                }
-                Why::ShouldRead(t) => format!(
-                    "should read {}",
-                    super::markdown::plain_text(&math_text(t, macros, true))
-                ),
-            };
-            let _ = writeln!(
-                s,
-                "- [`{}`](#{}) (§{}): {text}",
-                c.id,
-                anchor(&c.id),
-                c.section,
-            );
-        }
-        if !f.items.is_empty() {
-            s.push('\n');
-        }
-    }
-    s.push_str("What the verdict words mean:\n\n");
-    for v in Verdict::ALL {
-        let _ = writeln!(s, "- `{}`: {}", v.name(), v.meaning());
-    }
-    s.push('\n');
-}
-
 /// "wrong in the paper" → "Wrong in the paper".
-fn capitalised(s: &str) -> String {
+pub(crate) fn capitalised(s: &str) -> String {
     let mut c = s.chars();
     c.next()
         .map(|f| f.to_uppercase().collect::<String>() + c.as_str())
         .unwrap_or_default()
 }
+
+/// Whether a claim rests on a noise study (its verdict is statistical, or its tolerance is a
+/// Monte Carlo percentile).
+pub fn is_statistical(c: &ClaimResult) -> bool {
+    matches!(
+        c.verdict,
+        Verdict::StatisticalHolds | Verdict::StatisticalFails
+    ) || c
+        .tolerance
+        .as_ref()
+        .is_some_and(|t| matches!(t.source, ToleranceSource::MonteCarlo { .. }))
+}
+
+/// What an erratum's printed side shows: the LaTeX as printed when the check kept it, else
+/// every printed value.
+pub fn printed_side(c: &ClaimResult) -> Vec<&crate::check::Quantity> {
+    let latex: Vec<_> = c
+        .printed
+        .iter()
+        .filter(|q| q.role == Role::AsPrinted)
+        .collect();
+    if latex.is_empty() {
+        c.printed.iter().collect()
+    } else {
+        latex
+    }
+}
+
+/// Whether a claim's correction is words rather than a formula: none of what it printed is
+/// a formula.
+pub(crate) fn correction_is_prose(c: &ClaimResult) -> bool {
+    !c.printed
+        .iter()
+        .any(|q| matches!(q.value, Value::Formula { .. }))
+}
+
+/// Whether a statistical claim holds, in one word.
+pub fn holds_word(v: Verdict) -> &'static str {
+    match v {
+        Verdict::StatisticalHolds => "holds",
+        Verdict::StatisticalFails => "fails",
+        Verdict::Inconclusive | Verdict::NotReproducible => "undecided",
+        v if v.is_positive() => "holds",
+        _ => "fails",
+    }
+}
+
+/// The verdicts listed one by one at a glance, with their headings.
+pub const LISTS: [(&str, Verdict); 4] = [
+    ("Contradicted", Verdict::Contradicted),
+    (
+        "Cannot be decided (the paper lacks the data)",
+        Verdict::NotReproducible,
+    ),
+    (
+        "Inconclusive (the check cannot discriminate)",
+        Verdict::Inconclusive,
+    ),
+    (
+        "Holds except on a case the paper never names",
+        Verdict::HoldsGenerically,
+    ),
+];
 
 #[cfg(test)]
 mod tests {

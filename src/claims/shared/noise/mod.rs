@@ -1,4 +1,5 @@
-//! Noise studies as the paper reports them.
+//! Noise studies as the paper reports them: the printed levels and their statements, and
+//! the judge of a level against its seeded distributions.
 
 use serde::Deserialize;
 
@@ -8,6 +9,11 @@ use crate::error::Result;
 
 pub use crate::check::noise::Direction;
 use crate::limits;
+
+mod figure;
+mod judge;
+
+pub(crate) use judge::{setting, Context};
 
 /// What the paper's symbols say the printed values are.
 #[derive(Clone, Copy, Debug, Deserialize, PartialEq, Eq, serde::Serialize)]

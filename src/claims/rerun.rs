@@ -1,7 +1,7 @@
-//! A noise study as the command line asks for it: a noise case of the paper with the user's
-//! levels, trials, seed and model in place of the case's own.
+//! `orthocheck noise`: the noise runs a case offers ([`super::ClaimKind::noise_runs`]), rerun
+//! with the user's levels, trials, seed and model in place of the case's own.
 
-use crate::claims::{Case, Check};
+use crate::claims::Case;
 use crate::derivations::noise::{run_levels, LevelSummary, Study};
 use crate::error::Error;
 
@@ -44,7 +44,7 @@ pub struct NoiseRequest {
 pub enum RequestError {
     /// No case has the id.
     NoCase,
-    /// The case is not a noise study.
+    /// The case has no noise runs.
     NotNoiseStudy,
     /// A level is negative, NaN or infinite.
     BadLevel(f64),
@@ -63,30 +63,14 @@ pub struct NoiseRun {
     pub model: Option<ModelChoice>,
 }
 
-/// A case's noise study and its levels: a noise case's own, or §4's printed runs (the edge
-/// table's body under random motions, as the report runs them).
-fn study_of_case(case: &Case) -> Result<(Study, Vec<f64>), RequestError> {
-    match &case.check {
-        Check::NoiseStudy(nc) => Ok((
-            super::study_of(nc).map_err(RequestError::Study)?,
-            nc.levels.iter().map(|l| l.level.to_f64()).collect(),
-        )),
-        Check::P4f3Example(p) => {
-            let squares: Vec<f64> = p.body.squares.iter().map(|s| s.to_f64()).collect();
-            let body =
-                crate::studies::noise::body_of(&[], &squares).map_err(RequestError::Study)?;
-            let study = Study {
-                solver: crate::model::StudySolver::P4f3,
-                body,
-                frames: 3,
-                trials: p.trials,
-                seed: p.seed,
-                motions: None,
-            };
-            Ok((study, p.noise.iter().map(|l| l.level.to_f64()).collect()))
-        }
-        _ => Err(RequestError::NotNoiseStudy),
-    }
+/// What a case offers `orthocheck noise` ([`super::ClaimKind::noise_runs`]): its noise
+/// study and the levels it prints.
+#[derive(Clone, Debug)]
+pub struct NoiseRuns {
+    /// The study as the case runs it.
+    pub study: Study,
+    /// The printed levels ε, in order.
+    pub levels: Vec<f64>,
 }
 
 impl NoiseRequest {
@@ -97,7 +81,15 @@ impl NoiseRequest {
             .iter()
             .find(|c| c.id == self.case)
             .ok_or(RequestError::NoCase)?;
-        let (mut study, case_levels) = study_of_case(case)?;
+        let NoiseRuns {
+            mut study,
+            levels: case_levels,
+        } = case
+            .check
+            .kind()
+            .noise_runs()
+            .ok_or(RequestError::NotNoiseStudy)?
+            .map_err(RequestError::Study)?;
         study.trials = self.trials.unwrap_or(study.trials);
         study.seed = self.seed.unwrap_or(study.seed);
         let levels: Vec<f64> = if self.levels.is_empty() {
@@ -147,8 +139,9 @@ mod tests {
         crate::cases::load_all::<crate::claims::Check>(std::path::Path::new(dir)).unwrap()
     }
 
+    /// The first case with noise runs, or without.
     fn first(cases: &[Case], noise: bool) -> String {
-        let is_noise = |c: &&Case| matches!(c.check, Check::NoiseStudy(_));
+        let is_noise = |c: &&Case| c.check.kind().noise_runs().is_some();
         let c = cases.iter().find(|c| is_noise(c) == noise).unwrap();
         c.id.clone()
     }

@@ -3,11 +3,11 @@
 //! drawn as vertical lines, the points where the judge reads each curve marked, and a caption
 //! that says in the judge's numbers why the level holds or fails.
 
-use super::Reading;
+use super::judge::Reading;
+use super::{Direction, NoiseLevel};
 use crate::check::figure::{ecdf, percent_text, Figure, Layer, Plot, Shape, Style};
 use crate::check::noise::{any_model, on_run, parts, Claim, Decision, Judged, Part, TYPICAL_BAND};
 use crate::check::ClaimResult;
-use crate::claims::shared::{Direction, NoiseLevel};
 use crate::derivations::noise::LevelResult;
 use crate::numfmt::sig;
 use crate::numfmt::{sampled_digits, sig_digits};
