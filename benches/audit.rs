@@ -6,14 +6,14 @@ use orthocheck::cases;
 use orthocheck::claims::audit::{audit_all, Wanted};
 
 fn audit(c: &mut Criterion) {
-    let all = cases::load_all::<orthocheck::claims::Check>(&orthocheck_benches::paper_cases())
+    let all = cases::load_all::<orthocheck::claims::CaseCheck>(&orthocheck_benches::paper_cases())
         .expect("the paper cases load");
     let mut g = c.benchmark_group("audit");
     g.sample_size(10);
     // the fixed cost of every command: reading, parsing and validating the case files
     g.bench_function("load_cases", |b| {
         b.iter(|| {
-            cases::load_all::<orthocheck::claims::Check>(&orthocheck_benches::paper_cases())
+            cases::load_all::<orthocheck::claims::CaseCheck>(&orthocheck_benches::paper_cases())
                 .expect("the paper cases load")
         })
     });

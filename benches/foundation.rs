@@ -6,7 +6,7 @@ use num_rational::BigRational;
 use num_traits::One;
 use orthocheck::algebra::{Poly, UPoly};
 use orthocheck::cases::load_case;
-use orthocheck::claims::Check;
+use orthocheck::claims::CaseCheck;
 use orthocheck::derivations::{dof, twofold};
 
 fn dof_grid(c: &mut Criterion) {
@@ -18,10 +18,10 @@ fn dof_grid(c: &mut Criterion) {
 
 fn twofold_identity(c: &mut Criterion) {
     // goal: < 1 ms for the exact verification of eq. p3f3sqr
-    let case: orthocheck::claims::Case =
+    let case: orthocheck::claims::PaperCase =
         load_case(&orthocheck_benches::paper_cases().join("twofold_squared.yaml"))
             .expect("case file");
-    let Check::TwofoldSquared(t) = case.check else {
+    let CaseCheck::TwofoldSquared(t) = case.check else {
         panic!("not a twofold case")
     };
     let printed = Poly::parse(&t.polynomial.printed).expect("formula");

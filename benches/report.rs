@@ -9,7 +9,7 @@ use orthocheck::cases;
 use orthocheck::report::{html, Report};
 
 fn report(c: &mut Criterion) {
-    let all = cases::load_all::<orthocheck::claims::Check>(&orthocheck_benches::paper_cases())
+    let all = cases::load_all::<orthocheck::claims::CaseCheck>(&orthocheck_benches::paper_cases())
         .expect("the paper cases load");
     let mut g = c.benchmark_group("report");
     g.sample_size(10);

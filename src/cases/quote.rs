@@ -60,10 +60,10 @@ fn collapse(s: &str) -> String {
 }
 
 /// How a quote reads for the comparison: its text, a function of it.
-pub type Reading<'a> = &'a dyn Fn(&str) -> String;
+pub type Notation<'a> = &'a dyn Fn(&str) -> String;
 
 /// The pieces of a quote abridged with "..." or "…", each read by `read` (empty ones dropped).
-fn pieces(quote: &str, read: Reading<'_>) -> Vec<String> {
+fn pieces(quote: &str, read: Notation<'_>) -> Vec<String> {
     quote
         .split(" ... ")
         .flat_map(|p| p.split('…'))
@@ -78,7 +78,7 @@ fn holds(
     first: usize,
     last: usize,
     pieces: &[String],
-    read: Reading<'_>,
+    read: Notation<'_>,
 ) -> bool {
     if pieces.is_empty() || first == 0 || last > text.lines.len() || first > last {
         return false;
@@ -102,7 +102,7 @@ pub fn quote_tight(
     first: usize,
     last: usize,
     quote: &str,
-    read: Reading<'_>,
+    read: Notation<'_>,
 ) -> bool {
     let p = pieces(quote, read);
     holds(text, first, last, &p, read)

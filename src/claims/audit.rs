@@ -1,7 +1,7 @@
 //! `orthocheck audit`: the items of every kind that audits the paper's formulas and text,
 //! each a claim result with what it shows beside it.
 
-use super::Case;
+use super::PaperCase;
 use crate::check::ClaimResult;
 use crate::check::ResultBuilder;
 use crate::claims::shared::Place;
@@ -68,7 +68,7 @@ impl Wanted<'_> {
 /// The audit items of the given cases that `wanted` asks for, in case order, each a claim
 /// result and what it shows: each kind gives its own ([`super::ClaimKind::audit_items`]) and
 /// computes only what is asked.
-pub fn audit_all(cases: &[Case], wanted: Wanted) -> Result<Vec<(ClaimResult, Shown)>> {
+pub fn audit_all(cases: &[PaperCase], wanted: Wanted) -> Result<Vec<(ClaimResult, Shown)>> {
     let mut out = Vec::new();
     for case in cases {
         let b = ResultBuilder::new(case);

@@ -36,10 +36,10 @@ pub mod two_frames;
 pub mod twofold_squared;
 
 /// A case file with its check, one of the registered kinds.
-pub type Case = crate::cases::Case<Check>;
+pub type PaperCase = crate::cases::Case<CaseCheck>;
 
 /// The cases, the paper file and the verification, the check of each case one of the kinds.
-pub type PaperInputs = crate::cases::PaperInputs<Check>;
+pub type PaperInputs = crate::cases::PaperInputs<CaseCheck>;
 
 /// What every kind of claim does. The registry calls these in this order: `trials` and
 /// `validate` as the file is read, then `run`, restatements last.
@@ -117,26 +117,26 @@ pub trait ClaimKind {
 }
 
 /// The registry: `name => Variant(Type)`, one line per kind, `name` its folder and the key
-/// under `check:` (serde's snake case of `Variant`, tested). It declares [`Check`] and its one
+/// under `check:` (serde's snake case of `Variant`, tested). It declares [`CaseCheck`] and its one
 /// dispatch to the kind's [`ClaimKind`].
 macro_rules! kinds {
     ($($(#[$doc:meta])* $name:ident => $variant:ident($ty:ty),)*) => {
         /// The `check:` of a case file: one variant per registered kind.
         #[derive(Clone, Debug, Deserialize, PartialEq)]
         #[serde(rename_all = "snake_case", deny_unknown_fields)]
-        pub enum Check {
+        pub enum CaseCheck {
             $($(#[$doc])* $variant($ty),)*
         }
 
-        impl Check {
+        impl CaseCheck {
             /// The kind of this check.
             pub fn kind(&self) -> &dyn ClaimKind {
-                match self { $(Check::$variant(c) => c,)* }
+                match self { $(CaseCheck::$variant(c) => c,)* }
             }
 
             /// The kind's name, as case files and folders name it.
             pub fn name(&self) -> &'static str {
-                match self { $(Check::$variant(_) => stringify!($name),)* }
+                match self { $(CaseCheck::$variant(_) => stringify!($name),)* }
             }
         }
 
@@ -160,17 +160,17 @@ kinds! {
     /// §2.1 and the abstract: identifiability decided by Jacobian rank.
     dof_identifiability => DofIdentifiability(dof_identifiability::DofIdentifiabilityCase),
     /// Eq. p3f3sqr and the signed relations.
-    twofold_squared => TwofoldSquared(twofold_squared::TwofoldCase),
+    twofold_squared => TwofoldSquared(twofold_squared::TwofoldSquaredCase),
     /// §2's worked example.
     p3f3_example => P3f3Example(p3f3_example::P3f3ExampleCase),
     /// §4's worked example.
     p4f3_example => P4f3Example(p4f3_example::P4f3ExampleCase),
     /// §4's uniqueness over generic and degenerate scenes.
-    p4f3_census => P4f3Census(p4f3_census::P4f3Census),
+    p4f3_census => P4f3Census(p4f3_census::P4f3CensusCase),
     /// §2.2's solution count over generic and degenerate scenes.
-    p3f3_census => P3f3Census(p3f3_census::P3f3Census),
+    p3f3_census => P3f3Census(p3f3_census::P3f3CensusCase),
     /// §3's uniqueness over generic and special motions.
-    p3f4_census => P3f4Census(p3f4_census::P3f4Census),
+    p3f4_census => P3f4Census(p3f4_census::P3f4CensusCase),
     /// Claims the paper gives no data for: what is printed and what a reproduction lacks.
     not_reproducible => NotReproducible(not_reproducible::NotReproducibleCase),
     /// Every displayed formula and derivation step, machine-checked.
@@ -190,10 +190,10 @@ kinds! {
     /// Exact solution counts of three and four points in three frames, and the literature's.
     solution_count => SolutionCount(solution_count::SolutionCountCase),
     /// §4's price of linearity: the paper's solvers against the standard method.
-    linearity_price => LinearityPrice(linearity_price::LinearityCase),
+    linearity_price => LinearityPrice(linearity_price::LinearityPriceCase),
 }
 
-impl Schema for Check {
+impl Schema for CaseCheck {
     fn validate(&self, v: &Validator) -> Result<()> {
         let v = v.at(&format!("check.{}", self.name()));
         for (field, n) in self.kind().trials() {
@@ -216,7 +216,7 @@ impl Schema for Check {
     }
 }
 
-impl Case {
+impl PaperCase {
     /// Every seed the case sets.
     pub fn seeds(&self) -> Vec<u64> {
         self.check.kind().seeds()
@@ -224,14 +224,14 @@ impl Case {
 }
 
 /// Run one case into its claim results (a restatement has nothing to restate on its own).
-pub fn run_case(case: &Case) -> Result<Vec<ClaimResult>> {
+pub fn run_case(case: &PaperCase) -> Result<Vec<ClaimResult>> {
     Ok(run_case_full(case, &[])?.0)
 }
 
 /// Run one case into its claim results and the figures its checks drew; `earlier` are the
 /// results a restatement restates.
 pub fn run_case_full(
-    case: &Case,
+    case: &PaperCase,
     earlier: &[ClaimResult],
 ) -> Result<(Vec<ClaimResult>, Vec<Figure>)> {
     let b = ResultBuilder::new(case);
@@ -240,7 +240,7 @@ pub fn run_case_full(
 }
 
 /// Run every case: first all the others, then the restatements, decided from their results.
-pub fn run_all(cases: &[Case]) -> Result<Vec<ClaimResult>> {
+pub fn run_all(cases: &[PaperCase]) -> Result<Vec<ClaimResult>> {
     Ok(run_all_full(cases, &[], &|_, _| {})?.0)
 }
 
@@ -252,7 +252,7 @@ pub fn run_all(cases: &[Case]) -> Result<Vec<ClaimResult>> {
 /// pool; their results are kept in the cases' order, so the output does not depend on which
 /// finishes first, and the first failing case in that order is the error reported.
 pub fn run_all_full(
-    cases: &[Case],
+    cases: &[PaperCase],
     disagreements: &[Disagreement],
     progress: &(dyn Fn(usize, &str) + Sync),
 ) -> Result<(Vec<ClaimResult>, Vec<Figure>)> {
@@ -334,7 +334,7 @@ pub fn run_paper(
 
 /// [`run_paper`] over `cases`, with the `disagreements` of their verification.
 pub fn run_cases(
-    cases: &[Case],
+    cases: &[PaperCase],
     disagreements: &[Disagreement],
     progress: &(dyn Fn(usize, &str) + Sync),
 ) -> Result<PaperRun> {
@@ -347,7 +347,7 @@ pub fn run_cases(
 }
 
 /// A case's seeds, with the case file they are set in.
-fn case_seeds(c: &Case) -> CaseSeeds {
+fn case_seeds(c: &PaperCase) -> CaseSeeds {
     CaseSeeds {
         case: c.id.clone(),
         file: c

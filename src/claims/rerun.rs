@@ -1,7 +1,7 @@
 //! `orthocheck noise`: the noise runs a case offers ([`super::ClaimKind::noise_runs`]), rerun
 //! with the user's levels, trials, seed and model in place of the case's own.
 
-use crate::claims::Case;
+use crate::claims::PaperCase;
 use crate::derivations::noise::{run_levels, LevelSummary, Study};
 use crate::error::Error;
 
@@ -76,7 +76,7 @@ pub struct NoiseRuns {
 impl NoiseRequest {
     /// Find the case and apply the overrides; checks in order: the case, its kind, its
     /// study, the levels.
-    pub fn resolve(&self, cases: &[Case]) -> Result<NoiseRun, RequestError> {
+    pub fn resolve(&self, cases: &[PaperCase]) -> Result<NoiseRun, RequestError> {
         let case = cases
             .iter()
             .find(|c| c.id == self.case)
@@ -134,14 +134,14 @@ impl NoiseRun {
 mod tests {
     use super::*;
 
-    fn cases() -> Vec<Case> {
+    fn cases() -> Vec<PaperCase> {
         let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/paper_cases");
-        crate::cases::load_all::<crate::claims::Check>(std::path::Path::new(dir)).unwrap()
+        crate::cases::load_all::<crate::claims::CaseCheck>(std::path::Path::new(dir)).unwrap()
     }
 
     /// The first case with noise runs, or without.
-    fn first(cases: &[Case], noise: bool) -> String {
-        let is_noise = |c: &&Case| c.check.kind().noise_runs().is_some();
+    fn first(cases: &[PaperCase], noise: bool) -> String {
+        let is_noise = |c: &&PaperCase| c.check.kind().noise_runs().is_some();
         let c = cases.iter().find(|c| is_noise(c) == noise).unwrap();
         c.id.clone()
     }

@@ -7,7 +7,7 @@ use orthocheck::check::{ClaimResult, Verdict};
 use orthocheck::claims::audit::{InFull, Shown, Wanted};
 use orthocheck::claims::shared::Place;
 use orthocheck::claims::twofold_squared::TwofoldAudit;
-use orthocheck::claims::{Case, Check};
+use orthocheck::claims::{CaseCheck, PaperCase};
 use orthocheck::report::values::quantities_text;
 use orthocheck::{cases, report, Error};
 use serde::Serialize;
@@ -67,7 +67,7 @@ fn selected(script_id: &str, id: &str) -> bool {
 
 /// Write the SymPy scripts the arguments select into `dir`, refusing before writing
 /// anything when one of the files exists.
-fn export(loaded: &[Case], a: &Args, dir: &Path) -> Result<(), Error> {
+fn export(loaded: &[PaperCase], a: &Args, dir: &Path) -> Result<(), Error> {
     let mut scripts = Vec::new();
     for case in loaded {
         scripts.extend(case.check.kind().sympy_scripts()?);
@@ -104,7 +104,7 @@ fn export(loaded: &[Case], a: &Args, dir: &Path) -> Result<(), Error> {
 }
 
 /// What the case named `id` shows in full, if `id` names a case that does.
-fn in_full(loaded: &[Case], id: &str) -> Option<Result<InFull, Error>> {
+fn in_full(loaded: &[PaperCase], id: &str) -> Option<Result<InFull, Error>> {
     loaded
         .iter()
         .filter(|c| c.id == id)
@@ -121,7 +121,7 @@ pub fn run(a: Args) -> Result<(), Error> {
         true => cases::Kinds::All,
         false => cases::Kinds::Only(&audited),
     };
-    let inputs = cases::load_inputs_of::<Check>(&origin, source.as_deref(), kinds)?;
+    let inputs = cases::load_inputs_of::<CaseCheck>(&origin, source.as_deref(), kinds)?;
     let loaded = &inputs.cases;
     if let Some(dir) = &a.out {
         return export(loaded, &a, dir);

@@ -5,7 +5,7 @@ use std::path::PathBuf;
 
 use clap::ValueEnum;
 use orthocheck::claims::rerun::{ModelChoice, NoiseRequest, RequestError};
-use orthocheck::claims::{Case, Check};
+use orthocheck::claims::{CaseCheck, PaperCase};
 use orthocheck::derivations::noise::LevelSummary;
 use orthocheck::{cases, Error};
 
@@ -61,7 +61,7 @@ impl From<ModelArg> for ModelChoice {
 pub fn run(a: Args) -> Result<(), Error> {
     check_limits(&a).map_err(Error::InvalidInput)?;
     let origin = cases::CaseOrigin::from_arg(a.cases.as_deref());
-    let all = cases::load_cases::<Check>(&origin)?;
+    let all = cases::load_cases::<CaseCheck>(&origin)?;
     let request = NoiseRequest {
         case: a.case.clone(),
         levels: a.levels,
@@ -94,7 +94,7 @@ pub fn run(a: Args) -> Result<(), Error> {
 }
 
 /// The ids `--case` accepts, as a sentence for an error.
-fn noise_ids(all: &[Case]) -> String {
+fn noise_ids(all: &[PaperCase]) -> String {
     let ids: Vec<&str> = all
         .iter()
         .filter(|c| c.check.kind().noise_runs().is_some())

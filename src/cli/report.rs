@@ -5,7 +5,7 @@ use std::io::{IsTerminal, Write as _};
 use std::path::PathBuf;
 use std::time::Instant;
 
-use orthocheck::claims::Check;
+use orthocheck::claims::CaseCheck;
 use orthocheck::{cases, provenance, Error};
 
 /// Arguments of `report`.
@@ -28,7 +28,7 @@ pub struct Args {
 pub fn run(args: Args) -> Result<(), Error> {
     let origin = cases::CaseOrigin::from_arg(args.cases.as_deref());
     let source = cases::source_path(args.paper.as_deref());
-    let inputs = cases::load_inputs::<Check>(&origin, source.as_deref())?;
+    let inputs = cases::load_inputs::<CaseCheck>(&origin, source.as_deref())?;
     let all = &inputs.cases;
     // an unwritable folder is found before the report is computed
     orthocheck::report::prepare_output_dir(&args.out)?;

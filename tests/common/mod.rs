@@ -9,7 +9,7 @@ use std::path::{Path, PathBuf};
 use std::sync::OnceLock;
 
 use orthocheck::cases::{self, CaseOrigin};
-use orthocheck::claims::Case;
+use orthocheck::claims::PaperCase;
 use orthocheck::claims::PaperInputs;
 use orthocheck::report::{Provenance, Report};
 
@@ -45,7 +45,7 @@ pub fn inputs() -> Result<&'static PaperInputs, String> {
     INPUTS
         .get_or_init(|| {
             let origin = CaseOrigin::Folder(Path::new(CASES_DIR).to_path_buf());
-            cases::load_inputs::<orthocheck::claims::Check>(&origin, paper_source().as_deref())
+            cases::load_inputs::<orthocheck::claims::CaseCheck>(&origin, paper_source().as_deref())
                 .map_err(|e| e.to_string())
         })
         .as_ref()
@@ -53,7 +53,7 @@ pub fn inputs() -> Result<&'static PaperInputs, String> {
 }
 
 /// Every paper case, loaded once.
-pub fn cases() -> Result<&'static [Case], String> {
+pub fn cases() -> Result<&'static [PaperCase], String> {
     inputs().map(|i| i.cases.as_slice())
 }
 

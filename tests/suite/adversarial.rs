@@ -40,7 +40,7 @@ fn run_one(path: &Path) -> Result<bool, String> {
     };
     let is_case = path.parent().unwrap().ends_with("cases");
     if is_case {
-        return match orthocheck::cases::parse_case::<orthocheck::claims::Check>(&text, path) {
+        return match orthocheck::cases::parse_case::<orthocheck::claims::CaseCheck>(&text, path) {
             Ok(case) => {
                 let dbg = format!("{case:?}");
                 match non_finite_in_debug(&dbg) {
@@ -234,11 +234,13 @@ fn the_binary_refuses_with_exit_2() {
     }
     let text = std::fs::read_to_string(root.join("cases/frames_alias_wide.yaml")).unwrap();
     let started = Instant::now();
-    assert!(orthocheck::cases::parse_case::<orthocheck::claims::Check>(
-        &text,
-        Path::new("bomb.yaml")
-    )
-    .is_err());
+    assert!(
+        orthocheck::cases::parse_case::<orthocheck::claims::CaseCheck>(
+            &text,
+            Path::new("bomb.yaml")
+        )
+        .is_err()
+    );
     // a release-profile test build; debug builds are several times slower
     assert!(
         started.elapsed() < Duration::from_millis(100),

@@ -34,7 +34,7 @@ fn passes(path: &str, test: fn(&Path) -> TestResult) {
 }
 
 fn paper_case(path: &Path) -> TestResult {
-    let case = cases::load_case::<orthocheck::claims::Check>(path)?;
+    let case = cases::load_case::<orthocheck::claims::CaseCheck>(path)?;
     // one run of the whole paper serves every case (the restatements need all the others)
     let results: Vec<&check::ClaimResult> = common::report()?
         .claims
@@ -59,7 +59,7 @@ fn bad_case(path: &Path) -> TestResult {
         .next()
         .and_then(|l| l.strip_prefix("# expect: "))
         .ok_or("a bad case must start with '# expect: …'")?;
-    match cases::load_case::<orthocheck::claims::Check>(path) {
+    match cases::load_case::<orthocheck::claims::CaseCheck>(path) {
         Ok(_) => Err(format!("{} loaded, but it must fail", path.display()).into()),
         Err(e @ Error::Input { .. }) => {
             let shown = e.to_string();

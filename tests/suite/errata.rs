@@ -73,9 +73,10 @@ fn the_audit_reads_the_audited_kinds_alone() {
     let kinds = orthocheck::claims::audited_kinds();
     assert_eq!(kinds, ["twofold_squared", "formula_audit", "source_errata"]);
     let origin = CaseOrigin::Folder(Path::new(env!("CARGO_MANIFEST_DIR")).join("paper_cases"));
-    let some = load_cases_of::<orthocheck::claims::Check>(&origin, Kinds::Only(&kinds)).unwrap();
+    let some =
+        load_cases_of::<orthocheck::claims::CaseCheck>(&origin, Kinds::Only(&kinds)).unwrap();
     assert_eq!(some.len(), kinds.len());
-    let ids = |cases: &[orthocheck::claims::Case]| -> Vec<String> {
+    let ids = |cases: &[orthocheck::claims::PaperCase]| -> Vec<String> {
         let items = audit_all(cases, Wanted::All).unwrap();
         items.into_iter().map(|(r, _)| r.id).collect()
     };

@@ -203,12 +203,12 @@ proptest! {
         let text = case_text(i);
         let mutated = mutate(text.clone(), e);
         let _watched = Watched::new(&mutated);
-        let _ = orthocheck::cases::parse_case::<orthocheck::claims::Check>(&mutated, Path::new("fuzz.yaml"));
+        let _ = orthocheck::cases::parse_case::<orthocheck::claims::CaseCheck>(&mutated, Path::new("fuzz.yaml"));
         drop(_watched);
         // a number of the case replaced by an awkward one, quoted and not
         let swapped = text.replacen("\"0.001\"", &format!("\"{c}\""), 1).replacen(": 3\n", &format!(": {c}\n"), 1);
         let _watched = Watched::new(&swapped);
-        let _ = orthocheck::cases::parse_case::<orthocheck::claims::Check>(&swapped, Path::new("fuzz.yaml"));
+        let _ = orthocheck::cases::parse_case::<orthocheck::claims::CaseCheck>(&swapped, Path::new("fuzz.yaml"));
     }
 
     #[test]
@@ -221,6 +221,6 @@ proptest! {
         let end = text[start..].find("    evaluation_points").unwrap() + start;
         let doc = format!("{}      printed: \"{f}\"\n{}", &text[..start], &text[end..]);
         let _watched = Watched::new(&doc);
-        let _ = orthocheck::cases::parse_case::<orthocheck::claims::Check>(&doc, Path::new("fuzz.yaml"));
+        let _ = orthocheck::cases::parse_case::<orthocheck::claims::CaseCheck>(&doc, Path::new("fuzz.yaml"));
     }
 }

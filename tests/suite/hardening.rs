@@ -418,9 +418,9 @@ fn case_work_beyond_its_limit_is_refused_at_the_field() {
         let path = root.join(file);
         let text = std::fs::read_to_string(&path).unwrap();
         assert!(text.contains(from), "{file}: {from}");
-        orthocheck::cases::parse_case::<orthocheck::claims::Check>(&text, &path)
+        orthocheck::cases::parse_case::<orthocheck::claims::CaseCheck>(&text, &path)
             .unwrap_or_else(|e| panic!("{file} as printed: {e}"));
-        let err = orthocheck::cases::parse_case::<orthocheck::claims::Check>(
+        let err = orthocheck::cases::parse_case::<orthocheck::claims::CaseCheck>(
             &text.replacen(from, to, 1),
             &path,
         )

@@ -325,7 +325,7 @@ fn another_source_is_refused() {
     let fake = dir.path().join("paper.tex");
     std::fs::write(&fake, "\\section{Introduction}\n").unwrap();
     let origin = orthocheck::cases::CaseOrigin::Embedded;
-    let e = orthocheck::cases::load_inputs::<orthocheck::claims::Check>(&origin, Some(&fake))
+    let e = orthocheck::cases::load_inputs::<orthocheck::claims::CaseCheck>(&origin, Some(&fake))
         .unwrap_err()
         .to_string();
     assert!(

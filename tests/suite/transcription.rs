@@ -6,7 +6,7 @@ use std::path::Path;
 
 use orthocheck::cases::{self, CaseOrigin};
 use orthocheck::check::Verdict;
-use orthocheck::claims::Check;
+use orthocheck::claims::CaseCheck;
 
 use crate::common;
 
@@ -22,11 +22,11 @@ fn the_source_changes_no_claim() {
         common::skipped_without_source("transcription::the_source_changes_no_claim");
         return;
     };
-    let without = cases::load_cases::<Check>(&paper_cases()).unwrap();
+    let without = cases::load_cases::<CaseCheck>(&paper_cases()).unwrap();
     assert_eq!(without.as_slice(), common::cases().unwrap());
     let errata: Vec<_> = without
         .iter()
-        .filter(|c| matches!(c.check, Check::SourceErrata(_)))
+        .filter(|c| matches!(c.check, CaseCheck::SourceErrata(_)))
         .cloned()
         .collect();
     assert_eq!(errata.len(), 1);
@@ -92,7 +92,7 @@ fn a_shifted_range_is_a_disagreement() {
         "strings: ['\\begin{document}',",
     );
     let origin = CaseOrigin::Folder(dir.path().to_path_buf());
-    let inputs = cases::load_inputs::<Check>(&origin, Some(&source)).unwrap();
+    let inputs = cases::load_inputs::<CaseCheck>(&origin, Some(&source)).unwrap();
     let found: Vec<String> = inputs
         .disagreements()
         .iter()

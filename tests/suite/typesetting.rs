@@ -4,7 +4,7 @@
 
 use orthocheck::check::Value;
 use orthocheck::claims::formula_audit::FormulaAuditCase;
-use orthocheck::claims::Check;
+use orthocheck::claims::CaseCheck;
 use orthocheck::report::math::{math_html, math_text, Macros};
 
 use crate::common;
@@ -355,9 +355,9 @@ fn case_formulas() -> Vec<(String, String)> {
     for case in common::cases().expect("the paper's cases load") {
         let mut add = |what: String, s: &str| out.push((format!("{}: {what}", case.id), s.into()));
         match &case.check {
-            Check::FormulaAudit(a) => audit_formulas(a, &mut add),
-            Check::TwofoldSquared(t) => add("polynomial".into(), &t.polynomial.printed),
-            Check::DofIdentifiability(d) => {
+            CaseCheck::FormulaAudit(a) => audit_formulas(a, &mut add),
+            CaseCheck::TwofoldSquared(t) => add("polynomial".into(), &t.polynomial.printed),
+            CaseCheck::DofIdentifiability(d) => {
                 add("unknowns".into(), &d.formula.unknowns);
                 add("measurements".into(), &d.formula.measurements);
             }
@@ -502,7 +502,7 @@ fn eq_p3f3sqr_reads_2a2b2() {
     let item = all
         .iter()
         .find_map(|c| match &c.check {
-            Check::FormulaAudit(a) => a
+            CaseCheck::FormulaAudit(a) => a
                 .formulas
                 .iter()
                 .find(|f| f.place.label.as_deref() == Some("p3f3sqr")),
@@ -526,7 +526,7 @@ fn eq_p3f3sqr_reads_2a2b2() {
     let twofold = all
         .iter()
         .find_map(|c| match &c.check {
-            Check::TwofoldSquared(t) => Some(&t.polynomial.printed),
+            CaseCheck::TwofoldSquared(t) => Some(&t.polynomial.printed),
             _ => None,
         })
         .expect("the twofold-squared case");

@@ -10,7 +10,7 @@ use crate::derivations::dof::{count, identifiability};
 use crate::error::Result;
 
 /// The printed worked counts.
-pub(super) fn check(b: &ResultBuilder, case: &DofCountCase) -> Result<Vec<ClaimResult>> {
+pub(super) fn results(b: &ResultBuilder, case: &DofCountCase) -> Result<Vec<ClaimResult>> {
     let mut out = Vec::new();
     for ex in &case.examples {
         let c = count(ex.points, ex.frames);

@@ -25,6 +25,6 @@ impl ClaimKind for DofCountCase {
     }
 
     fn run(&self, b: &ResultBuilder, _earlier: &[ClaimResult]) -> Result<Vec<ClaimResult>> {
-        judge::check(b, self)
+        judge::results(b, self)
     }
 }

@@ -208,7 +208,10 @@ fn two_frames_claim(
 }
 
 /// The count formula, the minimum, and two-frame insufficiency, over the grid.
-pub(super) fn check(b: &ResultBuilder, case: &DofIdentifiabilityCase) -> Result<Vec<ClaimResult>> {
+pub(super) fn results(
+    b: &ResultBuilder,
+    case: &DofIdentifiabilityCase,
+) -> Result<Vec<ClaimResult>> {
     let grid = table(case.max_points, case.max_frames, case.seed)?;
     figure(b, case, &grid);
     Ok(vec![

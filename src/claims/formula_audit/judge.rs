@@ -318,7 +318,7 @@ pub(super) fn judged(
 }
 
 /// The audit as claim results: one per item, a formula's expansion in its evidence.
-pub(super) fn check(b: &ResultBuilder, case: &FormulaAuditCase) -> Result<Vec<ClaimResult>> {
+pub(super) fn results(b: &ResultBuilder, case: &FormulaAuditCase) -> Result<Vec<ClaimResult>> {
     Ok(items(b, case, false, &|_| true)?
         .into_iter()
         .map(|(r, _)| r)

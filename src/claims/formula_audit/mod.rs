@@ -31,7 +31,7 @@ impl ClaimKind for FormulaAuditCase {
     }
 
     fn run(&self, b: &ResultBuilder, _earlier: &[ClaimResult]) -> Result<Vec<ClaimResult>> {
-        judge::check(b, self)
+        judge::results(b, self)
     }
 
     fn audited() -> bool {

@@ -27,7 +27,7 @@ mod export;
 mod reading;
 pub use expanded::{expanded, ExpandedFinding, Screened};
 pub use export::sympy_scripts;
-use reading::{Reading, Text};
+use reading::{FormulaReading, Text};
 
 /// Which form of a formula was accepted.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -92,7 +92,7 @@ pub type Judged<'a> = &'a (dyn Fn(&FormulaItem) -> bool + Sync);
 /// before it substituted but its free symbols (read when a formula needs them, once). The
 /// formulas are read and checked in parallel.
 pub fn formulas(case: &FormulaAuditCase, judged: Judged) -> Result<Vec<FormulaFinding>> {
-    let reading = Reading::new(case, true);
+    let reading = FormulaReading::new(case, true);
     let (points, seed) = (case.evaluation_points, case.seed);
     // every formula computed, then the first error in case order (whichever finished first)
     let found: Vec<Result<FormulaFinding>> = case

@@ -27,7 +27,7 @@ fn level_tolerance() -> Tolerance {
     )
 }
 
-pub(super) fn check(b: &ResultBuilder, case: &IdentityCensusCase) -> Result<Vec<ClaimResult>> {
+pub(super) fn results(b: &ResultBuilder, case: &IdentityCensusCase) -> Result<Vec<ClaimResult>> {
     let c = census(case.trials, case.seed, &case.c_factors, case.control_shift);
     let level = distance_level();
     Ok(vec![

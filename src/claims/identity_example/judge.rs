@@ -78,7 +78,7 @@ fn block_assignments(ex: &Example, a: &DebugAttempt, digits: u32) -> Vec<[usize;
     matching_assignments(ex, &[g(&a.t2), g(&a.q2), g(&a.p2)])
 }
 
-pub(super) fn check(b: &ResultBuilder, case: &IdentityExampleCase) -> Result<Vec<ClaimResult>> {
+pub(super) fn results(b: &ResultBuilder, case: &IdentityExampleCase) -> Result<Vec<ClaimResult>> {
     let ex = example(case)?;
     let fit = names_fit(case, &ex);
     let mut out = vec![frames_result(b, case, &fit), labels_result(b, case, &fit)];

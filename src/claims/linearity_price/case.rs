@@ -9,7 +9,7 @@ use crate::error::Result;
 /// The comparison study behind §4's "the linearity has clearly its price".
 #[derive(Clone, Debug, Deserialize, PartialEq)]
 #[serde(deny_unknown_fields)]
-pub struct LinearityCase {
+pub struct LinearityPriceCase {
     /// The claim the study decides.
     pub claim: ClaimRef,
     /// The paper's printed runs of the §4 solver, with their noise levels.
@@ -62,7 +62,7 @@ pub struct LinearityBody {
 pub const MAX_RANDOM_POINTS: usize = 20;
 
 /// Checks serde cannot express: sizes, names, levels and the deciding subset.
-pub(super) fn validate(c: &LinearityCase, v: &Validator) -> Result<()> {
+pub(super) fn validate(c: &LinearityPriceCase, v: &Validator) -> Result<()> {
     v.limit("trials", "trials", c.trials, crate::limits::NOISE_TRIALS)?;
     v.list("bodies", c.bodies.len())?;
     v.list("levels", c.levels.len())?;

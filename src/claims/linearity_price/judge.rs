@@ -11,7 +11,7 @@ use crate::claims::linearity_price::study::{
     self, length_error, BodySpec, Bound, Cell, Design, Method, MethodErrors, RatioBounds, Results,
     Unavailable,
 };
-use crate::claims::linearity_price::{LinearityBody, LinearityCase};
+use crate::claims::linearity_price::{LinearityBody, LinearityPriceCase};
 use crate::error::Result;
 
 mod figure;
@@ -23,7 +23,7 @@ const PRICE_LSQ: (Method, Method) = (Method::LeastSquares, Method::TomasiKanadeB
 /// The null comparison: the §4 solver on fresh noise over itself (true ratio 1).
 const NULL: (Method, Method) = (Method::P4f3FreshNoise, Method::P4f3);
 
-pub(super) fn check(b: &ResultBuilder, case: &LinearityCase) -> Result<Vec<ClaimResult>> {
+pub(super) fn results(b: &ResultBuilder, case: &LinearityPriceCase) -> Result<Vec<ClaimResult>> {
     let design = design_of(case)?;
     let res = study::compare(&design);
     let alpha = case.alpha.to_f64();
@@ -173,7 +173,7 @@ fn unavailable_value(u: Unavailable) -> Value {
 /// squares, and its rank among the §4 solver's trials at that level.
 fn printed_runs<'a>(
     mut r: crate::check::ClaimBuilder<'a>,
-    case: &LinearityCase,
+    case: &LinearityPriceCase,
     cells: &[Cell],
 ) -> crate::check::ClaimBuilder<'a> {
     let Some(body) = case.bodies.iter().find(|b| b.name == case.deciding_body) else {
@@ -204,7 +204,7 @@ fn printed_runs<'a>(
 fn tables<'a>(
     mut r: crate::check::ClaimBuilder<'a>,
     res: &Results,
-    case: &LinearityCase,
+    case: &LinearityPriceCase,
     alpha: f64,
 ) -> crate::check::ClaimBuilder<'a> {
     for (name, _, cells) in &res.bodies {
@@ -264,7 +264,7 @@ fn method_cells<'a>(
 }
 
 /// The study a case describes.
-fn design_of(case: &LinearityCase) -> Result<Design> {
+fn design_of(case: &LinearityPriceCase) -> Result<Design> {
     let bodies = case
         .bodies
         .iter()

@@ -11,7 +11,7 @@ use crate::check::{ClaimResult, ResultBuilder};
 use crate::claims::ClaimKind;
 use crate::error::Result;
 
-impl ClaimKind for LinearityCase {
+impl ClaimKind for LinearityPriceCase {
     fn trials(&self) -> Vec<(&'static str, usize)> {
         vec![("trials", self.trials)]
     }
@@ -25,6 +25,6 @@ impl ClaimKind for LinearityCase {
     }
 
     fn run(&self, b: &ResultBuilder, _earlier: &[ClaimResult]) -> Result<Vec<ClaimResult>> {
-        judge::check(b, self)
+        judge::results(b, self)
     }
 }

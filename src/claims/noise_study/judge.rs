@@ -8,7 +8,7 @@ use crate::claims::shared::{setting, Context};
 use crate::derivations::solver::default_edge_names;
 use crate::error::Result;
 
-pub(super) fn check(b: &ResultBuilder, case: &NoiseStudyCase) -> Result<Vec<ClaimResult>> {
+pub(super) fn results(b: &ResultBuilder, case: &NoiseStudyCase) -> Result<Vec<ClaimResult>> {
     let mut out = Vec::new();
     let lengths: Vec<f64> = case.body.lengths.iter().map(|p| p.to_f64()).collect();
     // the printed squares when there are any (the runs are compared with them), else the

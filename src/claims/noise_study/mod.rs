@@ -28,7 +28,7 @@ impl ClaimKind for NoiseStudyCase {
     }
 
     fn run(&self, b: &ResultBuilder, _earlier: &[ClaimResult]) -> Result<Vec<ClaimResult>> {
-        judge::check(b, self)
+        judge::results(b, self)
     }
 
     fn noise_runs(&self) -> Option<Result<NoiseRuns>> {

@@ -3,20 +3,20 @@
 
 use crate::check::{ClaimResult, Power, ResultBuilder, Tolerance, Value, Verdict};
 use crate::claims::shared::census::census_claim;
-use crate::claims::shared::CensusCase;
+use crate::claims::shared::CensusDesign;
 use crate::derivations::solver::Degenerate;
 use crate::error::Result;
 use crate::studies::census;
 
 /// §2.2's count: never more than two feasible solutions, and the two named degenerate cases
 /// give infinitely many.
-fn count_holds(c: &census::P3f3Census) -> bool {
+fn count_holds(c: &census::P3f3CensusCase) -> bool {
     matches!(c.collinear, Some(Degenerate::Collinear))
         && matches!(c.identical_frames, Some(Degenerate::IdenticalFrames { .. }))
         && c.truth_found == c.trials
 }
 
-pub(super) fn check(b: &ResultBuilder, case: &CensusCase) -> Result<Vec<ClaimResult>> {
+pub(super) fn results(b: &ResultBuilder, case: &CensusDesign) -> Result<Vec<ClaimResult>> {
     let c = census::p3f3(case.trials, case.seed);
     let ok = count_holds(&c);
     // the control: the same census rejects "at most one solution" whenever it sees two
@@ -60,7 +60,7 @@ mod tests {
 
     #[test]
     fn the_counts_need_both_degenerate_cases() {
-        let mut c = census::P3f3Census {
+        let mut c = census::P3f3CensusCase {
             trials: 2,
             seed: 0,
             feasible_counts: [0, 1, 1],

@@ -7,16 +7,16 @@ use serde::Deserialize;
 use crate::cases::Validator;
 use crate::check::{ClaimResult, ResultBuilder};
 use crate::claims::shared::census as census_checks;
-use crate::claims::shared::CensusCase;
+use crate::claims::shared::CensusDesign;
 use crate::claims::ClaimKind;
 use crate::error::Result;
 
 /// The census case (its schema shared with the other censuses).
 #[derive(Clone, Debug, Deserialize, PartialEq)]
 #[serde(transparent)]
-pub struct P3f3Census(pub CensusCase);
+pub struct P3f3CensusCase(pub CensusDesign);
 
-impl ClaimKind for P3f3Census {
+impl ClaimKind for P3f3CensusCase {
     fn trials(&self) -> Vec<(&'static str, usize)> {
         vec![("trials", self.0.trials)]
     }
@@ -31,6 +31,6 @@ impl ClaimKind for P3f3Census {
     }
 
     fn run(&self, b: &ResultBuilder, _earlier: &[ClaimResult]) -> Result<Vec<ClaimResult>> {
-        judge::check(b, &self.0)
+        judge::results(b, &self.0)
     }
 }

@@ -122,7 +122,7 @@ fn triples(v: &[Vec<Printed>]) -> Result<Vec<[f64; 3]>> {
         .collect()
 }
 
-pub(super) fn check(b: &ResultBuilder, case: &P3f3ExampleCase) -> Result<Vec<ClaimResult>> {
+pub(super) fn results(b: &ResultBuilder, case: &P3f3ExampleCase) -> Result<Vec<ClaimResult>> {
     let (center, half) = case.figure.rounding_box();
     let figure_box = RoundingBox { center, half };
     let digits = case.solutions.significant_digits;

@@ -2,16 +2,16 @@
 
 use crate::check::{ClaimResult, Power, ResultBuilder, Tolerance, Value, Verdict};
 use crate::claims::shared::census::census_claim;
-use crate::claims::shared::CensusCase;
+use crate::claims::shared::CensusDesign;
 use crate::error::Result;
 use crate::studies::census;
 
 /// §3's uniqueness: every generic scene rank 3 and exact; a special motion loses rank.
-fn unique_holds(c: &census::P3f4Census) -> bool {
+fn unique_holds(c: &census::P3f4CensusCase) -> bool {
     c.unique == c.trials && c.truth_found == c.trials && c.viewing_axis_rank < 3
 }
 
-pub(super) fn check(b: &ResultBuilder, case: &CensusCase) -> Result<Vec<ClaimResult>> {
+pub(super) fn results(b: &ResultBuilder, case: &CensusDesign) -> Result<Vec<ClaimResult>> {
     let c = census::p3f4(case.trials, case.frames, case.seed);
     let ok = unique_holds(&c);
     Ok(case

@@ -2,21 +2,21 @@
 //! rank-deficient.
 
 use crate::check::{ClaimResult, Power, ResultBuilder, Tolerance, Value, Verdict};
-use crate::claims::shared::CensusCase;
+use crate::claims::shared::CensusDesign;
 use crate::error::Result;
 use crate::studies::census;
 
 /// §4's uniqueness: unique and exact in every generic scene.
-fn generic_holds(c: &census::P4f3Census) -> bool {
+fn generic_holds(c: &census::P4f3CensusCase) -> bool {
     c.unique == c.trials && c.truth_found == c.trials
 }
 
 /// The exception: every planar body leaves the six equations rank-deficient.
-fn planar_degenerate(c: &census::P4f3Census) -> bool {
+fn planar_degenerate(c: &census::P4f3CensusCase) -> bool {
     !c.planar_ranks.is_empty() && c.planar_ranks.iter().all(|r| *r < 6)
 }
 
-pub(super) fn check(b: &ResultBuilder, case: &CensusCase) -> Result<Vec<ClaimResult>> {
+pub(super) fn results(b: &ResultBuilder, case: &CensusDesign) -> Result<Vec<ClaimResult>> {
     let c = census::p4f3(case.trials, case.seed);
     let generic = generic_holds(&c);
     let planar = planar_degenerate(&c);
@@ -55,7 +55,7 @@ pub(super) fn check(b: &ResultBuilder, case: &CensusCase) -> Result<Vec<ClaimRes
 
 fn census_numbers<'b>(
     r: crate::check::ClaimBuilder<'b>,
-    c: &census::P4f3Census,
+    c: &census::P4f3CensusCase,
 ) -> crate::check::ClaimBuilder<'b> {
     r.printed("solutions", Value::label("at most one, of a linear system (unless the motion is degenerate)"))
         .computed("unique feasible, realizable solutions", Value::count_of(c.unique, c.trials))
@@ -72,7 +72,7 @@ fn planar_result(
     b: &ResultBuilder,
     claim: &crate::cases::ClaimRef,
     suffix: &str,
-    c: &census::P4f3Census,
+    c: &census::P4f3CensusCase,
     holds: bool,
 ) -> ClaimResult {
     let ranks: Vec<f64> = c.planar_ranks.iter().map(|r| *r as f64).collect();
@@ -111,7 +111,7 @@ mod tests {
 
     #[test]
     fn the_planar_exception_needs_every_planar_rank_deficient() {
-        let mut c = census::P4f3Census {
+        let mut c = census::P4f3CensusCase {
             trials: 1,
             seed: 0,
             unique: 1,

@@ -57,7 +57,7 @@ fn sensitive(median_error: f64, eps: f64) -> bool {
     median_error >= SENSITIVE_AMPLIFICATION * eps
 }
 
-pub(super) fn check(b: &ResultBuilder, case: &P4f3ExampleCase) -> Result<Vec<ClaimResult>> {
+pub(super) fn results(b: &ResultBuilder, case: &P4f3ExampleCase) -> Result<Vec<ClaimResult>> {
     let digits = case.body.significant_digits.unwrap_or(6);
     let squares: Vec<f64> = case.body.squares.iter().map(Printed::to_f64).collect();
     let sq_half: Vec<f64> = case

@@ -31,7 +31,7 @@ impl ClaimKind for P4f3ExampleCase {
     }
 
     fn run(&self, b: &ResultBuilder, _earlier: &[ClaimResult]) -> Result<Vec<ClaimResult>> {
-        judge::check(b, self)
+        judge::results(b, self)
     }
 
     /// §4's printed runs: the edge table's body under random motions, as the report runs them.

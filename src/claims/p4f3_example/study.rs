@@ -115,7 +115,7 @@ pub struct SolutionCheck {
     pub condition: Option<f64>,
 }
 
-/// Check the printed `x` (half units `xh`) against printed rows `a` (exact values `aq`,
+/// CaseCheck the printed `x` (half units `xh`) against printed rows `a` (exact values `aq`,
 /// half units `ah`; the last column is the constant).
 pub fn solution_check(
     aq: &[Vec<BigRational>],

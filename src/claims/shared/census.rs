@@ -10,7 +10,7 @@ use crate::limits;
 /// A claim decided over seeded random scenes.
 #[derive(Clone, Debug, Deserialize, PartialEq)]
 #[serde(deny_unknown_fields)]
-pub struct CensusCase {
+pub struct CensusDesign {
     /// The claims decided.
     pub claims: Vec<ClaimRef>,
     /// Frames per scene.
@@ -40,7 +40,7 @@ pub struct CensusException {
 }
 
 /// Suffixes and the exception must name claims of the census.
-pub(crate) fn census_names(c: &CensusCase, v: &Validator) -> Result<()> {
+pub(crate) fn census_names(c: &CensusDesign, v: &Validator) -> Result<()> {
     let known = |id: &String| c.claims.iter().any(|k| &k.claim == id);
     if let Some(id) = c.suffixes.keys().find(|id| !known(id)) {
         return v.err("suffixes", format!("{id} is not one of the claims"));
@@ -54,7 +54,7 @@ pub(crate) fn census_names(c: &CensusCase, v: &Validator) -> Result<()> {
     }
 }
 
-pub(crate) fn p4f3_checks(c: &CensusCase, v: &Validator) -> Result<()> {
+pub(crate) fn p4f3_checks(c: &CensusDesign, v: &Validator) -> Result<()> {
     if c.trials == 0 || c.claims.is_empty() || c.frames != 3 {
         return v.err("", "needs a claim, a trial and 3 frames".into());
     }
@@ -62,7 +62,7 @@ pub(crate) fn p4f3_checks(c: &CensusCase, v: &Validator) -> Result<()> {
 }
 
 /// The p3f3 census (`needed` 3: exactly 3 frames) and the p3f4 census (`needed` 4: at least 4).
-pub(crate) fn p3_census(c: &CensusCase, needed: usize, v: &Validator) -> Result<()> {
+pub(crate) fn p3_census(c: &CensusDesign, needed: usize, v: &Validator) -> Result<()> {
     if c.trials == 0 || c.claims.is_empty() {
         return v.err("", "needs at least one claim and one trial".into());
     }
@@ -80,7 +80,7 @@ pub(crate) fn p3_census(c: &CensusCase, needed: usize, v: &Validator) -> Result<
 }
 
 /// The census's sizes within their limits.
-pub(crate) fn sizes(c: &CensusCase, v: &Validator) -> Result<()> {
+pub(crate) fn sizes(c: &CensusDesign, v: &Validator) -> Result<()> {
     v.limit("trials", "trials", c.trials, limits::CASE_TRIALS)?;
     v.limit("frames", "frames", c.frames, limits::DOF_FRAMES)?;
     v.limit(
@@ -94,7 +94,7 @@ pub(crate) fn sizes(c: &CensusCase, v: &Validator) -> Result<()> {
 /// The result id of `claim` in a census case: its suffix from the case, when it has one.
 pub(crate) fn census_claim<'b>(
     b: &'b ResultBuilder,
-    case: &'b CensusCase,
+    case: &'b CensusDesign,
     claim: &'b ClaimRef,
 ) -> ClaimBuilder<'b> {
     match case.suffixes.get(&claim.claim) {

@@ -7,7 +7,7 @@ mod place;
 pub(crate) mod rank;
 mod tables;
 
-pub use census::{CensusCase, CensusException};
+pub use census::{CensusDesign, CensusException};
 pub use noise::*;
 pub use place::Place;
 pub use tables::{body_digits, BodyTable, FigureFrames, PrintedSolutions};

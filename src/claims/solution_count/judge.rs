@@ -44,7 +44,7 @@ fn ratio_verdict(printed: usize, computed: Option<usize>) -> Verdict {
 }
 
 /// Run the case: the three-point and four-point counts, then the literature's ratios.
-pub(super) fn check(b: &ResultBuilder, case: &SolutionCountCase) -> Result<Vec<ClaimResult>> {
+pub(super) fn results(b: &ResultBuilder, case: &SolutionCountCase) -> Result<Vec<ClaimResult>> {
     let three = solution_count::p3f3_count(case.instances, case.seed);
     let four = solution_count::p4f3_count(case.instances, case.seed);
     let mut out = vec![three_points(b, case, &three), four_points(b, case, &four)];

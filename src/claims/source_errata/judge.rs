@@ -15,7 +15,7 @@ use crate::error::Result;
 use labels::labels_decision;
 
 /// Every finding of the case as a claim result.
-pub(super) fn check(b: &ResultBuilder, case: &SourceErrataCase) -> Result<Vec<ClaimResult>> {
+pub(super) fn results(b: &ResultBuilder, case: &SourceErrataCase) -> Result<Vec<ClaimResult>> {
     case.findings.iter().map(|f| finding(b, f)).collect()
 }
 

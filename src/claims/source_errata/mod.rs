@@ -25,7 +25,7 @@ impl ClaimKind for SourceErrataCase {
     }
 
     fn run(&self, b: &ResultBuilder, _earlier: &[ClaimResult]) -> Result<Vec<ClaimResult>> {
-        judge::check(b, self)
+        judge::results(b, self)
     }
 
     fn source_checks(&self) -> Vec<crate::cases::SourceCheck> {
@@ -50,7 +50,7 @@ impl ClaimKind for SourceErrataCase {
                 .cloned()
                 .collect(),
         };
-        let results = judge::check(b, &asked)?;
+        let results = judge::results(b, &asked)?;
         Ok(asked
             .findings
             .iter()

@@ -135,7 +135,7 @@ pub struct Picture {
 
 /// What a picture shows.
 #[derive(Clone, Copy, Debug)]
-pub struct Reading {
+pub struct DrawnReading {
     /// Which body the labels sit on (0: the first, 1: the second of those offered).
     pub body: usize,
     /// Label misfit against each body, relative to the drawing's scale.
@@ -209,7 +209,7 @@ fn phi_with(v: &[f64], ax: [usize; 3], s: [f64; 3]) -> Option<f64> {
 
 /// Read one picture against two candidate bodies (P, and two points each); `h` is half a
 /// unit of the drawing's last digit.
-pub fn read(pic: &Picture, bodies: &[[Vector3<f64>; 3]; 2], h: f64) -> Option<Reading> {
+pub fn read(pic: &Picture, bodies: &[[Vector3<f64>; 3]; 2], h: f64) -> Option<DrawnReading> {
     let v = &pic.flat;
     let ax = axes(v);
     let signs: Vec<[f64; 3]> = (0..8)
@@ -229,7 +229,7 @@ pub fn read(pic: &Picture, bodies: &[[Vector3<f64>; 3]; 2], h: f64) -> Option<Re
     let j = central_jacobian(&f, v, |_, _| 1e-3 * h)?;
     let phi_bound = (0..v.len()).map(|k| j[(0, k)].abs() * h).sum();
     let (n, ez) = (at(v, 8) - at(v, 7), at(v, ax[2] + 1) - at(v, 0));
-    Some(Reading {
+    Some(DrawnReading {
         body,
         misfit: [m0, m1],
         phi,

@@ -151,7 +151,7 @@ fn counterexample_result(b: &ResultBuilder, case: &TwoFramesCase) -> ClaimResult
     r.verdict(Verdict::holds(judge_counterexample(&fit)))
 }
 
-pub(super) fn check(b: &ResultBuilder, case: &TwoFramesCase) -> Result<Vec<ClaimResult>> {
+pub(super) fn results(b: &ResultBuilder, case: &TwoFramesCase) -> Result<Vec<ClaimResult>> {
     let mut out = vec![counterexample_result(b, case)];
     let fam = family_census(
         case.points,

@@ -9,7 +9,7 @@ use crate::check::{
     ToleranceSource, Value, Verdict,
 };
 use crate::claims::two_frames::drawn_member::{
-    member, read, rebuild, theta_bound, Picture, Reading,
+    member, read, rebuild, theta_bound, DrawnReading, Picture,
 };
 use crate::claims::two_frames::{DrawnMember, TwoFramesCase};
 
@@ -53,8 +53,8 @@ fn flat(d: &crate::claims::two_frames::Drawing) -> Vec<f64> {
 }
 
 /// The mean φ and mean bound of the readings showing body `k`.
-fn group(readings: &[Reading], k: usize) -> Option<(f64, f64)> {
-    let g: Vec<&Reading> = readings.iter().filter(|r| r.body == k).collect();
+fn group(readings: &[DrawnReading], k: usize) -> Option<(f64, f64)> {
+    let g: Vec<&DrawnReading> = readings.iter().filter(|r| r.body == k).collect();
     let first = g.first()?.phi;
     let n = g.len() as f64;
     let phi = first + g.iter().map(|r| fold(r.phi - first)).sum::<f64>() / n;
@@ -65,7 +65,7 @@ fn group(readings: &[Reading], k: usize) -> Option<(f64, f64)> {
 fn picture_details<'b>(
     mut r: crate::check::ClaimBuilder<'b>,
     dm: &DrawnMember,
-    readings: &[Reading],
+    readings: &[DrawnReading],
 ) -> crate::check::ClaimBuilder<'b> {
     let deg = f64::to_degrees;
     for (d, rd) in dm.drawings.iter().zip(readings) {
@@ -118,7 +118,7 @@ pub(super) fn result(b: &ResultBuilder, case: &TwoFramesCase) -> Option<ClaimRes
     let m = member(&qr);
     let tb = theta_bound(&qr, &[half[1], half[2], half[3], half[4]]);
     let bodies = [[pts[0], pts[1], pts[2]], [pts[0], pts[3], pts[4]]];
-    let readings: Vec<Reading> = dm
+    let readings: Vec<DrawnReading> = dm
         .drawings
         .iter()
         .filter_map(|d| {

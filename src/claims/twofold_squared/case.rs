@@ -9,7 +9,7 @@ use crate::limits;
 /// Eq. p3f3sqr.
 #[derive(Clone, Debug, Deserialize, PartialEq)]
 #[serde(deny_unknown_fields)]
-pub struct TwofoldCase {
+pub struct TwofoldSquaredCase {
     /// The three signed relations.
     pub relations: RelationsClaim,
     /// The printed polynomial.
@@ -45,7 +45,7 @@ pub struct PolynomialClaim {
 }
 
 /// The sizes of a `TwofoldSquared` case.
-pub(super) fn sizes(c: &TwofoldCase, v: &Validator) -> Result<()> {
+pub(super) fn sizes(c: &TwofoldSquaredCase, v: &Validator) -> Result<()> {
     v.limit(
         "evaluation_points",
         "evaluation_points",
@@ -61,7 +61,7 @@ pub(super) fn sizes(c: &TwofoldCase, v: &Validator) -> Result<()> {
     v.list("relations.patterns", c.relations.patterns.len())
 }
 
-pub(super) fn checks(c: &TwofoldCase, v: &Validator) -> Result<()> {
+pub(super) fn checks(c: &TwofoldSquaredCase, v: &Validator) -> Result<()> {
     for (i, p) in c.relations.patterns.iter().enumerate() {
         if parse_signs(p).is_none() {
             return v.err(

@@ -4,7 +4,7 @@ use crate::check::Role;
 use crate::check::{points_details, points_tolerance};
 use crate::check::{ClaimResult, Power, ResultBuilder, Tolerance, Value, Verdict};
 use crate::claims::twofold_squared::study::{census, twofold, TwofoldStudy};
-use crate::claims::twofold_squared::{parse_signs, TwofoldCase};
+use crate::claims::twofold_squared::{parse_signs, TwofoldSquaredCase};
 use crate::error::Result;
 
 /// Everything `orthocheck audit twofold-squared` and the report show.
@@ -28,7 +28,7 @@ pub struct TwofoldAudit {
     pub verdict: Verdict,
 }
 
-fn patterns(case: &TwofoldCase) -> Vec<[i64; 3]> {
+fn patterns(case: &TwofoldSquaredCase) -> Vec<[i64; 3]> {
     case.relations
         .patterns
         .iter()
@@ -36,7 +36,7 @@ fn patterns(case: &TwofoldCase) -> Vec<[i64; 3]> {
         .collect()
 }
 
-fn study(case: &TwofoldCase) -> Result<TwofoldStudy> {
+fn study(case: &TwofoldSquaredCase) -> Result<TwofoldStudy> {
     twofold(
         &case.polynomial.printed,
         &patterns(case),
@@ -57,7 +57,7 @@ fn identity_verdict(s: &TwofoldStudy) -> Verdict {
 }
 
 /// Run the exact audit of eq. p3f3sqr.
-pub fn audit(case: &TwofoldCase) -> Result<TwofoldAudit> {
+pub fn audit(case: &TwofoldSquaredCase) -> Result<TwofoldAudit> {
     let s = study(case)?;
     Ok(TwofoldAudit {
         transcription: case.polynomial.printed.clone(),
@@ -87,7 +87,7 @@ fn signs_text(p: &[i64; 3]) -> String {
         .join(" ")
 }
 
-fn relations(b: &ResultBuilder, case: &TwofoldCase) -> ClaimResult {
+fn relations(b: &ResultBuilder, case: &TwofoldSquaredCase) -> ClaimResult {
     let pats = patterns(case);
     let c = census(&pats, case.relations.trials, case.relations.seed);
     let mut r = b
@@ -121,13 +121,16 @@ fn relations(b: &ResultBuilder, case: &TwofoldCase) -> ClaimResult {
 
 /// The audit's item: the claim result of eq. p3f3sqr and the derived polynomial, from one
 /// study.
-pub(super) fn audit_item(b: &ResultBuilder, case: &TwofoldCase) -> Result<(ClaimResult, String)> {
+pub(super) fn audit_item(
+    b: &ResultBuilder,
+    case: &TwofoldSquaredCase,
+) -> Result<(ClaimResult, String)> {
     let s = study(case)?;
     Ok((polynomial(b, case, &s), derived_text(&s)))
 }
 
 /// The claim result of eq. p3f3sqr.
-fn polynomial(b: &ResultBuilder, case: &TwofoldCase, s: &TwofoldStudy) -> ClaimResult {
+fn polynomial(b: &ResultBuilder, case: &TwofoldSquaredCase, s: &TwofoldStudy) -> ClaimResult {
     let (rejected, term, mutant_agree) = match &s.mutant {
         Some(m) => (m.rejected(), Power::term_text(&m.term), m.points.agreeing),
         None => (false, String::new(), 0),
@@ -173,7 +176,7 @@ fn polynomial(b: &ResultBuilder, case: &TwofoldCase, s: &TwofoldStudy) -> ClaimR
     r.verdict(identity_verdict(s))
 }
 
-pub(super) fn check(b: &ResultBuilder, case: &TwofoldCase) -> Result<Vec<ClaimResult>> {
+pub(super) fn results(b: &ResultBuilder, case: &TwofoldSquaredCase) -> Result<Vec<ClaimResult>> {
     Ok(vec![relations(b, case), polynomial(b, case, &study(case)?)])
 }
 

@@ -13,7 +13,7 @@ use crate::check::{ClaimResult, ResultBuilder};
 use crate::claims::ClaimKind;
 use crate::error::Result;
 
-impl ClaimKind for TwofoldCase {
+impl ClaimKind for TwofoldSquaredCase {
     fn trials(&self) -> Vec<(&'static str, usize)> {
         vec![
             ("relations.trials", self.relations.trials),
@@ -31,7 +31,7 @@ impl ClaimKind for TwofoldCase {
     }
 
     fn run(&self, b: &ResultBuilder, _earlier: &[ClaimResult]) -> Result<Vec<ClaimResult>> {
-        judge::check(b, self)
+        judge::results(b, self)
     }
 
     fn audited() -> bool {

@@ -323,7 +323,7 @@ pub struct Outcome {
     /// The bundle adjustment, when it ran.
     pub bundle: Option<BundleReport>,
     /// In robust mode: the threshold, the dropped observations, the rejected points.
-    pub robust: Option<robust::Report>,
+    pub robust: Option<robust::RobustReport>,
 }
 
 /// The pipeline of `orthocheck reconstruct`: in robust mode RANSAC and the judgement of every

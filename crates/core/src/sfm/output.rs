@@ -11,7 +11,7 @@ use serde::ser::{SerializeMap, SerializeStruct};
 use serde::{Serialize, Serializer};
 
 use super::judge::MIN_IMAGES;
-use super::robust::{Dropped, Report};
+use super::robust::{Dropped, RobustReport};
 use super::threshold::{Source, Threshold, RAYLEIGH_INLIER, RAYLEIGH_MEDIAN};
 use super::{Frame, Outcome, Reconstruction};
 use crate::numfmt::sig;
@@ -101,7 +101,7 @@ impl Serialize for DroppedJson<'_> {
 }
 
 /// Each kept point's inlier frames, by name in the tracks' order.
-struct InlierFrames<'a>(&'a super::robust::Report);
+struct InlierFrames<'a>(&'a super::robust::RobustReport);
 
 impl Serialize for InlierFrames<'_> {
     fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
@@ -177,7 +177,7 @@ fn threshold_line(t: &Threshold) -> String {
 
 /// The text lines of robust mode: the threshold, the dropped observations, the rejected
 /// points.
-fn robust_lines(s: &mut String, r: &Report) {
+fn robust_lines(s: &mut String, r: &RobustReport) {
     let _ = writeln!(s, "{}", threshold_line(&r.threshold));
     let listed: Vec<String> = r
         .dropped

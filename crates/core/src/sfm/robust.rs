@@ -410,7 +410,7 @@ pub struct Dropped {
 
 /// What robust mode did.
 #[derive(Clone, Debug, PartialEq)]
-pub struct Report {
+pub struct RobustReport {
     /// The threshold of the final judgement.
     pub threshold: Threshold,
     /// The observations judged (every observation of the input).
@@ -444,7 +444,7 @@ pub struct Fitted {
     /// Its bundle adjustment, when it ran.
     pub bundle: Option<BundleReport>,
     /// What robust mode did.
-    pub report: Report,
+    pub report: RobustReport,
 }
 
 /// A fit of a judgement's kept observations.
@@ -590,7 +590,7 @@ fn summary(
     threshold: Threshold,
     (samples, triangles): (usize, usize),
     rounds: usize,
-) -> Report {
+) -> RobustReport {
     let mut is_kept = vec![false; obs.names.len()];
     for &j in &judged.kept {
         is_kept[j] = true;
@@ -613,7 +613,7 @@ fn summary(
                 .collect()
         })
         .collect();
-    Report {
+    RobustReport {
         threshold,
         observations: obs.count(),
         kept: names(true),
@@ -635,7 +635,7 @@ fn summary(
 }
 
 /// The `method` line of robust mode.
-fn method_line(r: &Report, given: bool, note: Option<String>) -> String {
+fn method_line(r: &RobustReport, given: bool, note: Option<String>) -> String {
     let mut s = format!(
         "ransac over the four-point solver: {} samples{}, the best by {}; judged again from the fit {} time(s): {} of {} observations dropped beyond {} image units, {} of {} points kept",
         r.samples,

@@ -11,7 +11,7 @@ use crate::model::{Body, Motion, Scene};
 
 /// Solution counts over seeded generic scenes (three points, three frames).
 #[derive(Clone, Debug, serde::Serialize)]
-pub struct P3f3Census {
+pub struct P3f3CensusCase {
     /// Scenes solved.
     pub trials: usize,
     /// Seed.
@@ -38,8 +38,8 @@ pub struct P3f3Census {
 }
 
 /// Solve `trials` seeded random scenes and two degenerate ones.
-pub fn p3f3(trials: usize, seed: u64) -> P3f3Census {
-    let mut c = P3f3Census {
+pub fn p3f3(trials: usize, seed: u64) -> P3f3CensusCase {
+    let mut c = P3f3CensusCase {
         trials,
         seed,
         feasible_counts: [0; 3],
@@ -109,7 +109,7 @@ pub fn p3f3(trials: usize, seed: u64) -> P3f3Census {
 }
 /// The two degenerate cases §2.2 names: a collinear body, two frames identical up to an
 /// in-plane rotation.
-fn degenerate_p3f3(c: &mut P3f3Census, seed: u64) {
+fn degenerate_p3f3(c: &mut P3f3CensusCase, seed: u64) {
     let mut collinear = Scene::random(3, 3, seed);
     let d = collinear.body.points[1] - collinear.body.points[0];
     collinear.body = Body::new(vec![
@@ -132,7 +132,7 @@ fn degenerate_p3f3(c: &mut P3f3Census, seed: u64) {
 
 /// Uniqueness over seeded generic scenes, and the special motions.
 #[derive(Clone, Debug, serde::Serialize)]
-pub struct P3f4Census {
+pub struct P3f4CensusCase {
     /// Scenes solved.
     pub trials: usize,
     /// Frames per scene.
@@ -154,9 +154,9 @@ pub struct P3f4Census {
 }
 
 /// Solve `trials` seeded random scenes with `frames` frames, plus two special motions.
-pub fn p3f4(trials: usize, frames: usize, seed: u64) -> P3f4Census {
+pub fn p3f4(trials: usize, frames: usize, seed: u64) -> P3f4CensusCase {
     use nalgebra::Unit;
-    let mut c = P3f4Census {
+    let mut c = P3f4CensusCase {
         trials,
         frames,
         seed,
@@ -208,7 +208,7 @@ pub fn p3f4(trials: usize, frames: usize, seed: u64) -> P3f4Census {
 
 /// Uniqueness of the paper's system over seeded generic scenes, and its degenerate cases.
 #[derive(Clone, Debug, serde::Serialize)]
-pub struct P4f3Census {
+pub struct P4f3CensusCase {
     /// Scenes.
     pub trials: usize,
     /// Seed.
@@ -235,8 +235,8 @@ pub struct P4f3Census {
 
 /// Solve `trials` seeded generic scenes of four points in three frames, then planar bodies
 /// and motions about the viewing axis.
-pub fn p4f3(trials: usize, seed: u64) -> P4f3Census {
-    let mut c = P4f3Census {
+pub fn p4f3(trials: usize, seed: u64) -> P4f3CensusCase {
+    let mut c = P4f3CensusCase {
         trials,
         seed,
         unique: 0,
@@ -288,7 +288,7 @@ pub fn p4f3(trials: usize, seed: u64) -> P4f3Census {
 }
 
 /// Planar bodies (z an affine function of x and y) and motions about the viewing axis.
-fn degenerate_p4f3(c: &mut P4f3Census, trials: usize, seed: u64) {
+fn degenerate_p4f3(c: &mut P4f3CensusCase, trials: usize, seed: u64) {
     // planar bodies: z an affine function of x and y
     c.planar_trials = trials.clamp(1, 200);
     for t in 0..c.planar_trials {

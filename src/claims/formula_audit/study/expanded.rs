@@ -11,7 +11,7 @@ use num_rational::BigRational;
 use num_traits::One;
 use rayon::prelude::*;
 
-use super::reading::{Reading, Text};
+use super::reading::{FormulaReading, Text};
 use super::{accepted_quadratic, Form, Judged};
 use crate::algebra::modp::{agree_mod_p, proportional_mod_p, ModPAgreement};
 use crate::algebra::{Monomial, Poly, RatFn};
@@ -203,7 +203,7 @@ fn linear_coefficient(p: &Poly, e: usize) -> Poly {
 /// formula reads, expands and checks what it needs (each text and each name's expansion is
 /// computed once, by whichever formula needs it first), in parallel.
 pub fn expanded(case: &FormulaAuditCase, judged: Judged) -> Result<Vec<ExpandedFinding>> {
-    let (expansions, reading) = (Expansions::new(case), Reading::new(case, false));
+    let (expansions, reading) = (Expansions::new(case), FormulaReading::new(case, false));
     // every formula computed, then the first error in case order (whichever finished first)
     let found: Vec<Result<ExpandedFinding>> = case
         .formulas

@@ -1,4 +1,4 @@
-//! Reading the case's formulas as the paper defines them. A text reads the names bound before
+//! FormulaReading the case's formulas as the paper defines them. A text reads the names bound before
 //! it: the macros (`definitions`, in order), then each formula that `defines` a name (its
 //! corrected form when it has one). Each text is read once, when a formula being judged needs
 //! it, and only the names it uses are looked up: one formula judged alone is read exactly as
@@ -25,7 +25,7 @@ pub(super) enum Text {
 type Read = std::result::Result<RatFn, ParseError>;
 
 /// The case's texts, each read at most once.
-pub(super) struct Reading<'a> {
+pub(super) struct FormulaReading<'a> {
     case: &'a FormulaAuditCase,
     /// A formula keeps its `symbols` free (the macro level), or every bound name is
     /// substituted (the expanded level).
@@ -35,11 +35,11 @@ pub(super) struct Reading<'a> {
     corrected: Vec<OnceLock<Read>>,
 }
 
-impl<'a> Reading<'a> {
+impl<'a> FormulaReading<'a> {
     /// Nothing read yet. `keep_symbols`: whether a formula's `symbols` stay free.
-    pub(super) fn new(case: &'a FormulaAuditCase, keep_symbols: bool) -> Reading<'a> {
+    pub(super) fn new(case: &'a FormulaAuditCase, keep_symbols: bool) -> FormulaReading<'a> {
         let slots = |n: usize| (0..n).map(|_| OnceLock::new()).collect();
-        Reading {
+        FormulaReading {
             case,
             keep_symbols,
             definitions: slots(case.definitions.len()),

@@ -3,7 +3,7 @@
 
 use crate::check::figure::{Figure, Layer, Plot, Shape, Style};
 use crate::claims::linearity_price::study::{Method, Results};
-use crate::claims::linearity_price::LinearityCase;
+use crate::claims::linearity_price::LinearityPriceCase;
 
 /// Errors and levels are drawn in percent.
 const PERCENT: f64 = 100.0;
@@ -19,7 +19,7 @@ const SERIES: [(Method, Style); 5] = [
 ];
 
 /// `fig-linearity-price`: one panel per body.
-pub(super) fn figure(res: &Results, case: &LinearityCase) -> Figure {
+pub(super) fn figure(res: &Results, case: &LinearityPriceCase) -> Figure {
     let panels = res
         .bodies
         .iter()

@@ -3,7 +3,7 @@
 //! drawn as vertical lines, the points where the judge reads each curve marked, and a caption
 //! that says in the judge's numbers why the level holds or fails.
 
-use super::judge::Reading;
+use super::judge::Readings;
 use super::{Direction, NoiseLevel};
 use crate::check::figure::{ecdf, percent_text, Figure, Layer, Plot, Shape, Style};
 use crate::check::noise::{any_model, on_run, parts, Claim, Decision, Judged, Part, TYPICAL_BAND};
@@ -29,7 +29,7 @@ const RUN: &str = "the paper's test run";
 pub(super) fn figure(
     result: &ClaimResult,
     setting: &str,
-    (lv, j, reading): (&NoiseLevel, &Judged, &Reading),
+    (lv, j, reading): (&NoiseLevel, &Judged, &Readings),
     study: (usize, u64),
 ) -> Figure {
     let bound = bound_layer(lv, j.claim);
@@ -179,7 +179,7 @@ fn read_points(j: &Judged) -> Vec<Layer> {
 /// What the figure draws, then why the level holds or fails, then the failed trials.
 fn caption(
     result: &ClaimResult,
-    (lv, j, reading): (&NoiseLevel, &Judged, &Reading),
+    (lv, j, reading): (&NoiseLevel, &Judged, &Readings),
     study: (usize, u64),
 ) -> String {
     let (trials, seed) = study;
@@ -227,7 +227,7 @@ fn caption(
 
 /// The readings the sentence leaves open besides the one drawn, and what they decide
 /// together (empty when the sentence names its reading).
-fn other_readings(j: &Judged, reading: &Reading) -> String {
+fn other_readings(j: &Judged, reading: &Readings) -> String {
     let others = reading.metrics.get(1..).unwrap_or(&[]);
     if others.is_empty() && reading.extra.is_empty() {
         return String::new();

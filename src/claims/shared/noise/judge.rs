@@ -117,7 +117,7 @@ impl Context<'_> {
                 )
             })
             .collect();
-        let reading = Reading {
+        let reading = Readings {
             metrics: &metrics,
             all: &all,
             extra: &extra,
@@ -200,7 +200,7 @@ impl Context<'_> {
         suffix: Option<String>,
         read_as: Symbols,
         judged: &Judged,
-        reading: &Reading,
+        reading: &Readings,
         neighbour: Option<&[LevelResult]>,
     ) -> ClaimResult {
         let (claim, decision, f) = (judged.claim, reading.decision(), &judged.facts);
@@ -306,7 +306,7 @@ impl Context<'_> {
 }
 
 /// A level's claim under each reading of its sentence.
-pub(super) struct Reading<'a> {
+pub(super) struct Readings<'a> {
     /// The metrics of the readings the sentence leaves open (or the one it names).
     pub metrics: &'a [usize],
     /// The claim judged under every metric, in the order of [`METRICS`].
@@ -327,7 +327,7 @@ fn subject_words(c: Claim) -> &'static str {
     }
 }
 
-impl Reading<'_> {
+impl Readings<'_> {
     /// Every reading read, the drawn subject's first.
     pub(super) fn read(&self) -> impl Iterator<Item = &Judged<'_>> {
         self.metrics.iter().map(|&m| &self.all[m]).chain(self.extra)
