@@ -26,7 +26,9 @@ pub use load::{
     parse_yaml_limited, Kinds,
 };
 pub use origin::CaseOrigin;
-pub use paper::{load_paper, paper_of, parse_paper, Paper, SectionTitle, PAPER_FILE};
+pub use paper::{
+    load_paper, paper_of, parse_paper, section_depth, section_key, Paper, SectionTitle, PAPER_FILE,
+};
 pub use printed::{contradicting_square, Printed};
 pub use quote::{parse_lines, quote_at, quote_within, SourceText};
 pub use source::{ClaimPlace, ClaimRef, Source};

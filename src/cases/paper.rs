@@ -59,6 +59,25 @@ impl Paper {
     }
 }
 
+/// Sort key of a section number: numbers numerically, then the appendix.
+pub fn section_key(s: &str) -> (u32, Vec<u32>, String) {
+    if s.chars().next().is_some_and(|c| c.is_ascii_digit()) {
+        (
+            0,
+            s.split(['.', '-']).filter_map(|p| p.parse().ok()).collect(),
+            String::new(),
+        )
+    } else {
+        (1, Vec::new(), s.to_string())
+    }
+}
+
+/// The depth of a section number as the cases write it: "2" is a section (1), "2.1" a
+/// subsection (2), "A" the appendix (1).
+pub fn section_depth(number: &str) -> usize {
+    1 + number.matches('.').count().min(1)
+}
+
 /// Read [`PAPER_FILE`] of the cases folder `dir`.
 pub fn load_paper(dir: &Path) -> Result<Paper> {
     paper_of(&super::CaseOrigin::Folder(dir.to_path_buf()))

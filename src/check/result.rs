@@ -379,6 +379,26 @@ impl Quantity {
             Role::Cell {
                 model: model.into(),
                 statistic: statistic.into(),
+                percentiles: Vec::new(),
+            },
+        )
+    }
+
+    /// One cell of a table whose value lists the quantiles of `model` at the probabilities
+    /// `percentiles` (named "model: statistic").
+    pub fn quantiles(
+        model: &str,
+        statistic: &str,
+        percentiles: &[f64],
+        values: &[f64],
+    ) -> Quantity {
+        Quantity::with_role(
+            &format!("{model}: {statistic}"),
+            Value::reals(values),
+            Role::Cell {
+                model: model.into(),
+                statistic: statistic.into(),
+                percentiles: percentiles.to_vec(),
             },
         )
     }
@@ -400,6 +420,11 @@ pub enum Role {
         model: String,
         /// The column: the statistic.
         statistic: String,
+        /// For a statistic that is a list of quantiles, the probability of each (typed for the
+        /// renderers, never read from the statistic's words; not serialized: the value lists
+        /// them in order).
+        #[serde(skip)]
+        percentiles: Vec<f64>,
     },
     /// The text as printed (the source's LaTeX): an erratum's printed side shows it alone.
     AsPrinted,
@@ -611,6 +636,19 @@ impl Evidence {
     /// One cell of a table: `statistic` of `model`.
     pub fn with_cell(mut self, model: &str, statistic: &str, value: impl Into<Value>) -> Self {
         self.details.push(Quantity::cell(model, statistic, value));
+        self
+    }
+
+    /// One cell listing the quantiles of `model` at the probabilities `percentiles`.
+    pub fn with_quantiles(
+        mut self,
+        model: &str,
+        statistic: &str,
+        percentiles: &[f64],
+        values: &[f64],
+    ) -> Self {
+        self.details
+            .push(Quantity::quantiles(model, statistic, percentiles, values));
         self
     }
 

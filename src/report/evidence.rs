@@ -6,6 +6,7 @@
 use super::values::{sampled_text, value_text};
 use crate::check::Role;
 use crate::check::{ClaimResult, Quantity, Value};
+use crate::numfmt::sig;
 
 /// A table of formatted cells.
 #[derive(Clone, Debug, PartialEq)]
@@ -31,17 +32,13 @@ pub struct Layout<'a> {
     pub trials: Option<u64>,
 }
 
-/// `5/25/50/75/95/99 % quantiles` → the percentiles `["5 %", "25 %", …]`.
-fn percentiles(statistic: &str) -> Option<Vec<String>> {
-    let head = statistic.strip_suffix(" % quantiles")?;
-    let ps: Vec<String> = head.split('/').map(|p| format!("{} %", p.trim())).collect();
-    ps.iter()
-        .all(|p| {
-            p.trim_end_matches(" %")
-                .chars()
-                .all(|c| c.is_ascii_digit() || c == '.')
-        })
-        .then_some(ps)
+/// The column headers of a quantile statistic (`["5 %", "25 %", …]`), read from the typed
+/// probabilities its cells carry; none for any other statistic.
+fn percentiles(statistic: &str, typed: &[(String, Vec<f64>)]) -> Option<Vec<String>> {
+    typed
+        .iter()
+        .find(|(s, _)| s == statistic)
+        .map(|(_, ps)| ps.iter().map(|p| format!("{} %", sig(100.0 * p))).collect())
 }
 
 /// Lay out `c`'s evidence.
@@ -50,7 +47,9 @@ pub fn layout(c: &ClaimResult) -> Layout<'_> {
     let details = &c.evidence.details;
     let split = |q: &Quantity| -> Option<(String, String)> {
         match &q.role {
-            Role::Cell { model, statistic } => Some((model.clone(), statistic.clone())),
+            Role::Cell {
+                model, statistic, ..
+            } => Some((model.clone(), statistic.clone())),
             _ => None,
         }
     };
@@ -71,10 +70,23 @@ pub fn layout(c: &ClaimResult) -> Layout<'_> {
         .filter(|q| in_table(q))
         .filter_map(|q| split(q).map(|(m, s)| (m, s, &q.value)))
         .collect();
+    let mut typed: Vec<(String, Vec<f64>)> = Vec::new();
+    for q in details {
+        if let Role::Cell {
+            statistic,
+            percentiles,
+            ..
+        } = &q.role
+            && !percentiles.is_empty()
+            && !typed.iter().any(|(s, _)| s == statistic)
+        {
+            typed.push((statistic.clone(), percentiles.clone()));
+        }
+    }
     let mut tables = entry_tables(details, trials);
     if !models.is_empty() {
-        tables.extend(quantile_tables(&models, &grouped, trials));
-        if let Some(t) = statistic_table(&models, &grouped, trials) {
+        tables.extend(quantile_tables(&models, &grouped, &typed, trials));
+        if let Some(t) = statistic_table(&models, &grouped, &typed, trials) {
             tables.push(t);
         }
     }
@@ -140,18 +152,22 @@ fn entry_tables(details: &[Quantity], trials: Option<u64>) -> Vec<Table> {
 fn quantile_tables(
     models: &[String],
     grouped: &[(String, String, &Value)],
+    typed: &[(String, Vec<f64>)],
     trials: Option<u64>,
 ) -> Vec<Table> {
     let mut stats: Vec<&str> = Vec::new();
     for (_, s, v) in grouped {
-        if percentiles(s).is_some() && matches!(v, Value::Reals { .. }) && !stats.contains(&&**s) {
+        if percentiles(s, typed).is_some()
+            && matches!(v, Value::Reals { .. })
+            && !stats.contains(&&**s)
+        {
             stats.push(s);
         }
     }
     stats
         .into_iter()
         .filter_map(|stat| {
-            let columns = percentiles(stat)?;
+            let columns = percentiles(stat, typed)?;
             let rows = models
                 .iter()
                 .map(|m| {
@@ -192,11 +208,12 @@ fn cell(v: &Value, trials: Option<u64>) -> String {
 fn statistic_table(
     models: &[String],
     grouped: &[(String, String, &Value)],
+    typed: &[(String, Vec<f64>)],
     trials: Option<u64>,
 ) -> Option<Table> {
     let mut stats: Vec<&str> = Vec::new();
     for (_, s, v) in grouped {
-        let quantiles = percentiles(s).is_some() && matches!(v, Value::Reals { .. });
+        let quantiles = percentiles(s, typed).is_some() && matches!(v, Value::Reals { .. });
         if !quantiles && !stats.contains(&&**s) {
             stats.push(s);
         }
@@ -258,13 +275,19 @@ mod tests {
     fn shared_statistics_become_tables_with_sampled_digits() {
         let c = claim(vec![
             Quantity::with_role("trials per model", Value::count(10_000), Role::Trials),
-            Quantity::cell(
+            Quantity::quantiles(
                 "A",
                 "5/50/95 % quantiles",
-                Value::reals(&[0.0123456, 0.5, 1.23456]),
+                &[0.05, 0.5, 0.95],
+                &[0.0123456, 0.5, 1.23456],
             ),
             Quantity::cell("A", "mean over the trials", 0.2345678),
-            Quantity::cell("B", "5/50/95 % quantiles", Value::reals(&[0.01, 0.6, 2.0])),
+            Quantity::quantiles(
+                "B",
+                "5/50/95 % quantiles",
+                &[0.05, 0.5, 0.95],
+                &[0.01, 0.6, 2.0],
+            ),
             Quantity::cell("B", "mean over the trials", 0.3),
             Quantity::cell("mutant", "lonely", 0.123456),
             // a printed run's error is a row of its own, whatever its name says

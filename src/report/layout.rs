@@ -70,19 +70,6 @@ pub fn anchor(id: &str) -> String {
     format!("claim-{clean}")
 }
 
-/// Sort key of a section number: numbers numerically, then the appendix.
-fn section_key(s: &str) -> (u32, Vec<u32>, String) {
-    if s.chars().next().is_some_and(|c| c.is_ascii_digit()) {
-        (
-            0,
-            s.split(['.', '-']).filter_map(|p| p.parse().ok()).collect(),
-            String::new(),
-        )
-    } else {
-        (1, Vec::new(), s.to_string())
-    }
-}
-
 /// The first line number a claim cites (claims without one sort last).
 pub fn first_line(c: &ClaimResult) -> u32 {
     let digits: String = c
@@ -112,7 +99,7 @@ pub fn sections(r: &Report) -> Vec<Section<'_>> {
             numbers.push((c.section.clone(), None));
         }
     }
-    numbers.sort_by_key(|(n, _)| section_key(n));
+    numbers.sort_by_key(|(n, _)| crate::cases::section_key(n));
     numbers
         .into_iter()
         .map(|(number, title)| {
@@ -121,7 +108,7 @@ pub fn sections(r: &Report) -> Vec<Section<'_>> {
             // stable: claims on the same line keep the cases' order
             claims.sort_by_key(|c| first_line(c));
             Section {
-                depth: if number.contains('.') { 2 } else { 1 },
+                depth: crate::cases::section_depth(&number),
                 number,
                 title,
                 claims,
@@ -281,7 +268,7 @@ mod tests {
     #[test]
     fn sections_sort_in_reading_order() {
         let mut v = vec!["A", "5.2", "2.2", "10", "2", "5"];
-        v.sort_by_key(|s| section_key(s));
+        v.sort_by_key(|s| crate::cases::section_key(s));
         assert_eq!(v, vec!["2", "2.2", "5", "5.2", "10", "A"]);
     }
 }

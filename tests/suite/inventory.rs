@@ -252,7 +252,7 @@ fn every_defect_is_one_erratum() {
             .iter()
             .chain(&c.computed)
             .find(|q| {
-                matches!(&q.role, orthocheck::check::Role::Cell { model, statistic }
+                matches!(&q.role, orthocheck::check::Role::Cell { model, statistic, .. }
                     if model == "every macro expanded" && statistic == "verdict")
             })
             .unwrap_or_else(|| panic!("{id} lacks its expanded check"));

@@ -70,13 +70,19 @@ fn claims() -> Vec<ClaimResult> {
         if c.id == "ex2-body" {
             c.evidence = Evidence::new("contradicted by p4f3-unique/planar-body")
                 .with_role("trials per model", Value::count(10_000), Role::Trials)
-                .with_cell(
+                .with_quantiles(
                     "A",
                     "5/50/95 % quantiles",
-                    Value::reals(&[0.0123456, 0.5, 1.23456]),
+                    &[0.05, 0.5, 0.95],
+                    &[0.0123456, 0.5, 1.23456],
                 )
                 .with_cell("A", "mean over the trials", 0.2345678)
-                .with_cell("B", "5/50/95 % quantiles", Value::reals(&[0.01, 0.6, 2.0]))
+                .with_quantiles(
+                    "B",
+                    "5/50/95 % quantiles",
+                    &[0.05, 0.5, 0.95],
+                    &[0.01, 0.6, 2.0],
+                )
                 .with_cell("B", "mean over the trials", 0.3);
         }
         c

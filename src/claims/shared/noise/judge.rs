@@ -503,7 +503,7 @@ impl Context<'_> {
             Value::count_of(d.failures, d.trials),
         );
         let qs: Vec<f64> = QUANTILES.iter().filter_map(|&q| d.quantile(m, q)).collect();
-        ev = ev.with_cell(model, "5/25/50/75/95/99 % quantiles", Value::reals(&qs));
+        ev = ev.with_quantiles(model, "5/25/50/75/95/99 % quantiles", &QUANTILES, &qs);
         if !d.sorted[m].is_empty() {
             ev = ev.with_cell(model, "mean over the trials", d.mean(m));
         }
