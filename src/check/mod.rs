@@ -7,12 +7,13 @@ mod points;
 
 pub use points::{points_details, points_tolerance, prime_details};
 
+mod evidence;
 mod resolution;
 mod result;
+pub use evidence::Evidence;
 pub use resolution::{alternative_verdict, excluded_by, Resolution};
 pub use result::{
-    ClaimResult, Evidence, Power, PowerKind, Quantity, Real, Role, Tolerance, ToleranceSource,
-    Value, Verdict,
+    ClaimResult, Power, PowerKind, Quantity, Real, Role, Tolerance, ToleranceSource, Value, Verdict,
 };
 
 use crate::cases::Case;
