@@ -230,8 +230,11 @@ fn refused(target: &Path, clobber: bool) -> Option<&'static str> {
 /// held until the returned handle is dropped; another process writing a set there waits.
 fn folder_lock(dir: &Path) -> std::io::Result<std::fs::File> {
     let f = std::fs::File::open(dir)?;
-    f.lock()?;
-    Ok(f)
+    match f.lock() {
+        // a file system without advisory locks: the set is still whole within this process
+        Err(e) if e.kind() == std::io::ErrorKind::Unsupported => Ok(f),
+        r => r.map(|()| f),
+    }
 }
 
 /// A hard link to the old file at `target` under a hidden name beside it, to put back should
@@ -249,6 +252,11 @@ fn backup(target: &Path, clobber: bool) -> std::io::Result<Option<PathBuf>> {
         match std::fs::hard_link(target, &b) {
             Ok(()) => return Ok(Some(b)),
             Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists => continue,
+            // a file system without hard links: a copy under the same unused name
+            Err(_) if std::fs::symlink_metadata(&b).is_err() => {
+                std::fs::copy(target, &b)?;
+                return Ok(Some(b));
+            }
             Err(e) => return Err(e),
         }
     }
