@@ -21,12 +21,14 @@ pub(super) fn results(
     let factors = [case.census_c_factor];
     let generic = census(case.census_trials, case.seed, &factors, false);
     let planar = census(case.census_trials, case.seed, &factors, true);
+    let cause = cause_result(b, case, truth, blocks, &generic, &planar);
+    let planar_body = planar_result(b, case, cause.verdict, &generic, &planar);
     vec![
         first_result(b, case, truth, blocks, &r, &generic),
         ranking_result(b, case, truth, &r),
         generic_result(b, case, &generic, &planar),
-        cause_result(b, case, truth, blocks, &generic, &planar),
-        planar_result(b, case, truth, blocks, &generic, &planar),
+        cause,
+        planar_body,
     ]
 }
 
@@ -207,19 +209,17 @@ fn cause_result(
 fn planar_result(
     b: &ResultBuilder,
     case: &IdentityExampleCase,
-    truth: &[usize; 4],
-    blocks: &[Block],
+    cause: Verdict,
     g: &ConventionCensus,
     p: &ConventionCensus,
 ) -> ClaimResult {
-    let cause = cause_result(b, case, truth, blocks, g, p);
     let planar_both = judge_share(p.both, p.scenes) == Verdict::StatisticalHolds;
     let generic_one = judge_share(g.exactly_one, g.scenes) == Verdict::StatisticalHolds;
-    let shown = cause.verdict == Verdict::ReproducedWithinRounding && planar_both && generic_one;
+    let shown = cause == Verdict::ReproducedWithinRounding && planar_both && generic_one;
     b.claim(&case.correct)
         .suffix("planar-body")
         .printed("attempts called correct", Value::count(2))
-        .computed("the example's body is planar and both versions pass there (ex5-correct/cause)", Value::flag(cause.verdict == Verdict::ReproducedWithinRounding))
+        .computed("the example's body is planar and both versions pass there (ex5-correct/cause)", Value::flag(cause == Verdict::ReproducedWithinRounding))
         .computed_cell("planar scenes", "both versions pass", Value::count_of(p.both, p.scenes))
         .computed_cell("generic scenes", "exactly one version passes", Value::count_of(g.exactly_one, g.scenes))
         .detail_as("defect", Value::label("the example's body is planar (P lies in the plane of R, T, Q: the hidden table's Gram matrix has rank 2), so both signs of b put the tested point on its line whatever d: the example presents as the procedure's behaviour what only a planar body does, and cannot show what the test tells apart; in generic bodies exactly one version passes"), crate::check::Role::Defect)
