@@ -140,7 +140,8 @@ pub fn verify<C: Schema>(
     for (path, text) in origin.case_texts()? {
         let tree: serde_json::Value = parse_yaml(&text, &path)?;
         let case = tree["id"].as_str().unwrap_or_default().to_string();
-        let file = file_name(&path);
+        // the file as read: `paper_cases/…` when embedded, the user's path with `--cases`
+        let file = path.display().to_string();
         let disagree = |claim, field, message| Disagreement {
             file: file.clone(),
             case: case.clone(),
@@ -219,13 +220,6 @@ fn verify_paper(origin: &CaseOrigin, paper: &Paper, latex: &LatexSource) -> Resu
         ));
     }
     Ok(defs.len())
-}
-
-fn file_name(path: &Path) -> String {
-    path.file_name().map_or_else(
-        || path.display().to_string(),
-        |n| format!("paper_cases/{}", n.to_string_lossy()),
-    )
 }
 
 /// How a quote was found at its lines.

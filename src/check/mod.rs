@@ -141,6 +141,14 @@ impl ClaimBuilder<'_> {
         self
     }
 
+    /// One piece of evidence, one entry of the named table `table`.
+    pub fn entry(mut self, table: &str, row: &str, column: &str, v: impl Into<Value>) -> Self {
+        self.evidence
+            .details
+            .push(Quantity::entry(table, row, column, v));
+        self
+    }
+
     /// One piece of evidence, one cell of a table: `statistic` of `model`.
     pub fn cell(mut self, model: &str, statistic: &str, v: impl Into<Value>) -> Self {
         self.evidence

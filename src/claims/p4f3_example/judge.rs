@@ -420,23 +420,17 @@ fn reading_rows<'b>(
     for (m, median, ok) in each {
         let row = metric_phrase(*m);
         r = r
-            .detail_as(
-                &format!("{row}: median at the smallest level"),
+            .entry(
+                "readings",
+                row,
+                "median at the smallest printed level",
                 median.unwrap_or(f64::MAX),
-                Role::Entry {
-                    table: "readings".into(),
-                    row: row.into(),
-                    column: "median at the smallest printed level".into(),
-                },
             )
-            .detail_as(
-                &format!("{row}: decision"),
+            .entry(
+                "readings",
+                row,
+                "decision",
                 Value::label(if *ok { "holds" } else { "fails" }),
-                Role::Entry {
-                    table: "readings".into(),
-                    row: row.into(),
-                    column: "decision".into(),
-                },
             );
     }
     r

@@ -117,9 +117,10 @@ fn decide<'b>(r: ClaimBuilder<'b>, d: &Decision) -> (ClaimBuilder<'b>, Decided) 
 fn absence_decision<'b>(r: ClaimBuilder<'b>, strings: &[String]) -> (ClaimBuilder<'b>, Decided) {
     let d = Decided {
         ok: !strings.is_empty(),
+        // the record decides nothing a run could refute without the source: it adds no power
         mutant_rejected: true,
         method: "; the strings recorded as absent from the source (searched for in the whole source whenever it is given)",
-        mutant: "",
+        mutant: "; the recorded absence adds no power of its own (the source verifies it)",
     };
     (
         r.computed(
