@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Time each case-file limit at its value (docs/limits.md): one paper case, changed to the
+"""Time and peak memory of each case-file limit at its value (docs/limits.md): one paper case, changed to the
 limit, run alone with `orthocheck report --cases DIR`. Build first: cargo build --release.
 
     python3 scripts/case_limits.py
@@ -38,7 +38,7 @@ LIMITS = [
 
 def main():
     cases = os.path.join(ROOT, "paper_cases")
-    print("| limit | case | seconds |\n|---|---|---:|")
+    print("| limit | case | seconds | peak MiB |\n|---|---|---:|---:|")
     for what, name, pattern, replacement in LIMITS:
         with tempfile.TemporaryDirectory() as d:
             for f in os.listdir(cases):
@@ -49,11 +49,14 @@ def main():
             assert changed != text, f"{name}: {pattern} not found"
             open(os.path.join(d, name), "w", encoding="utf-8").write(changed)
             start = time.time()
-            run = subprocess.run([BIN, "report", "--cases", d, "--out", os.path.join(d, "out")],
-                                 capture_output=True, text=True)
+            child = subprocess.Popen([BIN, "report", "--cases", d, "--out",
+                                      os.path.join(d, "out")],
+                                     stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+            _, status, usage = os.wait4(child.pid, 0)
             took = time.time() - start
-            assert run.returncode == 0, run.stderr
-            print(f"| {what} | {name} | {took:.2f} |")
+            assert os.waitstatus_to_exitcode(status) == 0, child.stderr.read().decode()
+            # ru_maxrss: this child's peak resident set, in KiB
+            print(f"| {what} | {name} | {took:.2f} | {usage.ru_maxrss / 1024:.0f} |")
 
 
 if __name__ == "__main__":

@@ -392,22 +392,21 @@ pub fn load_cases_of<C: Schema>(origin: &CaseOrigin, kinds: Kinds) -> Result<Vec
     Ok(cases)
 }
 
-/// Where the folder has a claim inventory (`claims.md`), every `claim:` a case names must
-/// be one of its ids (or `id/part`): a typo would decide a claim the paper does not make.
+/// Every `claim:` a case names must be an id of the folder's claim inventory (`claims.md`),
+/// or of the paper's own, built in, when the folder has none (or `id/part`): a typo would
+/// decide a claim the paper does not make.
 fn inventory_claims(
     origin: &CaseOrigin,
     texts: &[(PathBuf, String)],
     named: &[Names],
 ) -> Result<()> {
-    let mut ids = std::collections::BTreeSet::new();
-    for name in super::INVENTORY_FILES {
-        match origin.file(name) {
-            Ok((_, text)) => ids.extend(super::inventory_ids(&text)),
-            Err(Error::Io { .. }) if name != super::INVENTORY_FILES[0] => {}
-            Err(Error::Io { .. }) => return Ok(()),
-            Err(e) => return Err(e),
-        }
-    }
+    let (ids, whose) = match inventory(origin)? {
+        Some(ids) => (ids, "the inventory"),
+        None => (
+            inventory(&CaseOrigin::Embedded)?.unwrap_or_default(),
+            "the paper's inventory, built in (this folder has no claims.md)",
+        ),
+    };
     for ((p, text), named) in texts.iter().zip(named) {
         if let Some(id) = named
             .iter()
@@ -442,13 +441,27 @@ fn inventory_claims(
                     field: Some("claim".into()),
                 },
                 message: format!(
-                    "`{id}` is not a claim of the inventory ({}): a claim the paper makes is listed there first",
+                    "`{id}` is not a claim of {whose} ({}): a claim the paper makes is listed there first",
                     super::INVENTORY_FILES.join(", ")
                 ),
             });
         }
     }
     Ok(())
+}
+
+/// The ids of a folder's claim inventory; `None` when it has no `claims.md`.
+fn inventory(origin: &CaseOrigin) -> Result<Option<std::collections::BTreeSet<String>>> {
+    let mut ids = std::collections::BTreeSet::new();
+    for name in super::INVENTORY_FILES {
+        match origin.file(name) {
+            Ok((_, text)) => ids.extend(super::inventory_ids(&text)),
+            Err(Error::Io { .. }) if name != super::INVENTORY_FILES[0] => {}
+            Err(Error::Io { .. }) => return Ok(None),
+            Err(e) => return Err(e),
+        }
+    }
+    Ok(Some(ids))
 }
 
 /// A case file's text, refused beyond the size limit or when it is not UTF-8.

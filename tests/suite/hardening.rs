@@ -358,6 +358,20 @@ fn a_claim_the_inventory_does_not_list_is_refused_at_its_line() {
                 && err.contains(&format!("`{bad}` is not a claim of the inventory")),
             "{err}"
         );
+        // without an inventory in the folder, the paper's own, built in, decides
+        for name in ["claims.md", "additional-claims.md"] {
+            std::fs::remove_file(dir.path().join(name)).unwrap();
+        }
+        let out = crate::cli::report_of_cases(dir.path());
+        assert_eq!(out.status.code(), Some(2), "{bad}");
+        let err = String::from_utf8(out.stderr).unwrap();
+        assert!(
+            err.contains(&format!("ex2_three_frames.yaml:{line}"))
+                && err.contains(&format!(
+                    "`{bad}` is not a claim of the paper's inventory, built in"
+                )),
+            "{err}"
+        );
     }
 }
 
@@ -499,5 +513,37 @@ fn a_closed_standard_error_keeps_the_exit_code() {
         .output()
         .unwrap();
     assert_eq!(out.status.code(), Some(2));
+    assert!(out.stdout.is_empty());
+}
+
+#[test]
+fn variable_projection_beyond_its_work_limit_is_refused_before_the_work() {
+    // 2,000 points each in 30 of 100 frames: 20 steps would cost 1.07e10 multiply-adds
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("turntable.csv");
+    let out = orthocheck(&[
+        "synth",
+        "--points",
+        "2000",
+        "--frames",
+        "100",
+        "--seed",
+        "1",
+        "--turntable",
+        "--window",
+        "30",
+        "--format",
+        "csv",
+        "--out",
+        file.to_str().unwrap(),
+    ]);
+    assert!(out.status.success());
+    let out = orthocheck(&["reconstruct", "--input", file.to_str().unwrap()]);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("2000 points in 100 frames") && err.contains("limit of 1.0e10"),
+        "{err}"
+    );
     assert!(out.stdout.is_empty());
 }

@@ -107,10 +107,21 @@ pub const BUNDLE_WORK: usize = 10_000_000;
 /// iteration at the limit takes 23.8 ms, docs/limits.md); beyond it `reconstruct` skips the
 /// adjustment and says so in `method`.
 pub const BUNDLE_FRAMES: usize = 200;
+/// Observations of a bundle adjustment: each iteration costs about 150 multiply-adds per
+/// observation beside the Schur complement, so 100 iterations over 200,000 observations (two
+/// each of 100,000 points) take about 6 s (docs/limits.md); beyond it `reconstruct` skips the
+/// adjustment and says so in `method`.
+pub const BUNDLE_OBSERVATIONS: usize = 200_000;
 /// Frames of a variable-projection factorisation (tracks with most entries missing): its
 /// camera system is dense, 8k × 8k, (8k)³/3 multiply-adds per step (k = 100: 1.7 × 10⁸);
 /// beyond it `reconstruct` grows the largest complete block instead, and says why.
 pub const VARPRO_FRAMES: usize = 100;
+/// The work of a variable-projection factorisation, multiply-adds by its cost model
+/// (`sfm::missing::Work`: one step's normal equations and each trial's factorisation and
+/// cost): the run stops, and says so, when it is spent; tracks whose least run
+/// (`sfm::missing::MIN_STEPS` steps) costs more are refused before the work. Calibrated in
+/// time: a run that spends it all takes at most 10 s (docs/limits.md).
+pub const VARPRO_WORK: f64 = 1e10;
 /// Cells (frames × points) of tracks with gaps: they are held as a dense table of optional
 /// images (24 bytes a cell, so 480 MB at the limit), so a CSV whose rows each bring a new frame
 /// and a new point is refused by this count before the table is made.

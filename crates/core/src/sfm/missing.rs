@@ -33,6 +33,9 @@ use crate::model::rng;
 pub const MAX_ITERATIONS: usize = 500;
 /// Rejected steps in a row after which no step lowers the cost.
 const MAX_REJECTIONS: usize = 40;
+/// Steps the work limit must allow from one start before a run begins: fewer could not
+/// converge even from the chained start (it took 5–10 on the sequences of docs/limits.md).
+pub const MIN_STEPS: usize = 20;
 
 type Mat8 = SMatrix<f64, 8, 8>;
 type Mat3x8 = SMatrix<f64, 3, 8>;
@@ -55,6 +58,36 @@ pub struct Factorised {
     pub iterations: usize,
     /// Whether it stopped because no step lowered the cost beyond rounding.
     pub converged: bool,
+    /// Whether it stopped because its share of the work limit was spent.
+    pub out_of_work: bool,
+}
+
+/// Variable projection's cost model, in multiply-adds: what one step's normal equations cost
+/// (the rank-3 term of each point, about 200 per pair of its frames) and what one trial step
+/// costs (the (8k)³/3 factorisation and a cost evaluation, about 60 per observation).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Work {
+    /// One step's normal equations.
+    pub normal: f64,
+    /// One trial step.
+    pub trial: f64,
+}
+
+impl Work {
+    /// The model at these tracks (frames seen by each point) in `frames` frames.
+    pub fn of(views: &[Images], frames: usize) -> Work {
+        let pairs: f64 = views.iter().map(|v| (v.len() * v.len()) as f64).sum();
+        let seen: f64 = views.iter().map(|v| v.len() as f64).sum();
+        Work {
+            normal: 200.0 * pairs,
+            trial: (8.0 * frames as f64).powi(3) / 3.0 + 60.0 * seen,
+        }
+    }
+
+    /// The least work a run must be allowed: [`MIN_STEPS`] steps, each with one trial.
+    pub fn least(&self) -> f64 {
+        MIN_STEPS as f64 * (self.normal + self.trial)
+    }
 }
 
 /// A point's normal equations H X = b through the cameras: H = Σ M_fᵀM_f, b = Σ M_fᵀ(y − t_f).
@@ -178,15 +211,35 @@ fn normalised(cams: &[Matrix2x4<f64>]) -> Option<Cameras> {
 /// Variable projection from `start` (see the module); `None` when the start does not fix
 /// every point.
 pub fn varpro(views: &[Images], start: Cameras, max_iterations: usize) -> Option<Factorised> {
+    let mut unmetered = f64::INFINITY;
+    varpro_within(views, start, max_iterations, &mut unmetered)
+}
+
+/// [`varpro`] metered: each step's normal equations and each trial take their [`Work`] from
+/// `work` (multiply-adds left), and the run stops, `out_of_work`, before a step it cannot pay.
+pub fn varpro_within(
+    views: &[Images],
+    start: Cameras,
+    max_iterations: usize,
+    work: &mut f64,
+) -> Option<Factorised> {
+    let model = Work::of(views, start.len());
     let mut cams = normalised(&start)?;
     let mut c = cost(&cams, views)?;
     let mut damping = None;
-    let (mut iterations, mut converged) = (0, false);
+    let (mut iterations, mut converged, mut out_of_work) = (0, false, false);
     while iterations < max_iterations && c > 0.0 {
+        if *work < model.normal + model.trial {
+            out_of_work = true;
+            break;
+        }
+        *work -= model.normal;
         let (n, g) = normal(&cams, views)?;
         let d = damping.get_or_insert_with(|| Damping::from_diagonal_max(n.diagonal().max()));
-        let Some((nx, nc)) = trial(views, &cams, c, &n, &g, d) else {
-            converged = true;
+        let step = trial(views, &cams, c, (&n, &g), d, (work, model.trial));
+        let Some((nx, nc)) = step.accepted else {
+            converged = !step.out_of_work;
+            out_of_work = step.out_of_work;
             break;
         };
         let small = c - nc <= 4.0 * f64::EPSILON * c;
@@ -198,21 +251,37 @@ pub fn varpro(views: &[Images], start: Cameras, max_iterations: usize) -> Option
             break;
         }
     }
-    Some(finish(cams, views, c, iterations, converged))
+    let mut f = finish(cams, views, c, iterations, converged);
+    f.out_of_work = out_of_work;
+    Some(f)
+}
+
+/// A trial's outcome: the accepted cameras and cost, or none, and whether the work ran out.
+struct Trial {
+    accepted: Option<(Cameras, f64)>,
+    out_of_work: bool,
 }
 
 /// Damped steps (`damping` updated by Nielsen's rule) until one lowers the cost: its cameras
-/// and cost. `None` when none can beyond rounding (a rejected step's predicted gain within 4ε
-/// of the cost, or [`MAX_REJECTIONS`] in a row).
+/// and cost. None when none can beyond rounding (a rejected step's predicted gain within 4ε
+/// of the cost, or [`MAX_REJECTIONS`] in a row), or when `work` cannot pay the next trial.
 fn trial(
     views: &[Images],
     cams: &[Matrix2x4<f64>],
     c: f64,
-    n: &DMatrix<f64>,
-    g: &DVector<f64>,
+    (n, g): (&DMatrix<f64>, &DVector<f64>),
     damping: &mut Damping,
-) -> Option<(Cameras, f64)> {
+    (work, each): (&mut f64, f64),
+) -> Trial {
+    let none = |out_of_work| Trial {
+        accepted: None,
+        out_of_work,
+    };
     for _ in 0..MAX_REJECTIONS {
+        if *work < each {
+            return none(true);
+        }
+        *work -= each;
         let mut damped = n.clone();
         for i in 0..damped.nrows() {
             damped[(i, i)] += damping.lambda;
@@ -226,15 +295,18 @@ fn trial(
                 && pred > 0.0
             {
                 damping.accepted((c - nc) / pred);
-                return Some((nx, nc));
+                return Trial {
+                    accepted: Some((nx, nc)),
+                    out_of_work: false,
+                };
             }
             if pred <= 4.0 * f64::EPSILON * c {
-                return None;
+                return none(false);
             }
         }
         damping.rejected();
     }
-    None
+    none(false)
 }
 
 /// The cameras moved by the step δ (8 entries per frame, row by row).
@@ -259,6 +331,7 @@ fn finish(
         cost,
         iterations,
         converged,
+        out_of_work: false,
     }
 }
 
@@ -454,12 +527,6 @@ pub fn reconstruct(obs: &Observations, seed: u64) -> Result<Reconstruction, Erro
             crate::limits::VARPRO_FRAMES
         )));
     }
-    if super::bundle::work(obs) > crate::limits::BUNDLE_WORK {
-        return Err(Error::Unreachable(format!(
-            "variable projection: its work (Σ frames² per point) exceeds the limit of {} (see docs/limits.md)",
-            crate::limits::BUNDLE_WORK
-        )));
-    }
     let units = Units::of(obs)?;
     let unit = units.to_unit(obs);
     let views = judge::views(&unit);
@@ -475,6 +542,15 @@ pub fn reconstruct(obs: &Observations, seed: u64) -> Result<Reconstruction, Erro
             few.join(", ")
         )));
     }
+    let least = Work::of(&views, k).least();
+    if least > crate::limits::VARPRO_WORK {
+        return Err(Error::TooLarge(format!(
+            "variable projection: {MIN_STEPS} steps over {} points in {k} frames ({} observations) cost {least:.2e} multiply-adds, more than the limit of {:.1e} (see docs/limits.md)",
+            views.len(),
+            views.iter().map(Vec::len).sum::<usize>(),
+            crate::limits::VARPRO_WORK
+        )));
+    }
     if let Some((first, second)) = same_view(&views) {
         return Err(Error::Degenerate(super::Degenerate::InPlaneMotion {
             first,
@@ -488,7 +564,11 @@ pub fn reconstruct(obs: &Observations, seed: u64) -> Result<Reconstruction, Erro
         format!(
             "variable projection (affine factorisation with missing entries) from {start}: {} iterations{}",
             fact.iterations,
-            if fact.converged { "" } else { ", iteration limit reached" }
+            match (fact.converged, fact.out_of_work) {
+                (true, _) => "",
+                (false, true) => ", work limit reached (docs/limits.md)",
+                (false, false) => ", iteration limit reached",
+            }
         ),
     );
     rec.align_to_first();
@@ -500,26 +580,26 @@ pub fn reconstruct(obs: &Observations, seed: u64) -> Result<Reconstruction, Erro
 /// One point's images in two frames.
 type ImagePair = (Vector2<f64>, Vector2<f64>);
 
-/// Frames that are one view up to in-plane motions, judged on what is observed: every pair of
-/// frames sharing at least three points differs by an orthogonal map of the image plane on
-/// those points (`factor::in_plane`, at rounding level), so no depth is seen. The first such
-/// pair (1-based), as the complete-tracks path names it; `None` when some pair sees depth or
-/// no pair shares three points.
+/// Frames that are one view up to in-plane motions, judged on what is observed: for every pair
+/// of frames that follow each other in at least three tracks, the images of those tracks
+/// differ by an orthogonal map of the image plane (`factor::in_plane`, at rounding level), so
+/// no depth is seen (in-plane motions compose, so the pairs that chain the tracks decide for
+/// all). The first such pair (1-based), as the complete-tracks path names it; `None` when
+/// some pair sees depth or no pair shares three points.
 pub(crate) fn same_view(views: &[Images]) -> Option<(usize, usize)> {
-    // the shared images of every pair of frames, point by point: Σ (track length)² entries,
-    // the work bundle adjustment's limit already bounds
+    // each point's images in the frames adjacent in its track: one entry per observation at
+    // most, so time and memory stay within what the tracks hold
     let mut pairs: std::collections::BTreeMap<(usize, usize), Vec<ImagePair>> =
         std::collections::BTreeMap::new();
     for v in views {
-        for (i, (a, ya)) in v.iter().enumerate() {
-            for (b, yb) in &v[i + 1..] {
-                let (key, pair) = if a < b {
-                    ((*a, *b), (*ya, *yb))
-                } else {
-                    ((*b, *a), (*yb, *ya))
-                };
-                pairs.entry(key).or_default().push(pair);
-            }
+        for w in v.windows(2) {
+            let ((a, ya), (b, yb)) = (w[0], w[1]);
+            let (key, pair) = if a < b {
+                ((a, b), (ya, yb))
+            } else {
+                ((b, a), (yb, ya))
+            };
+            pairs.entry(key).or_default().push(pair);
         }
     }
     let mut first = None;
@@ -542,28 +622,43 @@ pub(crate) fn same_view(views: &[Images]) -> Option<(usize, usize)> {
     first
 }
 
-/// The affine factorisation and the name of its start.
+/// The affine factorisation and the name of its start, within the work limit
+/// ([`crate::limits::VARPRO_WORK`]): the chained start may spend all of it, and the random
+/// starts share what it left.
 fn factorise(views: &[Images], k: usize, seed: u64) -> Result<(Factorised, String), Error> {
-    if let Some(f) = chained_start(views, k).and_then(|s| varpro(views, s, MAX_ITERATIONS)) {
+    let mut work = crate::limits::VARPRO_WORK;
+    if let Some(f) =
+        chained_start(views, k).and_then(|s| varpro_within(views, s, MAX_ITERATIONS, &mut work))
+    {
         return Ok((
             f,
             "the chained partial reconstructions (every two consecutive frames)".into(),
         ));
     }
-    (0..RANDOM_STARTS as u64)
-        .filter_map(|i| varpro(views, random_start(k, seed.wrapping_add(i)), MAX_ITERATIONS))
-        .min_by(|a, b| a.cost.total_cmp(&b.cost))
-        .map(|f| {
-            (
-                f,
-                format!("the best of {RANDOM_STARTS} seeded random starts (the chain of frame pairs broke)"),
-            )
-        })
-        .ok_or_else(|| {
-            Error::Unreachable(format!(
-                "variable projection: no start (the chain of frame pairs, {RANDOM_STARTS} random ones) fixes every point"
-            ))
-        })
+    let mut best: Option<Factorised> = None;
+    for i in 0..RANDOM_STARTS as u64 {
+        let mut share = work / (RANDOM_STARTS as u64 - i) as f64;
+        work -= share;
+        let start = random_start(k, seed.wrapping_add(i));
+        if let Some(f) = varpro_within(views, start, MAX_ITERATIONS, &mut share) {
+            best = match best {
+                Some(b) if b.cost <= f.cost => Some(b),
+                _ => Some(f),
+            };
+        }
+        work += share;
+    }
+    best.map(|f| {
+        (
+            f,
+            format!("the best of {RANDOM_STARTS} seeded random starts (the chain of frame pairs broke)"),
+        )
+    })
+    .ok_or_else(|| {
+        Error::Unreachable(format!(
+            "variable projection: no start (the chain of frame pairs, {RANDOM_STARTS} random ones) fixes every point"
+        ))
+    })
 }
 
 /// The metric reconstruction of an affine factorisation: the upgrade Q of the stacked M,

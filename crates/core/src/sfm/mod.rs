@@ -62,6 +62,9 @@ pub enum Error {
     /// An option out of its range.
     #[error("{0}")]
     InvalidOption(String),
+    /// Input whose work, by the cost model, exceeds a declared limit.
+    #[error("{0}")]
+    TooLarge(String),
     /// A numerical method failed where it should not.
     #[error("numerical failure: {0}")]
     Numerical(String),
@@ -409,6 +412,12 @@ pub(crate) fn fit(
             rec.method.push(format!(
                 "bundle adjustment skipped: {frames} frames, more than the limit of {} (see docs/limits.md)",
                 crate::limits::BUNDLE_FRAMES
+            ));
+        } else if used.count() > crate::limits::BUNDLE_OBSERVATIONS {
+            rec.method.push(format!(
+                "bundle adjustment skipped: {} observations, more than the limit of {} (see docs/limits.md)",
+                used.count(),
+                crate::limits::BUNDLE_OBSERVATIONS
             ));
         } else if bundle::work(used) <= crate::limits::BUNDLE_WORK {
             let bo = bundle::BundleOptions {

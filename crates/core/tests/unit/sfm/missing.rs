@@ -74,3 +74,44 @@ fn a_point_seen_once_is_named() {
         "{err}"
     );
 }
+
+#[test]
+fn a_run_stops_when_its_work_is_spent_and_says_so() {
+    let (views, _) = turntable();
+    let chained = missing::chained_start(&views, 36).unwrap();
+    let model = missing::Work::of(&views, 36);
+    // enough for two steps with one trial each, not for a third
+    let mut work = 2.5 * (model.normal + model.trial);
+    let f = missing::varpro_within(&views, chained.clone(), missing::MAX_ITERATIONS, &mut work)
+        .unwrap();
+    assert!(f.out_of_work && !f.converged && f.iterations <= 2, "{f:?}");
+    assert!(work >= 0.0 && work < model.normal + model.trial);
+    // unmetered, the same start converges: the meter, not the data, stopped it
+    let free = missing::varpro(&views, chained, missing::MAX_ITERATIONS).unwrap();
+    assert!(free.converged && !free.out_of_work && free.iterations > 2);
+}
+
+#[test]
+fn tracks_whose_least_run_exceeds_the_work_limit_are_refused_before_the_work() {
+    use orthocheck_core::sfm::{Error, Observations};
+    // 2,000 points each in 30 of 100 frames: 20 steps cost 1.07e10 multiply-adds by the model
+    let t = Turntable {
+        points: 2_000,
+        frames: 100,
+        window: 30,
+        elevation: 0.5,
+        noise: None,
+        seed: 3,
+    };
+    let (_, obs) = t.generate();
+    let err = missing::reconstruct(&Observations { ..obs }, 1).unwrap_err();
+    assert!(
+        matches!(&err, Error::TooLarge(m) if m.contains("2000 points in 100 frames")
+            && m.contains("more than the limit of 1.0e10")),
+        "{err}"
+    );
+    // 1,800 such points pass the model's check, 9.96e9 (the test does not run them)
+    let fewer = Turntable { points: 1_800, ..t }.generate().1;
+    let least = missing::Work::of(&judge::views(&fewer), 100).least();
+    assert!(least <= orthocheck_core::limits::VARPRO_WORK, "{least}");
+}
