@@ -279,7 +279,7 @@ pub fn load_all<C: Schema>(dir: &Path) -> Result<Vec<Case<C>>> {
 }
 
 /// The `claim:` names of one case file.
-type Names = std::collections::BTreeSet<String>;
+pub(super) type Names = std::collections::BTreeSet<String>;
 
 /// Which case files a command reads.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -388,18 +388,20 @@ pub fn load_cases_of<C: Schema>(origin: &CaseOrigin, kinds: Kinds) -> Result<Vec
         texts.push((p, text));
     }
     known_restated_claims(&cases, &texts, &named)?;
-    inventory_claims(origin, &texts, &named)?;
+    let ids = inventory_claims(origin, &texts, &named)?;
+    let rests_on: Vec<_> = cases.iter().map(|c| &c.rests_on).collect();
+    super::supports::check(&rests_on, &texts, &named, &ids)?;
     Ok(cases)
 }
 
-/// Every `claim:` a case names must be an id of the folder's claim inventory (`claims.md`),
+/// Every `claim:` a case names must be an id of the folder's claim inventory (returned) (`claims.md`),
 /// or of the paper's own, built in, when the folder has none (or `id/part`): a typo would
 /// decide a claim the paper does not make.
 fn inventory_claims(
     origin: &CaseOrigin,
     texts: &[(PathBuf, String)],
     named: &[Names],
-) -> Result<()> {
+) -> Result<Names> {
     let (ids, whose) = match inventory(origin)? {
         Some(ids) => (ids, "the inventory"),
         None => (
@@ -447,7 +449,7 @@ fn inventory_claims(
             });
         }
     }
-    Ok(())
+    Ok(ids)
 }
 
 /// The ids of a folder's claim inventory; `None` when it has no `claims.md`.

@@ -3,6 +3,7 @@
 //! The paper's numbers live only here. A printed number keeps its printed digits, which give
 //! both its exact value and its precision.
 
+mod corrections;
 mod formula_size;
 mod inventory;
 mod latex;
@@ -14,9 +15,11 @@ mod plain_numbers;
 mod printed;
 mod quote;
 mod source;
+mod supports;
 mod validate;
 mod verify;
 
+pub use corrections::{corrections_of, Correction, CORRECTIONS_FILE};
 pub use formula_size::Size as FormulaSize;
 pub use inventory::{inventory_ids, refers_to_inventory, INVENTORY_FILES};
 pub use latex::{sha256_hex, source_path, LatexSource, SourceRecord, PAPER_ENV};
@@ -25,6 +28,7 @@ pub use load::{
     case_files, load_all, load_case, load_cases, load_cases_of, parse_case, parse_yaml,
     parse_yaml_limited, Kinds,
 };
+pub use normalise::Canonical;
 pub use origin::CaseOrigin;
 pub use paper::{
     load_paper, paper_of, parse_paper, section_depth, section_key, Paper, SectionTitle, PAPER_FILE,
@@ -53,6 +57,10 @@ pub struct Case<C> {
     pub title: String,
     /// Where the case sits in the paper.
     pub source: Source,
+    /// What each claim of the case rests on in the paper's argument: claim id → the claim
+    /// ids it uses (checked at load: the case's own claims, known supports, no cycle).
+    #[serde(default)]
+    pub rests_on: std::collections::BTreeMap<String, Vec<String>>,
     /// What to check, by kind.
     pub check: C,
     /// The file it was read from (set by [`load_case`]).

@@ -24,6 +24,10 @@ pub struct Paper {
     /// The LaTeX source the transcription was made from (its name, hash and length).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub source: Option<super::SourceRecord>,
+    /// The paper's main results (the abstract's claims, the conclusions'): claim ids, the
+    /// report's first screen, each with its standing.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub main_results: Vec<String>,
     /// The paper's sections in reading order, with their titles (the report's table of
     /// contents).
     #[serde(default)]

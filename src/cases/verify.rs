@@ -353,6 +353,10 @@ pub struct PaperInputs<C> {
     pub paper: Paper,
     /// The transcription checked against the source; none without one.
     pub verification: Option<Verification>,
+    /// The source itself, when given.
+    pub source: Option<LatexSource>,
+    /// The errata's corrections in the source (`corrections.yml`).
+    pub corrections: Vec<super::Correction>,
 }
 
 impl<C> PaperInputs<C> {
@@ -408,9 +412,12 @@ pub fn load_inputs_of<C: super::Schema>(
         Some(s) => Some(verify(origin, &paper, s, &cases)?),
         None => None,
     };
+    let corrections = super::corrections_of(origin)?;
     Ok(PaperInputs {
         cases,
         paper,
         verification,
+        source,
+        corrections,
     })
 }

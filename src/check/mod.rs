@@ -10,6 +10,7 @@ pub use points::{points_details, points_tolerance, prime_details};
 mod evidence;
 mod resolution;
 mod result;
+pub mod standing;
 pub use evidence::Evidence;
 pub use resolution::{alternative_verdict, excluded_by, Resolution};
 pub use result::{
@@ -224,6 +225,7 @@ impl ClaimBuilder<'_> {
                 .unwrap_or_else(|| Power::none("no negative control")),
             correction: self.correction,
             undecided: self.undecided.filter(|_| verdict == Verdict::Inconclusive),
+            rests_on: Vec::new(),
             evidence: self.evidence,
         }
     }

@@ -647,6 +647,9 @@ pub struct ClaimResult {
     /// the power states): why the check could not decide.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub undecided: Option<String>,
+    /// The claims it rests on in the paper's argument (the case's `rests_on`, a restatement's
+    /// `restates`): claim ids, each standing for all its results.
+    pub rests_on: Vec<String>,
     /// How.
     pub evidence: Evidence,
 }

@@ -32,6 +32,7 @@ pub mod restatements;
 pub mod shared;
 pub mod solution_count;
 pub mod source_errata;
+pub mod supports;
 pub mod two_frames;
 pub mod twofold_squared;
 
@@ -67,6 +68,12 @@ pub trait ClaimKind {
 
     /// Claim ids the case restates, with the field naming each (checked against the folder).
     fn restated_ids(&self) -> Vec<(String, String)> {
+        Vec::new()
+    }
+
+    /// What each of its results rests on, where a result rests on claims of its own (a
+    /// restatement: the claims it restates): result id → claim ids.
+    fn result_supports(&self) -> Vec<(String, Vec<String>)> {
         Vec::new()
     }
 
@@ -286,6 +293,7 @@ pub fn run_all_full(
         restated.extend(run_case_full(case, &out)?.0);
     }
     out.extend(restated);
+    supports::attach(&mut out, cases);
     Ok((out, figures))
 }
 

@@ -53,7 +53,17 @@ pub fn run(args: Args) -> Result<(), Error> {
     if show() {
         let _ = writeln!(std::io::stderr());
     }
-    let files = r.files()?;
+    let mut files = r.files()?;
+    // with the source, the paper corrected
+    if let Some(src) = &inputs.source {
+        let name = src
+            .path
+            .file_name()
+            .map_or_else(|| "paper.tex".into(), |n| n.to_string_lossy().into_owned());
+        let patch =
+            orthocheck::report::errata_patch(&src.text, &name, &inputs.corrections, &r.claims)?;
+        files.push(("errata.patch".to_string(), patch));
+    }
     // the text guard: a number formatted as `NaN` or `inf` anywhere in the report
     guard_formatted()?;
     orthocheck::report::write_all_atomic(&args.out, &files)?;

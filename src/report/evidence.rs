@@ -267,6 +267,7 @@ mod tests {
             power: Power::exact_value("d"),
             correction: None,
             undecided: None,
+            rests_on: Vec::new(),
             evidence: e,
         }
     }

@@ -227,6 +227,37 @@ fn count(r: &Report, v: Verdict) -> usize {
     r.summary.get(v.name()).copied().unwrap_or(0)
 }
 
+/// The first screen: each main result in one line, its standing and what carries it.
+fn push_main_results(s: &mut String, r: &Report) {
+    if r.main_results.is_empty() {
+        return;
+    }
+    s.push_str(
+        "## Do the main results stand?\n\nThe abstract's and the conclusions' claims, each with its standing: what the verdicts of everything it rests on, transitively, make of it (the rule: `docs/verdicts.md`; the argument map is in `report.html`).\n\n",
+    );
+    for (i, m) in r.main_results.iter().enumerate() {
+        let c = crate::report::argument::carries(m);
+        let ids: Vec<String> = c
+            .ids
+            .iter()
+            .map(|id| format!("[`{id}`](#{})", anchor(id)))
+            .collect();
+        let _ = writeln!(
+            s,
+            "{}. **{}** “{}” (`{}`, §{}). {}{}{}",
+            i + 1,
+            m.standing.name(),
+            m.quote,
+            m.id,
+            m.section,
+            c.lead,
+            ids.join(", "),
+            c.tail
+        );
+    }
+    s.push('\n');
+}
+
 /// The whole report as Markdown.
 pub fn render(r: &Report) -> String {
     let ctx = Ctx {
@@ -255,6 +286,7 @@ pub fn render(r: &Report) -> String {
     if !p.transcription.is_empty() {
         let _ = writeln!(s, "{}\n", p.transcription);
     }
+    push_main_results(&mut s, r);
     push_findings(&mut s, &ctx.ordered, &ctx.macros, &ctx.labels);
     push_summary(&mut s, r);
     push_contents(&mut s, r);

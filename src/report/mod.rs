@@ -6,12 +6,14 @@
 //! verdicts' colours; [`finite`]: the JSON guard); then one module per output ([`html`],
 //! [`markdown`], [`svg`]). This module binds them into the report's files.
 
+pub mod argument;
 pub mod evidence;
 pub mod finite;
 pub mod html;
 pub mod layout;
 pub mod markdown;
 pub mod model;
+pub mod patch;
 pub use crate::mathtext as math;
 pub mod style;
 pub mod svg;
@@ -20,6 +22,7 @@ mod words;
 
 pub use markdown::{claim_markdown, errata_markdown};
 pub use model::Report;
+pub use patch::errata_patch;
 
 pub use svg::{figure_svg, plot_svg};
 

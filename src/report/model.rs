@@ -26,6 +26,10 @@ pub struct Report {
     pub figures: Vec<crate::check::figure::Figure>,
     /// Count per verdict (every verdict listed, zeros included).
     pub summary: BTreeMap<String, usize>,
+    /// The paper's main results with their standing (docs/verdicts.md, "Main results"):
+    /// those its paper file names.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub main_results: Vec<crate::check::standing::MainResult>,
 }
 
 impl Report {
@@ -54,6 +58,7 @@ impl Report {
             claims,
             figures,
             summary,
+            main_results: Vec::new(),
         }
     }
 
@@ -67,10 +72,12 @@ impl Report {
         Report::with(run.results, run.figures, provenance)
     }
 
-    /// The same report, naming its paper.
+    /// The same report, naming its paper, with the main results the paper file names.
     pub fn with_paper(self, paper: Paper) -> Report {
+        let main_results = crate::claims::supports::main_results(&paper.main_results, &self.claims);
         Report {
             paper: Some(paper),
+            main_results,
             ..self
         }
     }

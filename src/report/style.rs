@@ -2,6 +2,7 @@
 //! (WCAG 2.1 AA: text at least 4.5:1 against its background, figure series at least 3:1
 //! against the white page).
 
+use crate::check::standing::Standing;
 use crate::check::Verdict;
 
 /// WCAG AA for normal text.
@@ -23,6 +24,17 @@ pub fn badge_background(v: Verdict) -> &'static str {
         Verdict::Inconclusive => "#5d4037",
         Verdict::NotReproducible => "#616161",
         Verdict::Contradicted => "#c62828",
+    }
+}
+
+/// The badge background of a main result's standing (its text is white): the colour of the
+/// verdict that decides it.
+pub fn standing_background(s: Standing) -> &'static str {
+    match s {
+        Standing::Holds => badge_background(Verdict::Reproduced),
+        Standing::HoldsOnceCorrected => badge_background(Verdict::Erratum),
+        Standing::Fails => badge_background(Verdict::Contradicted),
+        Standing::Undecided => badge_background(Verdict::Inconclusive),
     }
 }
 
@@ -79,6 +91,9 @@ a { color: #0b57a4; } .meta { color: #555; font-size: .9rem; } code { background
 table { border-collapse: collapse; margin: .6rem 0; max-width: 100%; } td, th { border: 1px solid #ddd; padding: .25rem .55rem; text-align: left; vertical-align: top; }
 td.num, th.num { text-align: right; font-variant-numeric: tabular-nums; }
 .scroll { overflow-x: auto; max-width: 100%; }
+.scroll:focus-visible { outline: 2px solid #1565c0; outline-offset: 2px; }
+ol.main { padding-left: 1.4rem; } ol.main li { margin: .45rem 0; } .carries { color: #444; font-size: .92rem; }
+figure.map { margin: 1rem 0 1rem calc(50% - 50vw + 1rem); width: calc(100vw - 2rem); max-width: none; } figure.map svg { display: block; margin: 0 auto; }
 article { border: 1px solid #e2e2e2; border-radius: 6px; padding: .6rem 1rem; margin: .9rem 0; }
 article > .h { font-size: 1.02rem; margin: .2rem 0 .4rem; font-family: ui-monospace, monospace; }
 a.permalink { color: inherit; text-decoration: none; } a.permalink:hover, a.permalink:focus { text-decoration: underline; }
@@ -128,6 +143,18 @@ dl.verdicts dd { margin-bottom: .25rem; }
 /// at the URL's fragment hides the claims of every other verdict).
 pub fn css() -> String {
     let mut s = String::from(BASE);
+    for st in [
+        Standing::Holds,
+        Standing::HoldsOnceCorrected,
+        Standing::Fails,
+        Standing::Undecided,
+    ] {
+        s.push_str(&format!(
+            ".badge.s-{} {{ background: {}; color: {BADGE_TEXT}; }}\n",
+            st.name(),
+            standing_background(st)
+        ));
+    }
     for v in Verdict::ALL {
         s.push_str(&format!(
             ".badge.v-{n} {{ background: {bg}; color: {BADGE_TEXT}; }}\n\

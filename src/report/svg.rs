@@ -47,7 +47,8 @@ const READABLE_TEXT: f64 = 9.0;
 const FREE_TO_SHRINK: f64 = 430.0;
 
 /// The colour of a style, as CSS: the Okabe–Ito colour-blind-safe palette, restricted to its
-/// colours with at least 3:1 contrast against white.
+/// colours with at least 3:1 contrast against white (enough for lines and markers; text
+/// labels take [`label_colour`]).
 pub fn css_colour(s: Style) -> String {
     colour(s).to_string()
 }
@@ -59,6 +60,17 @@ fn colour(s: Style) -> &'static str {
         Style::Other => "#D55E00",
         Style::Third => "#009E73",
         Style::Mark => "#CC79A7",
+    }
+}
+
+/// The colour of a style's text labels: its series colour where that reaches the 4.5:1 of
+/// text against white, else a darker shade of the same hue that does.
+pub(crate) fn label_colour(s: Style) -> &'static str {
+    match s {
+        Style::Other => "#B34D00",
+        Style::Third => "#007A5A",
+        Style::Mark => "#A36186",
+        s => colour(s),
     }
 }
 

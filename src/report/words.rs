@@ -230,6 +230,7 @@ mod tests {
             power: Power::exact_value("d"),
             correction: None,
             undecided: None,
+            rests_on: Vec::new(),
             evidence: Evidence::new("m"),
         }
     }

@@ -1,8 +1,10 @@
 //! `report.html` in a real browser: headless Chromium loads the page of the whole paper, runs
 //! its script, every in-page link (the table of contents, the verdict counts, the claim ids)
 //! lands on an element, the page is no wider than a 400 px phone, and screenshots at 1400 px
-//! and 400 px are not blank. Without Chromium the test says SKIPPED on the terminal (and fails
-//! when `ORTHOCHECK_REQUIRE_BROWSER` is set, as `.ci/run` does).
+//! and 400 px are not blank; and axe-core finds no violation of WCAG 2.1 A or AA on it at
+//! either width (`tests/browser/axe.mjs`, with Node.js and the packages `npm ci` installs in
+//! `tests/browser`). Without Chromium, Node.js or those packages a test says SKIPPED on the
+//! terminal (and fails when `ORTHOCHECK_REQUIRE_BROWSER` is set, as `.ci/run` does).
 
 use std::collections::BTreeSet;
 use std::io::Write as _;
@@ -14,8 +16,13 @@ fn chromium() -> Option<PathBuf> {
     if let Some(p) = std::env::var_os("ORTHOCHECK_CHROMIUM") {
         return Some(PathBuf::from(p));
     }
+    on_path(&["chromium", "chromium-browser", "google-chrome", "chrome"])
+}
+
+/// The first of `names` found on `PATH`.
+fn on_path(names: &[&str]) -> Option<PathBuf> {
     let path = std::env::var_os("PATH")?;
-    for name in ["chromium", "chromium-browser", "google-chrome", "chrome"] {
+    for name in names {
         for dir in std::env::split_paths(&path) {
             let p = dir.join(name);
             if p.is_file() {
@@ -24,6 +31,24 @@ fn chromium() -> Option<PathBuf> {
         }
     }
     None
+}
+
+/// Say that `test` was skipped and why, straight to the terminal (the test harness hides what
+/// a passing test prints); fail instead when `ORTHOCHECK_REQUIRE_BROWSER` is set.
+fn skip(test: &str, why: &str) {
+    let msg = format!("SKIPPED: {test} — {why}");
+    let _ = writeln!(std::io::stderr(), "\n*** {msg} ***\n");
+    assert!(
+        std::env::var_os("ORTHOCHECK_REQUIRE_BROWSER").is_none(),
+        "{msg}, but ORTHOCHECK_REQUIRE_BROWSER is set"
+    );
+}
+
+/// The page of the whole paper, as `orthocheck report` writes it.
+fn report_page() -> String {
+    let r = crate::common::report().expect("the paper runs");
+    let paper = orthocheck::cases::load_paper(Path::new(crate::common::CASES_DIR)).unwrap();
+    orthocheck::report::html::render(&r.clone().with_paper(paper))
 }
 
 fn headless(browser: &Path, profile: &Path, extra: &[&str], url: &str) -> std::process::Output {
@@ -50,19 +75,14 @@ fn headless(browser: &Path, profile: &Path, extra: &[&str], url: &str) -> std::p
 #[test]
 fn report_html_in_headless_chromium() {
     let Some(browser) = chromium() else {
-        let msg = "SKIPPED: report_html_in_headless_chromium — no chromium on PATH \
-                   (apt-get install -y chromium; .ci/run installs it)";
-        // straight to the terminal: the test harness hides what a passing test prints
-        let _ = writeln!(std::io::stderr(), "\n*** {msg} ***\n");
-        assert!(
-            std::env::var_os("ORTHOCHECK_REQUIRE_BROWSER").is_none(),
-            "{msg}, but ORTHOCHECK_REQUIRE_BROWSER is set"
+        skip(
+            "report_html_in_headless_chromium",
+            "no chromium on PATH (apt-get install -y chromium; .ci/run installs it)",
         );
         return;
     };
     let r = crate::common::report().expect("the paper runs");
-    let paper = orthocheck::cases::load_paper(Path::new(crate::common::CASES_DIR)).unwrap();
-    let page = orthocheck::report::html::render(&r.clone().with_paper(paper));
+    let page = report_page();
     let dir = tempfile::tempdir().unwrap();
     let chrome = Browser {
         path: browser,
@@ -93,6 +113,54 @@ fn report_html_in_headless_chromium() {
             width,
         );
     }
+}
+
+/// axe-core (the rules tagged WCAG 2.0 and 2.1, levels A and AA) finds no violation on the
+/// page at 1400 px or at 400 px: `node tests/browser/axe.mjs report.html` says which elements
+/// break which rule.
+#[test]
+fn report_html_meets_wcag_21_aa_by_axe() {
+    const TEST: &str = "report_html_meets_wcag_21_aa_by_axe";
+    let Some(browser) = chromium() else {
+        skip(
+            TEST,
+            "no chromium on PATH (apt-get install -y chromium; .ci/run installs it)",
+        );
+        return;
+    };
+    let Some(node) = on_path(&["node", "nodejs"]) else {
+        skip(TEST, "no node (Node.js) on PATH");
+        return;
+    };
+    let tool = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/browser");
+    let modules = tool.join("node_modules");
+    if !modules.join("axe-core/axe.min.js").is_file()
+        || !modules.join("playwright-core/package.json").is_file()
+    {
+        skip(
+            TEST,
+            "axe-core and playwright-core are not installed \
+             ((cd tests/browser && npm ci); .ci/run installs them)",
+        );
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let html = dir.path().join("report.html");
+    std::fs::write(&html, report_page()).unwrap();
+    let out = Command::new(node)
+        .current_dir(&tool)
+        .arg("axe.mjs")
+        .arg(&html)
+        .env("ORTHOCHECK_CHROMIUM", &browser)
+        .output()
+        .expect("node runs");
+    assert!(
+        out.status.success(),
+        "axe-core on report.html ({}):\n{}{}",
+        out.status,
+        String::from_utf8_lossy(&out.stdout),
+        String::from_utf8_lossy(&out.stderr)
+    );
 }
 
 /// Headless Chromium with its own profile.

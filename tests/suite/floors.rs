@@ -57,10 +57,12 @@ const REPORT_FLOORS: &[(&str, u8)] = &[
     ("finite", 1),
     ("evidence", 2),
     ("words", 2),
+    ("argument", 2),
     ("style", 2),
     ("svg", 3),
     ("html", 3),
     ("markdown", 3),
+    ("patch", 3),
 ];
 
 /// Names between outputs the report allows: the page embeds the figures' SVG.

@@ -547,3 +547,53 @@ fn variable_projection_beyond_its_work_limit_is_refused_before_the_work() {
     );
     assert!(out.stdout.is_empty());
 }
+
+#[test]
+fn what_a_claim_rests_on_is_checked_at_its_line() {
+    let copy = || {
+        let dir = tempfile::tempdir().unwrap();
+        let src = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("paper_cases");
+        for e in std::fs::read_dir(&src).unwrap() {
+            let p = e.unwrap().path();
+            std::fs::copy(&p, dir.path().join(p.file_name().unwrap())).unwrap();
+        }
+        dir
+    };
+    // (file, the line replaced, its replacement, what the error says)
+    let faults = [
+        (
+            "ex2_three_frames.yaml",
+            "  ex2-discriminant: [",
+            "  ex2-discriminant: [no-such-claim, ",
+            "field `rests_on.ex2-discriminant`: `no-such-claim` is not a claim of the inventory",
+        ),
+        (
+            "ex2_three_frames.yaml",
+            "  ex2-discriminant: [",
+            "  p3f3sqr: [ex2-body]\n  ex2-discriminant: [",
+            "field `rests_on.p3f3sqr`: `p3f3sqr` is not a claim this case checks",
+        ),
+        (
+            "twofold_squared.yaml",
+            "  p3f3sqr: [",
+            "  p3f3sqr: [p3f3-quadratic, ",
+            "a cycle of supports: ",
+        ),
+    ];
+    for (file, from, to, says) in faults {
+        let dir = copy();
+        let path = dir.path().join(file);
+        let text = std::fs::read_to_string(&path).unwrap();
+        assert_eq!(text.matches(from).count(), 1, "{from}");
+        let line = text.lines().position(|l| l.starts_with(from)).unwrap() + 1;
+        std::fs::write(&path, text.replacen(from, to, 1)).unwrap();
+        let out = crate::cli::report_of_cases(dir.path());
+        assert_eq!(out.status.code(), Some(2), "{to}");
+        let err = String::from_utf8(out.stderr).unwrap();
+        assert!(err.contains(says), "{err}");
+        // the line of the claim whose supports are at fault
+        if !says.starts_with("a cycle") {
+            assert!(err.contains(&format!("{file}:{line}")), "{err}");
+        }
+    }
+}

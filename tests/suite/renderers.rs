@@ -33,6 +33,7 @@ fn claims() -> Vec<ClaimResult> {
         power: Power::interval(3.995, 4.005, 4.0, 0.005, "printed 4 ± 0.005"),
         correction: None,
         undecided: None,
+        rests_on: Vec::new(),
         evidence: Evidence::new("a method").with("a detail", "a value"),
     };
     vec![

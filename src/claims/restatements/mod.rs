@@ -31,6 +31,18 @@ impl ClaimKind for RestatementsCase {
         true
     }
 
+    fn result_supports(&self) -> Vec<(String, Vec<String>)> {
+        self.items
+            .iter()
+            .map(|item| {
+                (
+                    format!("{}/{}", item.claim.claim, item.id),
+                    item.restates.clone(),
+                )
+            })
+            .collect()
+    }
+
     fn restated_ids(&self) -> Vec<(String, String)> {
         self.items
             .iter()

@@ -47,7 +47,7 @@ pub(crate) fn fix_html(page: &Page, c: &ClaimResult) -> String {
     let (printed, corrected) =
         mark_change(&side(page, &printed_side(c)), &correction_html(page, c));
     format!(
-        "<div class=\"fix\"><div><span class=\"label\">printed</span>{printed}</div><div class=\"arrow\" aria-label=\"corrected to\">→</div>\
+        "<div class=\"fix\"><div><span class=\"label\">printed</span>{printed}</div><div class=\"arrow\" role=\"img\" aria-label=\"corrected to\">→</div>\
          <div><span class=\"label\">corrected</span>{corrected}</div></div>"
     )
 }

@@ -5,6 +5,7 @@
 
 mod findings;
 mod glance;
+mod main_results;
 mod page;
 
 use std::fmt::Write as _;
@@ -30,6 +31,7 @@ pub fn render(r: &Report) -> String {
          <meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">",
     );
     push_header(&mut s, r);
+    main_results::push_main_results(&mut s, &page);
     findings::push_findings_html(&mut s, &page);
     push_strip(&mut s, r);
     push_contents(&mut s, &page);
@@ -57,7 +59,8 @@ pub fn render(r: &Report) -> String {
 const SCRIPT: &str = "<script>(function(){var m=document.getElementById('claims');if(!m)return;\
 var i=document.createElement('input');i.id='search';i.type='search';\
 i.placeholder='search claims (id, words)';i.setAttribute('aria-label','search claims');\
-m.parentNode.insertBefore(i,m);var a=m.querySelectorAll('article.claim');\
+var f=document.createElement('div');f.setAttribute('role','search');f.appendChild(i);\
+m.parentNode.insertBefore(f,m);var a=m.querySelectorAll('article.claim');\
 i.addEventListener('input',function(){var q=i.value.toLowerCase();\
 for(var k=0;k<a.length;k++){a[k].style.display=(!q||a[k].textContent.toLowerCase().indexOf(q)>=0)?'':'none';}});\
 window.addEventListener('beforeprint',function(){var d=document.querySelectorAll('details');for(var k=0;k<d.length;k++)d[k].open=true;});\
@@ -351,12 +354,16 @@ fn evidence_html(page: &Page, c: &ClaimResult, trials: Option<u64>) -> String {
 /// SVG beside the plot; the caption says in words what the figure shows.
 pub fn figure_html(f: &Figure) -> String {
     // a figure with a minimum width scrolls sideways in its box on a narrow screen
+    // (focusable, so that a keyboard can scroll it: WCAG 2.1.1)
     let panels = if svg::min_width(f).is_some() {
-        "panels scroll"
+        format!(
+            "class=\"panels scroll\" tabindex=\"0\" role=\"group\" aria-labelledby=\"{}-title\"",
+            escape(&f.id)
+        )
     } else {
-        "panels"
+        "class=\"panels\"".to_string()
     };
-    let mut s = format!("<figure id=\"{}\"><div class=\"{panels}\">", escape(&f.id));
+    let mut s = format!("<figure id=\"{}\"><div {panels}>", escape(&f.id));
     s.push_str(&svg::figure_svg(f, false));
     let _ = write!(
         s,

@@ -3,7 +3,7 @@
 
 use std::fmt::Write as _;
 
-use super::{colour, escape, push_markers, stroke, Axes, CHAR_W, MARGIN};
+use super::{escape, label_colour, push_markers, stroke, Axes, CHAR_W, MARGIN};
 use crate::check::figure::{Figure, Layer, Plot, Shape, Style};
 
 /// The point labels of a panel, placed outward from the centre of the labelled points and
@@ -22,10 +22,10 @@ pub(super) fn draw_labels(s: &mut String, p: &Plot, a: &Axes) {
                 Some((_, t, c)) => {
                     if !t.split(" = ").any(|x| x == text) {
                         *t = format!("{t} = {text}");
-                        *c = colour(Style::Printed);
+                        *c = label_colour(Style::Printed);
                     }
                 }
-                None => labels.push((at, text.clone(), colour(l.style))),
+                None => labels.push((at, text.clone(), label_colour(l.style))),
             }
         }
     }

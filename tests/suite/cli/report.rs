@@ -119,15 +119,22 @@ fn check_html(html: &str, report: &serde_json::Value) {
     }
     let mut svgs = 0;
     let mut rest = html;
+    let mut maps = 0;
     while let Some(start) = rest.find("<svg") {
         let end =
             rest[start..].find("</svg>").expect("an <svg> is closed") + start + "</svg>".len();
         roxmltree::Document::parse(&rest[start..end]).expect("a figure is well-formed SVG");
-        svgs += 1;
+        // the argument map is drawn beside the figures
+        if rest[start..end].starts_with("<svg id=\"argument-map\"") {
+            maps += 1;
+        } else {
+            svgs += 1;
+        }
         rest = &rest[end..];
     }
     let figures = report["figures"].as_array().unwrap().len();
     assert_eq!(svgs, figures, "one SVG per figure of report.json");
+    assert_eq!(maps, 1, "the argument map");
     assert!(svgs >= 10, "{svgs} figures");
     for external in ["http://", "https://", "src=", "@import", "url("] {
         assert!(!html.contains(external), "the page refers to {external}");
