@@ -32,6 +32,7 @@ pub fn render(r: &Report) -> String {
     );
     push_header(&mut s, r);
     main_results::push_main_results(&mut s, &page);
+    push_provenance(&mut s, r);
     findings::push_findings_html(&mut s, &page);
     push_strip(&mut s, r);
     push_contents(&mut s, &page);
@@ -66,23 +67,29 @@ for(var k=0;k<a.length;k++){a[k].style.display=(!q||a[k].textContent.toLowerCase
 window.addEventListener('beforeprint',function(){var d=document.querySelectorAll('details');for(var k=0;k<d.length;k++)d[k].open=true;});\
 })();</script>";
 
-/// The page title, the stylesheet and the header with the provenance and the seeds.
+/// The page title, the stylesheet and the header: the report's title and the paper's.
 fn push_header(s: &mut String, r: &Report) {
     let title = r.paper.as_ref().map_or("", |p| p.title.as_str());
     let author = r.paper.as_ref().map_or("", |p| p.author.as_str());
     let _ = write!(
         s,
-        "<title>Reproducibility report — {}</title><style>{}</style></head><body>",
+        "<title>Reproducibility report — {}</title><style>{}</style></head><body>\
+         <header><h1>Reproducibility report</h1><p><em>{}</em> — {}</p></header>",
         escape(title),
-        style::css()
+        style::css(),
+        escape(title),
+        escape(author),
     );
+}
+
+/// Where the report comes from: tool, revision, date, command, the transcription's
+/// verification and every case's seeds (after the main results, which a reader asks first).
+fn push_provenance(s: &mut String, r: &Report) {
     let p = &r.provenance;
     let _ = write!(
         s,
-        "<header><h1>Reproducibility report</h1><p><em>{}</em> — {}</p><p class=\"meta\">{}; revision {}; date {}; \
+        "<section class=\"provenance\" aria-label=\"provenance\"><p class=\"meta\">{}; revision {}; date {}; \
          reproduce with <code>{}</code></p>",
-        escape(title),
-        escape(author),
         escape(&r.tool),
         escape(p.revision.as_deref().unwrap_or("unknown")),
         escape(p.date.as_deref().unwrap_or("unknown")),
@@ -105,7 +112,7 @@ fn push_header(s: &mut String, r: &Report) {
                 .join(", ")
         );
     }
-    s.push_str("</table></div></details></header>");
+    s.push_str("</table></div></details></section>");
 }
 
 fn count(r: &Report, v: Verdict) -> usize {
