@@ -48,7 +48,7 @@ const FREE_TO_SHRINK: f64 = 430.0;
 
 /// The colour of a style, as CSS: the Okabe–Ito colour-blind-safe palette, restricted to its
 /// colours with at least 3:1 contrast against white (enough for lines and markers; text
-/// labels take [`label_colour`]).
+/// labels take a darker shade where needed, `label_colour`).
 pub fn css_colour(s: Style) -> String {
     colour(s).to_string()
 }
