@@ -70,6 +70,11 @@ pub struct BundleReport {
     /// Whether it stopped because no step could lower the cost beyond rounding (rather than
     /// at the iteration limit).
     pub converged: bool,
+    /// The standard error of each point's three coordinates (input units; the points
+    /// centred, in frame 1's camera coordinates), from the normal equations at the optimum
+    /// (`sfm::covariance`); `None` when they are singular or no residual degree of freedom
+    /// is left.
+    pub points_std: Option<Vec<Vector3<f64>>>,
 }
 
 /// A refined reconstruction and its report.
@@ -93,10 +98,10 @@ pub fn work(obs: &Observations) -> usize {
 
 /// The parameters: one camera per frame, one point per name.
 #[derive(Clone, Debug)]
-struct State {
-    rot: Vec<Matrix3<f64>>,
+pub(super) struct State {
+    pub(super) rot: Vec<Matrix3<f64>>,
     trans: Vec<Vector2<f64>>,
-    pts: Vec<Vector3<f64>>,
+    pub(super) pts: Vec<Vector3<f64>>,
 }
 
 impl State {
@@ -167,13 +172,13 @@ fn weight(sq: f64, huber: Option<f64>) -> f64 {
 }
 
 /// The normal equations JᵀJ, Jᵀr in blocks.
-struct Normal {
-    u: Vec<Mat5>,
+pub(super) struct Normal {
+    pub(super) u: Vec<Mat5>,
     gc: Vec<Vec5>,
-    v: Vec<Matrix3<f64>>,
+    pub(super) v: Vec<Matrix3<f64>>,
     gp: Vec<Vector3<f64>>,
     /// Per point, per observation: the camera–point block J_cᵀ J_p.
-    w: Vec<Vec<Mat5x3>>,
+    pub(super) w: Vec<Vec<Mat5x3>>,
 }
 
 /// The camera Jacobian of one residual: [−C [X]× | I₂], zero rotation columns for frame 1
@@ -393,6 +398,14 @@ pub fn bundle_adjust(
         ));
     }
     let (state, mut report) = levenberg_marquardt(&by_point, state, options.max_iterations, huber)?;
+    let frames_of: Vec<Vec<usize>> = by_point
+        .iter()
+        .map(|l| l.iter().map(|(f, _)| *f).collect())
+        .collect();
+    let at_optimum = normal(&by_point, &state, huber);
+    let squares = cost(&by_point, &state, None);
+    report.points_std = super::covariance::points_std(&at_optimum, &frames_of, &state, squares)
+        .map(|v| v.into_iter().map(|x| x * units.scale).collect());
     let s2 = units.scale * units.scale;
     report.costs.iter_mut().for_each(|c| *c *= s2);
     let mut rec = unit_start;
@@ -473,6 +486,7 @@ fn levenberg_marquardt(
         iterations: 0,
         costs: vec![c],
         converged: false,
+        points_std: None,
     };
     let first = normal(by_point, &state, huber);
     let diag = first

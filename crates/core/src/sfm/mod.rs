@@ -9,6 +9,7 @@
 //! (a power of two, exact) and maps its answer back.
 
 pub mod bundle;
+mod covariance;
 pub mod factor;
 pub mod gaps;
 pub mod judge;

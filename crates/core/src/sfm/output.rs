@@ -2,8 +2,9 @@
 //! `frames` with `rotation` and `translation`, `rms`, `mirror`, `method`; in robust mode
 //! `inliers` and `rejected` (point names), `threshold` (`value`, `from`: `"data"` or
 //! `"--threshold"`, and for the data its `median`, `sigma`, `shrink`, `floor`,
-//! `observations`) and `dropped` (`point`, `frame` counted from 1, `residual`)) and a
-//! plain-text table.
+//! `observations`) and `dropped` (`point`, `frame` counted from 1, `residual`)), after a
+//! bundle adjustment `points_std` (each point's standard errors by name) and a plain-text
+//! table.
 
 use std::fmt::Write as _;
 
@@ -114,6 +115,49 @@ impl Serialize for InlierFrames<'_> {
     }
 }
 
+/// Each point's standard errors, by name in the tracks' order.
+struct Named<'a>(&'a [String], &'a [nalgebra::Vector3<f64>]);
+
+impl Serialize for Named<'_> {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        let mut m = s.serialize_map(Some(self.1.len()))?;
+        for (n, x) in self.0.iter().zip(self.1) {
+            m.serialize_entry(n, &[x.x, x.y, x.z])?;
+        }
+        m.end()
+    }
+}
+
+/// The points' standard errors from the bundle adjustment, when it gave them for these
+/// points.
+fn points_std(o: &Outcome) -> Option<&[nalgebra::Vector3<f64>]> {
+    let sd = o.bundle.as_ref()?.points_std.as_deref()?;
+    (sd.len() == o.reconstruction.points.len()).then_some(sd)
+}
+
+/// A depth whose standard error exceeds this share of the body's size (the rms distance of
+/// its points from their centroid) is reported as barely determined: at a tenth, the
+/// depth's sign is still clear at 10 standard errors of the body's extent, but its value is
+/// not a measurement.
+const POOR_DEPTH: f64 = 0.1;
+
+/// The points whose depth is barely determined ([`POOR_DEPTH`]).
+fn poor_depths(o: &Outcome) -> Vec<&str> {
+    let Some(sd) = points_std(o) else {
+        return Vec::new();
+    };
+    let r = &o.reconstruction;
+    let size = (r.points.iter().map(|x| x.norm_squared()).sum::<f64>()
+        / r.points.len().max(1) as f64)
+        .sqrt();
+    r.names
+        .iter()
+        .zip(sd)
+        .filter(|(_, e)| e.z > POOR_DEPTH * size)
+        .map(|(n, _)| n.as_str())
+        .collect()
+}
+
 /// The JSON document of an outcome.
 pub struct Json<'a>(pub &'a Outcome);
 
@@ -139,6 +183,9 @@ impl Serialize for Json<'_> {
         }
         if let Some(b) = &o.bundle {
             st.serialize_field("iterations", &b.iterations)?;
+        }
+        if let Some(sd) = points_std(o) {
+            st.serialize_field("points_std", &Named(&r.names, sd))?;
         }
         st.end()
     }
@@ -221,10 +268,33 @@ pub fn text(o: &Outcome) -> String {
     if let Some(r) = &o.robust {
         robust_lines(&mut s, r);
     }
-    let _ = writeln!(s, "points (frame 1's camera coordinates, centred):");
+    let sd = points_std(o);
+    let _ = writeln!(
+        s,
+        "points (frame 1's camera coordinates, centred{}):",
+        if sd.is_some() {
+            "; ± standard errors"
+        } else {
+            ""
+        }
+    );
     let width = r.names.iter().map(|n| n.chars().count()).max().unwrap_or(1);
-    for (n, x) in r.names.iter().zip(&r.points) {
-        let _ = writeln!(s, "  {n:<width$}  {}", triple([x.x, x.y, x.z]));
+    for (i, (n, x)) in r.names.iter().zip(&r.points).enumerate() {
+        let err = sd.map_or(String::new(), |e| {
+            format!("  ± {}", triple([e[i].x, e[i].y, e[i].z]))
+        });
+        let _ = writeln!(s, "  {n:<width$}  {}{err}", triple([x.x, x.y, x.z]));
+    }
+    let poor = poor_depths(o);
+    if !poor.is_empty() {
+        let _ = writeln!(
+            s,
+            "depth barely determined ({} point{}: standard error above {} of the body's size): {}",
+            poor.len(),
+            if poor.len() == 1 { "" } else { "s" },
+            sig(POOR_DEPTH),
+            poor.join(", ")
+        );
     }
     let _ = writeln!(s, "frames (rotation rows; translation):");
     for (f, fr) in r.frames.iter().enumerate() {

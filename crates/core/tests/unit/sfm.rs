@@ -1,5 +1,6 @@
 //! Tests of `orthocheck_core::sfm`.
 
+mod covariance;
 mod gaps;
 mod judge;
 mod metric;

@@ -1,0 +1,165 @@
+//! The uncertainty of every point after bundle adjustment: standard errors from the normal
+//! equations at the optimum, up to the gauge, as Ceres' covariance estimation gives them.
+//!
+//! The gauge (a common rotation, a common 3-D shift) is fixed by holding frame 1's rotation
+//! and point 1 (its three coordinates), which leaves JᵀJ regular; the points are then
+//! reported centred on their centroid, a function that no shift of the gauge moves, so its
+//! covariance does not depend on how the gauge was fixed. With the camera system's Schur
+//! complement S (frame 1's two translations and the other frames' five parameters) and a
+//! point's block V_j, B_j = W_j V_j⁻¹:
+//!
+//! - Cov(x_i, x_j) = δ_ij V_j⁻¹ + B_iᵀ S⁻¹ B_j;
+//! - the centred point x_j − m, m the mean of all points (point 1 held constant), has
+//!   Cov(x_j) − Cov(x_j, m) − Cov(m, x_j) + Cov(m), where Cov(x_j, m) = (V_j⁻¹ + B_jᵀ S⁻¹ B̄)/p
+//!   and Cov(m) = (Σ V_i⁻¹ + B̄ᵀ S⁻¹ B̄)/p², B̄ = Σ B_i;
+//! - all times σ² = 2·cost / (2·observations − parameters), the residual variance.
+//!
+//! S⁻¹ is formed once ((5k)³ multiply-adds, the cost of one step); each point then costs
+//! (5 nⱼ)² · 3 over the frames that see it.
+
+use std::ops::AddAssign as _;
+
+use nalgebra::{DMatrix, Matrix3, Vector3};
+
+use super::bundle::{Normal, State};
+
+/// The rows of camera `f`'s parameters that are free: frame 1 (`f` = 0) keeps only its two
+/// translations (its rotation is the gauge).
+fn free_rows(f: usize) -> std::ops::Range<usize> {
+    if f == 0 {
+        3..5
+    } else {
+        0..5
+    }
+}
+
+/// Each camera parameter's index in the reduced camera system (`None` for frame 1's
+/// rotation), and the system's size.
+fn camera_index(k: usize) -> (Vec<[Option<usize>; 5]>, usize) {
+    let mut next = 0;
+    let index = (0..k)
+        .map(|f| {
+            std::array::from_fn(|r| {
+                free_rows(f).contains(&r).then(|| {
+                    next += 1;
+                    next - 1
+                })
+            })
+        })
+        .collect();
+    (index, next)
+}
+
+/// The standard error of every centred point (in the state's units): `None` when the
+/// normal equations are singular (a point or frame the data do not fix) or the data leave
+/// no residual degree of freedom.
+pub(super) fn points_std(
+    n: &Normal,
+    frames_of: &[Vec<usize>],
+    state: &State,
+    cost: f64,
+) -> Option<Vec<Vector3<f64>>> {
+    let (p, k) = (state.pts.len(), state.rot.len());
+    let observations: usize = frames_of.iter().map(Vec::len).sum();
+    let (index, size) = camera_index(k);
+    let parameters = size + 3 * p.saturating_sub(1);
+    let dof = (2 * observations)
+        .checked_sub(parameters)
+        .filter(|d| *d > 0)?;
+    let sigma2 = 2.0 * cost / dof as f64;
+    let vinv: Vec<Matrix3<f64>> = n.v.iter().map(|v| v.try_inverse()).collect::<Option<_>>()?;
+    let mut s = DMatrix::<f64>::zeros(size, size);
+    for (f, u) in n.u.iter().enumerate() {
+        for (a, ia) in index[f].iter().enumerate() {
+            for (b, ib) in index[f].iter().enumerate() {
+                if let (Some(ia), Some(ib)) = (ia, ib) {
+                    s[(*ia, *ib)] += u[(a, b)];
+                }
+            }
+        }
+    }
+    // B_j on the rows of the frames that see point j (point 1 is held: none)
+    let blocks: Vec<Sparse> = (0..p)
+        .map(|j| {
+            if j == 0 {
+                Sparse::empty()
+            } else {
+                Sparse::of(n, &index, frames_of, &vinv, j)
+            }
+        })
+        .collect();
+    let mut b_bar = DMatrix::<f64>::zeros(size, 3);
+    for (j, b) in blocks.iter().enumerate().skip(1) {
+        // S = U − Σ W V⁻¹ Wᵀ = U − Σ B V Bᵀ
+        let t = &b.m * n.v[j] * b.m.transpose();
+        for (x, &rx) in b.rows.iter().enumerate() {
+            b_bar.row_mut(rx).add_assign(&b.m.row(x));
+            for (y, &ry) in b.rows.iter().enumerate() {
+                s[(rx, ry)] -= t[(x, y)];
+            }
+        }
+    }
+    let sinv = s.cholesky()?.inverse();
+    let sb_bar = &sinv * &b_bar;
+    let pf = p as f64;
+    let v_sum: Matrix3<f64> = vinv.iter().skip(1).sum();
+    let cov_m = (v_sum + to3(&(b_bar.transpose() * &sb_bar))) / (pf * pf);
+    let out = blocks
+        .iter()
+        .enumerate()
+        .map(|(j, b)| {
+            let (own, with_m) = if j == 0 {
+                (Matrix3::zeros(), Matrix3::zeros())
+            } else {
+                let sub = sinv.select_rows(&b.rows).select_columns(&b.rows);
+                let own = vinv[j] + to3(&(b.m.transpose() * sub * &b.m));
+                let cross = b.m.transpose() * sb_bar.select_rows(&b.rows);
+                (own, (vinv[j] + to3(&cross)) / pf)
+            };
+            let c = own - with_m - with_m.transpose() + cov_m;
+            Vector3::from_fn(|i, _| (c[(i, i)].max(0.0) * sigma2).sqrt())
+        })
+        .collect();
+    Some(out)
+}
+
+/// A point's B_j = W_j V_j⁻¹ on its rows of the camera system only.
+struct Sparse {
+    rows: Vec<usize>,
+    m: DMatrix<f64>,
+}
+
+impl Sparse {
+    fn empty() -> Sparse {
+        Sparse {
+            rows: Vec::new(),
+            m: DMatrix::zeros(0, 3),
+        }
+    }
+
+    fn of(
+        n: &Normal,
+        index: &[[Option<usize>; 5]],
+        frames_of: &[Vec<usize>],
+        vinv: &[Matrix3<f64>],
+        j: usize,
+    ) -> Sparse {
+        let mut rows = Vec::new();
+        let mut vals: Vec<[f64; 3]> = Vec::new();
+        for (a, f) in frames_of[j].iter().enumerate() {
+            let blk = n.w[j][a] * vinv[j];
+            for (r, i) in index[*f].iter().enumerate() {
+                if let Some(i) = i {
+                    rows.push(*i);
+                    vals.push([blk[(r, 0)], blk[(r, 1)], blk[(r, 2)]]);
+                }
+            }
+        }
+        let m = DMatrix::from_fn(rows.len(), 3, |r, c| vals[r][c]);
+        Sparse { rows, m }
+    }
+}
+
+fn to3(m: &DMatrix<f64>) -> Matrix3<f64> {
+    Matrix3::from_fn(|i, j| m[(i, j)])
+}
