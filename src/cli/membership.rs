@@ -18,8 +18,11 @@ pub struct Args {
     #[arg(long)]
     input: PathBuf,
     /// Largest epipolar distance of a member, relative to the image size. Default: from the
-    /// data's noise, 3 robust standard deviations (1.4826 × the median distance) of the
-    /// epipolar distances of the points kept.
+    /// data's noise, with the fit's degrees of freedom accounted for: least median of squares
+    /// finds the body, the epipolar geometry is refitted to its points, and the tolerance is
+    /// the residual standard deviation times Student's t at 99 % two-sided with m − 4 degrees
+    /// of freedom (m members), so that about 1 % of true members are rejected at most
+    /// (docs/limits.md, "Membership's tolerance").
     #[arg(long, allow_negative_numbers = true)]
     tolerance: Option<f64>,
     /// JSON output.
@@ -96,7 +99,7 @@ fn membership_text(rows: &[MemberRow], tolerance: f64, from_data: bool) -> Strin
         "members: epipolar distance at most {} of the image size{}\n",
         sig(tolerance),
         if from_data {
-            " (from the data: 3 robust standard deviations of the distances; --tolerance sets it)"
+            " (from the data: the members' residual scale times Student's t at 99 %; --tolerance sets it)"
         } else {
             ""
         }

@@ -18,6 +18,7 @@ pub mod poly;
 mod procrustes;
 pub mod rank;
 pub mod ratfn;
+pub mod student;
 pub mod sturm;
 
 pub use diff::central_jacobian;

@@ -10,4 +10,5 @@ mod perm;
 mod poly;
 mod rank;
 mod ratfn;
+mod student;
 mod sturm;

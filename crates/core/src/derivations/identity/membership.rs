@@ -4,9 +4,9 @@
 
 use super::*;
 
-/// How many robust standard deviations a member's epipolar distance may reach: 3, the
-/// two-sided 99.7 % point of a normal residual.
-pub const MEMBER_SIGMAS: f64 = 3.0;
+/// The share of true members the default tolerance may reject: each member is judged at
+/// the two-sided 99 % point of its distance's distribution.
+pub const MEMBER_LEVEL: f64 = 0.99;
 
 /// The consistency factor of the median absolute residual for a normal distribution
 /// (1/Φ⁻¹(3/4)): σ ≈ 1.4826 × the median of |residual|.
@@ -16,32 +16,69 @@ const MAD_TO_SIGMA: f64 = 1.482_602_218_505_602;
 /// four points fit it exactly.
 const EPIPOLAR_DOF: usize = 3;
 
+/// Parameters a fit of the constraint takes from its points' distances: the line's normal
+/// (three) and its offset through the centroid (one).
+const FIT_PARAMETERS: usize = 4;
+
+/// Rousseeuw's reweighting cut: after least median of squares, the points within 2.5
+/// robust standard deviations start the least-squares refit.
+const REWEIGHT: f64 = 2.5;
+
 /// Four-point subsets tried by [`robust_tolerance`]: all of them up to this many, else this
 /// many drawn with a fixed seed (the same input gives the same tolerance).
 const LMEDS_SUBSETS: usize = 500;
 
-/// The default tolerance of [`membership()`], from the data's own noise, by least median of
-/// squares (Rousseeuw): the epipolar geometry of every four-point subset (or
-/// `LMEDS_SUBSETS` of them) is fitted exactly, the subset whose h-th smallest distance over
-/// all points (h = ⌊(n + 4)/2⌋, Rousseeuw's choice for 3 degrees of freedom) is least is
-/// kept, and σ = 1.4826 (1 + 5/(n − 3)) × that distance (the finite-sample correction). The tolerance is [`MEMBER_SIGMAS`] σ, at least
-/// 2¹⁰ ε (exact data). Up to half the points may be foreign and the scale still holds.
+/// The default tolerance of [`membership()`], from the data's own noise, with the degrees
+/// of freedom of the fit accounted for.
+///
+/// 1. Least median of squares (Rousseeuw): the epipolar geometry of every four-point subset
+///    (or `LMEDS_SUBSETS` of them) fitted exactly, the subset whose h-th smallest distance
+///    over all points (h = ⌊(n + 4)/2⌋) is least kept; σ₀ = 1.4826 (1 + 5/(n − 3)) × that
+///    distance; the points within [`REWEIGHT`] σ₀ are the first members.
+/// 2. The constraint refitted to the members by least squares; σ̂² = Σ d² / (m − 4) over
+///    the m members (the fit takes four parameters from their distances); the tolerance is
+///    t · σ̂ with t the two-sided [`MEMBER_LEVEL`] point of Student's t with m − 4 degrees of
+///    freedom (σ̂ is known only to that factor: few members, a wide tolerance); the points
+///    within it are the members, and step 2 repeats until they no longer change.
+///
+/// At least 2¹⁰ ε (exact data); with five points or fewer (no residual freedom beyond one)
+/// the floor.
 pub fn robust_tolerance(f1: &[Vector2<f64>], f2: &[Vector2<f64>]) -> f64 {
     let floor = 1024.0 * f64::EPSILON;
     let n = f1.len();
-    if n <= EPIPOLAR_DOF + 1 {
+    if n <= FIT_PARAMETERS + 1 {
         return floor;
     }
-    // the h-th smallest distance, h = ⌊(n + p + 1)/2⌋: past the four the subset fits exactly
     let h = (n + EPIPOLAR_DOF).div_ceil(2).clamp(EPIPOLAR_DOF + 2, n);
-    let mut d = epipolar_distances(f1, f2, &least_median_subset(f1, f2));
-    d.sort_by(f64::total_cmp);
-    let best = d[h - 1];
-    let correction = 1.0 + 5.0 / (n - EPIPOLAR_DOF) as f64;
-    let sigma = MAD_TO_SIGMA * correction * best;
-    let t = MEMBER_SIGMAS * sigma;
-    if t.is_finite() {
-        t.max(floor)
+    let d = epipolar_distances(f1, f2, &least_median_subset(f1, f2));
+    let mut sorted = d.clone();
+    sorted.sort_by(f64::total_cmp);
+    let sigma0 = MAD_TO_SIGMA * (1.0 + 5.0 / (n - EPIPOLAR_DOF) as f64) * sorted[h - 1];
+    let mut members: Vec<bool> = d.iter().map(|x| *x <= REWEIGHT * sigma0).collect();
+    let mut tolerance = f64::NAN;
+    for _ in 0..n {
+        let m = members.iter().filter(|x| **x).count();
+        if m <= FIT_PARAMETERS {
+            break;
+        }
+        let d = epipolar_distances(f1, f2, &members);
+        let nu = m - FIT_PARAMETERS;
+        let squares: f64 = d
+            .iter()
+            .zip(&members)
+            .filter(|(_, m)| **m)
+            .map(|(x, _)| x * x)
+            .sum();
+        let t = crate::algebra::student::two_sided_quantile(MEMBER_LEVEL, nu as u32);
+        tolerance = t * (squares / nu as f64).sqrt();
+        let next = within(&d, &members, tolerance);
+        if next == members {
+            break;
+        }
+        members = next;
+    }
+    if tolerance.is_finite() {
+        tolerance.max(floor)
     } else {
         floor
     }
@@ -116,14 +153,28 @@ pub fn membership(f1: &[Vector2<f64>], f2: &[Vector2<f64>], tolerance: f64) -> V
     let mut dist = epipolar_distances(f1, f2, &inside);
     // each round refits on the points within the tolerance; the members settle in a few
     for _ in 0..n {
-        let next: Vec<bool> = dist.iter().map(|d| *d <= tolerance).collect();
+        let next = within(&dist, &inside, tolerance);
         if next == inside || next.iter().filter(|m| **m).count() <= EPIPOLAR_DOF {
             break;
         }
         inside = next;
         dist = epipolar_distances(f1, f2, &inside);
     }
-    dist.iter().map(|d| (*d <= tolerance, *d)).collect()
+    let judged = within(&dist, &inside, tolerance);
+    judged.into_iter().zip(dist).collect()
+}
+
+/// The points within the tolerance of the fit to `inside`: a point of the fit is judged by
+/// its residual, one outside it by its distance from a line it did not help fit, whose
+/// variance is larger by the fit's mean leverage: (1 + 4/m) for m fitted points (a
+/// prediction interval), so that a member once set apart is judged alike.
+fn within(dist: &[f64], inside: &[bool], tolerance: f64) -> Vec<bool> {
+    let m = inside.iter().filter(|x| **x).count().max(1);
+    let outside = tolerance * (1.0 + FIT_PARAMETERS as f64 / m as f64).sqrt();
+    dist.iter()
+        .zip(inside)
+        .map(|(d, i)| *d <= if *i { tolerance } else { outside })
+        .collect()
 }
 
 /// The four-point subset whose exact epipolar fit has the least h-th smallest distance over

@@ -63,3 +63,53 @@ fn the_full_correspondence_and_membership() {
         .enumerate()
         .all(|(i, (inside, _))| *inside == (i != 5)));
 }
+
+/// The default tolerance of `membership` rejects at most its level's share of true members
+/// (1 %) and finds foreign points far from the body's epipolar geometry, over seeded scenes
+/// of 20–50 members with noise of one scale across the image and 1–3 foreign points (the
+/// whole family, 6–50 members and relative noise too, is measured by the benchmarks'
+/// example `membership_calibration`, docs/limits.md).
+#[test]
+fn the_default_membership_tolerance_keeps_its_level() {
+    use nalgebra::Vector2;
+    use orthocheck_core::derivations::identity::{membership, robust_tolerance};
+    use orthocheck_core::model::{rng, Scene};
+    use rand::Rng;
+    let (mut members, mut rejected, mut foreign, mut found) = (0, 0, 0, 0);
+    for s in 0..200u64 {
+        let mut g = rng(500 + s);
+        let m = g.random_range(20..=50usize);
+        let eps = g.random_range(0.001..0.01);
+        let t = Scene::random(m, 2, g.random()).tracks();
+        let mut f: [Vec<Vector2<f64>>; 2] = [t.frames[0].clone(), t.frames[1].clone()];
+        for y in f.iter_mut().flatten() {
+            *y += Vector2::new(g.random_range(-eps..eps), g.random_range(-eps..eps));
+        }
+        // foreign points: each frame's image drawn anew in the image box
+        let extra = g.random_range(1..=3usize);
+        for _ in 0..extra {
+            for frame in f.iter_mut() {
+                frame.push(Vector2::new(
+                    g.random_range(-1.0..1.0),
+                    g.random_range(-1.0..1.0),
+                ));
+            }
+        }
+        let tol = robust_tolerance(&f[0], &f[1]);
+        let judged = membership(&f[0], &f[1], tol);
+        members += m;
+        rejected += judged[..m].iter().filter(|(i, _)| !i).count();
+        foreign += extra;
+        found += judged[m..].iter().filter(|(i, _)| !i).count();
+    }
+    let share = rejected as f64 / members as f64;
+    assert!(
+        share <= 0.01,
+        "{rejected} of {members} true members rejected"
+    );
+    // a foreign point drawn at random may fall near the line by chance: most are far
+    assert!(
+        found as f64 >= 0.9 * foreign as f64,
+        "{found} of {foreign} foreign points found"
+    );
+}

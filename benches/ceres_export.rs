@@ -1,0 +1,250 @@
+//! Bundle-adjustment problems written to plain text for the Ceres comparison
+//! (`scripts/ceres_bench/`), with orthocheck's own adjustment of each, timed.
+//!
+//! Usage: `cargo run --release -p orthocheck-benches --example ceres_export -- OUTDIR
+//! [--repeat R] [--only NAME] [--longer N] [--csv NAME PATH]...` (R defaults to 5; `--only`
+//! exports one problem; `--longer N` also times the adjustment allowed N iterations). Writes `OUTDIR/NAME.txt` for
+//! - `dense_250x200`: 250 points in 200 frames, 1 % noise, seeds 4 and 5 (`synth --points 250
+//!   --frames 200 --seed 4 --noise 0.01`, the problem of `benches/bundle_libraries` and of
+//!   docs/limits.md's "Bundle adjustment's cost"), from the Tomasi–Kanade start;
+//! - `turntable_500x36w5`: `synth --turntable --points 500 --frames 36 --window 5 --noise
+//!   0.001 --seed 1` (30° elevation), from the pipeline's start for tracks with gaps
+//!   (variable projection from the chained pairs);
+//! - every `--csv NAME PATH`: a tracks file (gaps allowed) read as `reconstruct` reads it,
+//!   from the pipeline's start;
+//!
+//! each start being what `sfm::reconstruct` makes before its bundle adjustment
+//! (`Options { bundle: false, .. }`, the default seed). For each it prints the median wall
+//! time of `R` calls of `sfm::bundle_adjust` with the default options (what `reconstruct`
+//! runs, one thread), its iterations and final cost, and the median of `R` calls stopped
+//! before the first iteration (`max_iterations: 0`: the grouping, the units and the points'
+//! standard errors, the work beside the iterations).
+//!
+//! The file is in the units the adjustment works in (`sfm::Units`: y ↦ (y − centre)/scale,
+//! `scale` a power of two), so a solver reading it sees the numbers orthocheck's
+//! Levenberg–Marquardt sees; ½ Σ ‖r‖² in the input's units is scale² times the cost in these.
+//! Lines (numbers with 17 significant digits, so they read back exactly):
+//!
+//! ```text
+//! name NAME
+//! units CENTRE_X CENTRE_Y SCALE
+//! sizes FRAMES POINTS OBSERVATIONS
+//! rust ITERATIONS COST_INPUT_UNITS START_COST_INPUT_UNITS MEDIAN_SECONDS OVERHEAD_SECONDS
+//! frame F R00 R01 R02 R10 R11 R12 R20 R21 R22 T0 T1          (the start, one per frame)
+//! point J X Y Z                                              (the start, one per point)
+//! obs F J X Y                                                (one per observation)
+//! rust_frame F R00 … R22 T0 T1                               (orthocheck's result)
+//! rust_point J X Y Z
+//! ```
+//!
+//! Frames and points are numbered from 0 in the file.
+
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+use orthocheck::model::{rng, NoiseModel, Scene};
+use orthocheck::sfm::turntable::Turntable;
+use orthocheck::sfm::{
+    bundle_adjust, reconstruct, tomasi_kanade, BundleOptions, Observations, Options,
+    Reconstruction, Units,
+};
+
+/// ½ Σ ‖r‖² of `rec` over `obs` (in their units).
+fn cost(obs: &Observations, rec: &Reconstruction) -> f64 {
+    obs.seen()
+        .map(|(f, j, y)| (rec.frames[f].project(&rec.points[j]) - y).norm_squared())
+        .sum::<f64>()
+        / 2.0
+}
+
+/// The median of `runs` timed calls, and the last call's answer.
+fn timed<T>(runs: usize, mut f: impl FnMut() -> T) -> (f64, T) {
+    let mut secs = Vec::new();
+    let mut last = None;
+    for _ in 0..runs.max(1) {
+        let t = Instant::now();
+        last = Some(f());
+        secs.push(t.elapsed().as_secs_f64());
+    }
+    secs.sort_by(f64::total_cmp);
+    (secs[secs.len() / 2], last.expect("one run at least"))
+}
+
+/// The start `reconstruct` makes before its bundle adjustment.
+fn pipeline_start(obs: &Observations) -> Reconstruction {
+    let options = Options {
+        bundle: false,
+        ..Options::default()
+    };
+    reconstruct(obs, &options)
+        .expect("a reconstruction")
+        .reconstruction
+}
+
+fn frames_and_points(text: &mut String, tag: &str, rec: &Reconstruction) {
+    for (f, fr) in rec.frames.iter().enumerate() {
+        let r = &fr.rotation;
+        let _ = write!(text, "{tag}frame {f}");
+        for i in 0..3 {
+            for j in 0..3 {
+                let _ = write!(text, " {:.16e}", r[(i, j)]);
+            }
+        }
+        let _ = writeln!(text, " {:.16e} {:.16e}", fr.translation.x, fr.translation.y);
+    }
+    for (j, x) in rec.points.iter().enumerate() {
+        let _ = writeln!(
+            text,
+            "{tag}point {j} {:.16e} {:.16e} {:.16e}",
+            x.x, x.y, x.z
+        );
+    }
+}
+
+/// Adjust `start` with orthocheck (timed), print the figures, write the problem file.
+fn export(
+    dir: &Path,
+    name: &str,
+    obs: &Observations,
+    start: &Reconstruction,
+    repeat: usize,
+    longer: Option<usize>,
+) {
+    let units = Units::of(obs).expect("finite coordinates");
+    let start_cost = cost(obs, start);
+    let (secs, adjusted) = timed(repeat, || {
+        bundle_adjust(obs, start, &BundleOptions::default()).expect("an adjustment")
+    });
+    let (overhead, _) = timed(repeat, || {
+        let none = BundleOptions {
+            max_iterations: 0,
+            ..BundleOptions::default()
+        };
+        bundle_adjust(obs, start, &none).expect("an adjustment")
+    });
+    let report = &adjusted.report;
+    let final_cost = cost(obs, &adjusted.reconstruction);
+    println!(
+        "{name}: {} frames, {} points, {} observations ({:.1} % missing); start cost {start_cost:.12e}",
+        obs.frames.len(),
+        obs.names.len(),
+        obs.count(),
+        100.0 * (1.0 - obs.count() as f64 / (obs.frames.len() * obs.names.len()) as f64)
+    );
+    println!(
+        "  orthocheck bundle_adjust: median {secs:.4} s of {repeat}, {} iterations{}, cost {final_cost:.12e} (report {:.12e}); with max_iterations 0: {overhead:.4} s",
+        report.iterations,
+        if report.converged { "" } else { " (limit)" },
+        report.costs.last().copied().unwrap_or(f64::NAN),
+    );
+    if let Some(limit) = longer {
+        let options = BundleOptions {
+            max_iterations: limit,
+            ..BundleOptions::default()
+        };
+        let (secs, long) = timed(repeat, || {
+            bundle_adjust(obs, start, &options).expect("an adjustment")
+        });
+        println!(
+            "  the same with max_iterations {limit}: median {secs:.4} s of {repeat}, {} iterations{}, cost {:.12e}",
+            long.report.iterations,
+            if long.report.converged { "" } else { " (limit)" },
+            cost(obs, &long.reconstruction)
+        );
+    }
+    let mut unit_start = start.clone();
+    units.forward(&mut unit_start);
+    let mut unit_result = adjusted.reconstruction.clone();
+    units.forward(&mut unit_result);
+    let unit_obs = units.to_unit(obs);
+    let mut text = String::new();
+    let _ = writeln!(text, "name {name}");
+    let _ = writeln!(
+        text,
+        "units {:.16e} {:.16e} {:.16e}",
+        units.centre.x, units.centre.y, units.scale
+    );
+    let _ = writeln!(
+        text,
+        "sizes {} {} {}",
+        obs.frames.len(),
+        obs.names.len(),
+        obs.count()
+    );
+    let _ = writeln!(
+        text,
+        "rust {} {final_cost:.16e} {start_cost:.16e} {secs:.6e} {overhead:.6e}",
+        report.iterations
+    );
+    frames_and_points(&mut text, "", &unit_start);
+    for (f, j, y) in unit_obs.seen() {
+        let _ = writeln!(text, "obs {f} {j} {:.16e} {:.16e}", y.x, y.y);
+    }
+    frames_and_points(&mut text, "rust_", &unit_result);
+    let path = dir.join(format!("{name}.txt"));
+    std::fs::write(&path, text).expect("the problem file is written");
+    println!("  written to {}", path.display());
+}
+
+fn main() {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let dir = PathBuf::from(
+        args.first()
+            .expect("usage: ceres_export OUTDIR [--repeat R] [--csv NAME PATH]..."),
+    );
+    std::fs::create_dir_all(&dir).expect("the output folder");
+    let repeat = args
+        .iter()
+        .position(|a| a == "--repeat")
+        .and_then(|i| args.get(i + 1))
+        .and_then(|r| r.parse().ok())
+        .unwrap_or(5);
+    let only: Option<&String> = args
+        .iter()
+        .position(|a| a == "--only")
+        .and_then(|i| args.get(i + 1));
+    let wanted = |name: &str| only.is_none_or(|o| o == name);
+    // --longer N: also time the adjustment with N iterations at most (the pipeline's is 100)
+    let longer: Option<usize> = args
+        .iter()
+        .position(|a| a == "--longer")
+        .and_then(|i| args.get(i + 1))
+        .and_then(|r| r.parse().ok());
+
+    if wanted("dense_250x200") {
+        let clean = Scene::random(250, 200, 4).tracks();
+        let noisy =
+            NoiseModel::RelativeCoordinate { eps: 0.01 }.perturb_tracks(&clean, &mut rng(5));
+        let start = tomasi_kanade(&noisy).expect("a generic scene");
+        let obs = Observations::from_tracks(&noisy);
+        export(&dir, "dense_250x200", &obs, &start, repeat, longer);
+    }
+    if wanted("turntable_500x36w5") {
+        let t = Turntable {
+            points: 500,
+            frames: 36,
+            window: 5,
+            elevation: 30f64.to_radians(),
+            noise: Some(0.001),
+            seed: 1,
+        };
+        let (_, obs) = t.generate();
+        let start = pipeline_start(&obs);
+        export(&dir, "turntable_500x36w5", &obs, &start, repeat, longer);
+    }
+    let mut i = 0;
+    while i < args.len() {
+        if args[i] == "--csv" && i + 2 < args.len() {
+            let (name, path) = (&args[i + 1], Path::new(&args[i + 2]));
+            if wanted(name) {
+                let obs = orthocheck::input::load_observations(path).expect("a tracks file");
+                let start = pipeline_start(&obs);
+                export(&dir, name, &obs, &start, repeat, longer);
+            }
+            i += 3;
+        } else {
+            i += 1;
+        }
+    }
+}

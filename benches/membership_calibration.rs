@@ -1,0 +1,148 @@
+//! How often `membership`'s default tolerance rejects a true member, and how often it finds
+//! a foreign point far from the body's epipolar geometry, over seeded scenes.
+//!
+//! Usage: `cargo run --release -p orthocheck-benches --example membership_calibration --
+//! [SCENES] [SEED] [absolute]` (defaults 2,000 scenes, seed 1). Each scene: a rigid body of
+//! 6–50 points (uniform in [−1, 1]³) in two frames of random rotations, every image
+//! coordinate with relative noise up to ε (`synth --noise`: x ↦ x(1 + u), u uniform in
+//! [−ε, ε]), or with `absolute` noise of one scale across the image (x ↦ x + u, u uniform in
+//! [−ε, ε]: a tracker's pixel noise), ε uniform in 0.1 %–1 %; then 1–3 foreign
+//! points, each with images drawn anew in each frame within the body's image box. σ is the
+//! members' rms distance from the body's true (noise-free) epipolar line; a foreign point
+//! counts as far when its distance from that line exceeds 10 σ.
+
+use nalgebra::Vector2;
+use orthocheck::derivations::identity;
+use orthocheck::derivations::two_frames::epipolar;
+use orthocheck::model::{rng, NoiseModel, Scene};
+use rand::Rng;
+
+/// Distances from the epipolar geometry fitted (exactly, noise-free) to `clean`, in the same
+/// units for every point (the ratio to σ is what is reported).
+fn distances(clean: &[[Vector2<f64>; 2]], all: &[[Vector2<f64>; 2]]) -> Vec<f64> {
+    let g1: Vec<Vector2<f64>> = clean.iter().map(|p| p[0]).collect();
+    let g2: Vec<Vector2<f64>> = clean.iter().map(|p| p[1]).collect();
+    let [a, b, c, d] = epipolar(&g1, &g2).coefficients;
+    let m1 = g1.iter().sum::<Vector2<f64>>() / g1.len() as f64;
+    let m2 = g2.iter().sum::<Vector2<f64>>() / g2.len() as f64;
+    all.iter()
+        .map(|p| {
+            (a * (p[0].x - m1.x) + b * (p[0].y - m1.y) + c * (p[1].x - m2.x) + d * (p[1].y - m2.y))
+                .abs()
+        })
+        .collect()
+}
+
+#[derive(Default)]
+struct Tally {
+    scenes: usize,
+    members: usize,
+    rejected: usize,
+    far: usize,
+    found: usize,
+    refused: usize,
+}
+
+fn main() {
+    let args: Vec<u64> = std::env::args()
+        .skip(1)
+        .filter_map(|a| a.parse().ok())
+        .collect();
+    let scenes = args.first().copied().unwrap_or(2000);
+    let seed = args.get(1).copied().unwrap_or(1);
+    let absolute = std::env::args().any(|a| a == "absolute");
+    // bands of member counts: 6–9, 10–19, 20–50
+    let mut bands: [Tally; 3] = Default::default();
+    for s in 0..scenes {
+        let mut g = rng(seed.wrapping_mul(1_000_003).wrapping_add(s));
+        let m = g.random_range(6..=50usize);
+        let foreign = g.random_range(1..=3usize);
+        let eps = g.random_range(0.001..0.01);
+        let scene = Scene::random(m, 2, g.random());
+        let clean = scene.tracks();
+        let noisy = if absolute {
+            let mut t = clean.clone();
+            for y in t.frames.iter_mut().flatten() {
+                *y += Vector2::new(g.random_range(-eps..eps), g.random_range(-eps..eps));
+            }
+            t
+        } else {
+            NoiseModel::RelativeCoordinate { eps }.perturb_tracks(&clean, &mut g)
+        };
+        let pair = |t: &orthocheck::model::Tracks, j: usize| [t.frames[0][j], t.frames[1][j]];
+        let clean_pts: Vec<[Vector2<f64>; 2]> = (0..m).map(|j| pair(&clean, j)).collect();
+        let mut pts: Vec<[Vector2<f64>; 2]> = (0..m).map(|j| pair(&noisy, j)).collect();
+        let lo = |f: usize, c: usize| pts.iter().map(|p| p[f][c]).fold(f64::INFINITY, f64::min);
+        let hi = |f: usize, c: usize| {
+            pts.iter()
+                .map(|p| p[f][c])
+                .fold(f64::NEG_INFINITY, f64::max)
+        };
+        let boxes: Vec<[(f64, f64); 2]> = (0..2)
+            .map(|f| [(lo(f, 0), hi(f, 0)), (lo(f, 1), hi(f, 1))])
+            .collect();
+        for _ in 0..foreign {
+            let img = |b: &[(f64, f64); 2], g: &mut dyn rand::RngCore| {
+                Vector2::new(
+                    g.random_range(b[0].0..b[0].1),
+                    g.random_range(b[1].0..b[1].1),
+                )
+            };
+            let p = [img(&boxes[0], &mut g), img(&boxes[1], &mut g)];
+            pts.push(p);
+        }
+        let d = distances(&clean_pts, &pts);
+        let sigma = (d[..m].iter().map(|x| x * x).sum::<f64>() / m as f64).sqrt();
+        let f1: Vec<Vector2<f64>> = pts.iter().map(|p| p[0]).collect();
+        let f2: Vec<Vector2<f64>> = pts.iter().map(|p| p[1]).collect();
+        let tolerance = identity::robust_tolerance(&f1, &f2);
+        let judged = identity::membership(&f1, &f2, tolerance);
+        let inside: Vec<bool> = judged.iter().map(|(i, _)| *i).collect();
+        let band = &mut bands[if m < 10 {
+            0
+        } else if m < 20 {
+            1
+        } else {
+            2
+        }];
+        band.scenes += 1;
+        band.members += m;
+        band.rejected += judged[..m].iter().filter(|(i, _)| !i).count();
+        for j in m..pts.len() {
+            if d[j] > 10.0 * sigma {
+                band.far += 1;
+                band.found += usize::from(!judged[j].0);
+            }
+        }
+        band.refused +=
+            usize::from(identity::members_rigid(&f1, &f2, &inside, tolerance).is_some());
+    }
+    println!("| members | scenes | true members rejected | foreign > 10 σ found | refused as no rigid body |");
+    println!("|---|---:|---:|---:|---:|");
+    let mut all = Tally::default();
+    for (name, b) in ["6–9", "10–19", "20–50"].iter().zip(&bands) {
+        row(name, b);
+        all.scenes += b.scenes;
+        all.members += b.members;
+        all.rejected += b.rejected;
+        all.far += b.far;
+        all.found += b.found;
+        all.refused += b.refused;
+    }
+    row("all", &all);
+}
+
+fn row(name: &str, b: &Tally) {
+    let pct = |a: usize, n: usize| 100.0 * a as f64 / n.max(1) as f64;
+    println!(
+        "| {name} | {} | {} of {} ({:.2} %) | {} of {} ({:.2} %) | {} |",
+        b.scenes,
+        b.rejected,
+        b.members,
+        pct(b.rejected, b.members),
+        b.found,
+        b.far,
+        pct(b.found, b.far),
+        b.refused
+    );
+}
