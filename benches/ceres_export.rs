@@ -2,8 +2,11 @@
 //! (`scripts/ceres_bench/`), with orthocheck's own adjustment of each, timed.
 //!
 //! Usage: `cargo run --release -p orthocheck-benches --example ceres_export -- OUTDIR
-//! [--repeat R] [--only NAME] [--longer N] [--csv NAME PATH]...` (R defaults to 5; `--only`
-//! exports one problem; `--longer N` also times the adjustment allowed N iterations). Writes `OUTDIR/NAME.txt` for
+//! [--repeat R] [--only NAME] [--longer N] [--reach C1,C2,…] [--csv NAME PATH]...` (R
+//! defaults to 5; `--only` exports one problem; `--longer N` also times the adjustment
+//! allowed N iterations; `--reach` finds, from one run of `--longer` iterations (10,000 by
+//! default), how many iterations bring the cost to at most each Cᵢ, input units, and times
+//! the adjustment stopped there). Writes `OUTDIR/NAME.txt` for
 //! - `dense_250x200`: 250 points in 200 frames, 1 % noise, seeds 4 and 5 (`synth --points 250
 //!   --frames 200 --seed 4 --noise 0.01`, the problem of `benches/bundle_libraries` and of
 //!   docs/limits.md's "Bundle adjustment's cost"), from the Tomasi–Kanade start;
@@ -110,6 +113,7 @@ fn export(
     start: &Reconstruction,
     repeat: usize,
     longer: Option<usize>,
+    reach: &[f64],
 ) {
     let units = Units::of(obs).expect("finite coordinates");
     let start_cost = cost(obs, start);
@@ -143,15 +147,33 @@ fn export(
             max_iterations: limit,
             ..BundleOptions::default()
         };
-        let (secs, long) = timed(repeat, || {
+        let (secs, long) = timed(if reach.is_empty() { repeat } else { 1 }, || {
             bundle_adjust(obs, start, &options).expect("an adjustment")
         });
         println!(
-            "  the same with max_iterations {limit}: median {secs:.4} s of {repeat}, {} iterations{}, cost {:.12e}",
+            "  the same with max_iterations {limit}: {secs:.4} s ({}), {} iterations{}, cost {:.12e}",
+            if reach.is_empty() { format!("median of {repeat}") } else { "one run".into() },
             long.report.iterations,
             if long.report.converged { "" } else { " (limit)" },
             cost(obs, &long.reconstruction)
         );
+        for &target in reach {
+            let Some(m) = long.report.costs.iter().position(|&c| c <= target) else {
+                println!("  cost ≤ {target:.12e}: not reached in {limit} iterations");
+                continue;
+            };
+            let options = BundleOptions {
+                max_iterations: m,
+                ..BundleOptions::default()
+            };
+            let (secs, at) = timed(repeat, || {
+                bundle_adjust(obs, start, &options).expect("an adjustment")
+            });
+            println!(
+                "  cost ≤ {target:.12e}: after {m} iterations, median {secs:.4} s of {repeat} (the adjustment stopped there), cost {:.12e}",
+                cost(obs, &at.reconstruction)
+            );
+        }
     }
     let mut unit_start = start.clone();
     units.forward(&mut unit_start);
@@ -205,12 +227,22 @@ fn main() {
         .position(|a| a == "--only")
         .and_then(|i| args.get(i + 1));
     let wanted = |name: &str| only.is_none_or(|o| o == name);
+    // --reach C1,C2,…: the iterations orthocheck needs to bring the cost (input units) to at
+    // most each Ci, from one run of --longer iterations (10,000 by default), and the median
+    // time of the adjustment stopped there
+    let reach: Vec<f64> = args
+        .iter()
+        .position(|a| a == "--reach")
+        .and_then(|i| args.get(i + 1))
+        .map(|r| r.split(',').filter_map(|c| c.parse().ok()).collect())
+        .unwrap_or_default();
     // --longer N: also time the adjustment with N iterations at most (the pipeline's is 100)
     let longer: Option<usize> = args
         .iter()
         .position(|a| a == "--longer")
         .and_then(|i| args.get(i + 1))
-        .and_then(|r| r.parse().ok());
+        .and_then(|r| r.parse().ok())
+        .or((!reach.is_empty()).then_some(10_000));
 
     if wanted("dense_250x200") {
         let clean = Scene::random(250, 200, 4).tracks();
@@ -218,7 +250,7 @@ fn main() {
             NoiseModel::RelativeCoordinate { eps: 0.01 }.perturb_tracks(&clean, &mut rng(5));
         let start = tomasi_kanade(&noisy).expect("a generic scene");
         let obs = Observations::from_tracks(&noisy);
-        export(&dir, "dense_250x200", &obs, &start, repeat, longer);
+        export(&dir, "dense_250x200", &obs, &start, repeat, longer, &reach);
     }
     if wanted("turntable_500x36w5") {
         let t = Turntable {
@@ -231,7 +263,7 @@ fn main() {
         };
         let (_, obs) = t.generate();
         let start = pipeline_start(&obs);
-        export(&dir, "turntable_500x36w5", &obs, &start, repeat, longer);
+        export(&dir, "turntable_500x36w5", &obs, &start, repeat, longer, &reach);
     }
     let mut i = 0;
     while i < args.len() {
@@ -240,7 +272,7 @@ fn main() {
             if wanted(name) {
                 let obs = orthocheck::input::load_observations(path).expect("a tracks file");
                 let start = pipeline_start(&obs);
-                export(&dir, name, &obs, &start, repeat, longer);
+                export(&dir, name, &obs, &start, repeat, longer, &reach);
             }
             i += 3;
         } else {
