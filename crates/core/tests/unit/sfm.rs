@@ -1,8 +1,10 @@
 //! Tests of `orthocheck_core::sfm`.
 
 mod gaps;
+mod groups;
 mod judge;
 mod metric;
 mod missing;
+mod pipeline;
 mod robust;
 mod threshold;
