@@ -26,15 +26,20 @@ def synth(d, name, *args):
 
 def turntable(d, name, points, frames, window, broken_chain=False):
     """Each point seen in `window` consecutive frames of a turntable (30° elevation), 0.2 %
-    noise; first frames spread evenly, or all in even frames when the chain is to break."""
+    noise; first frames spread evenly. When the chain is to break, the frames are listed in
+    a seeded random order: the chain of pairs of frames next to each other in the file then
+    breaks, and variable projection starts at random, while the frames still link into one
+    group (frames that pair off, sharing nothing with the rest, are refused before any
+    work)."""
     g = random.Random(1)
     pts = [[g.uniform(-1, 1) for _ in range(3)] for _ in range(points)]
     first = [j * frames // points for j in range(points)]
-    if broken_chain:
-        first = [2 * (f // 2) for f in first]
     g.shuffle(first)
+    label = list(range(1, frames + 1))
+    if broken_chain:
+        random.Random(2).shuffle(label)
     ce, se = math.cos(math.radians(30)), math.sin(math.radians(30))
-    rows = ["frame,point,x,y"]
+    rows = []
     for f in range(frames):
         c, s = math.cos(2 * math.pi * f / frames), math.sin(2 * math.pi * f / frames)
         for j, (x, y, z) in enumerate(pts):
@@ -42,9 +47,11 @@ def turntable(d, name, points, frames, window, broken_chain=False):
                 continue
             x1, z1 = c * x + s * z, -s * x + c * z
             n = 1 + g.uniform(-0.002, 0.002)
-            rows.append(f"{f + 1},P{j + 1},{x1 * n:.9f},{(ce * y - se * z1) * n:.9f}")
+            rows.append((label[f], f"P{j + 1},{x1 * n:.9f},{(ce * y - se * z1) * n:.9f}"))
+    rows.sort(key=lambda r: r[0])
     path = os.path.join(d, name)
-    open(path, "w").write("\n".join(rows) + "\n")
+    lines = ["frame,point,x,y"] + [f"{f},{rest}" for f, rest in rows]
+    open(path, "w").write("\n".join(lines) + "\n")
     return path
 
 

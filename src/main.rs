@@ -2,8 +2,9 @@
 //! maps errors to exit codes.
 //!
 //! Exit codes: 0 the command ran (whatever the verdicts); 1 a check could not be carried out
-//! (a numerical failure, a write that failed); 2 bad input or usage (clap exits with 2 on usage errors itself);
-//! 130 interrupted by Ctrl-C (`cli::progress`).
+//! (a numerical failure, a write that failed), or a result was printed with warnings that it
+//! may be wrong (`reconstruct`); 2 bad input or usage (clap exits with 2 on usage errors
+//! itself); 130 interrupted by Ctrl-C (`cli::progress`).
 
 mod cli;
 
@@ -27,7 +28,7 @@ struct Cli {
 /// The exit code of a failed command.
 fn exit_code(e: &Error) -> u8 {
     match e {
-        Error::Numerical(_) | Error::Write { .. } | Error::Unverified(_) => 1,
+        Error::Numerical(_) | Error::Write { .. } | Error::Unverified(_) | Error::Warned(_) => 1,
         _ => 2,
     }
 }

@@ -49,6 +49,14 @@ pub enum Command {
     Synth(synth::Args),
     /// Reconstruct the body and every camera from many points in many frames (Tomasi–Kanade,
     /// bundle adjustment, gaps, RANSAC over the four-point solver).
+    ///
+    /// Points seen in fewer than 2 frames and frames that keep fewer than 4 points are
+    /// dropped and listed; frames that split into groups (no frame of one sharing 4 points
+    /// with a frame of another) are reconstructed group by group, each in its own frame of
+    /// reference. Exit codes: 0 done; 1 the whole result was printed, but with warnings
+    /// that it may be wrong (a search stopped at its limit, the metric upgrade clipped,
+    /// bundle adjustment skipped or stopped at its limit, points implausibly deep); 2 bad
+    /// input, or nothing can be reconstructed.
     Reconstruct(reconstruct::Args),
 }
 

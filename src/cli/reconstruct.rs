@@ -1,5 +1,8 @@
 //! `orthocheck reconstruct`: the body and every frame's camera from many points in many
-//! frames (Tomasi–Kanade, bundle adjustment, gaps, RANSAC).
+//! frames (Tomasi–Kanade, bundle adjustment, gaps, RANSAC). Points and frames that cannot
+//! take part are dropped and listed; frames that split into groups sharing too few points
+//! are reconstructed group by group. When a step raises a warning (its answer may be wrong),
+//! the whole result is still printed, with the warnings, and the command exits 1.
 
 use std::path::PathBuf;
 
@@ -78,8 +81,16 @@ pub fn run(a: Args) -> Result<(), Error> {
     };
     let outcome = reconstruct(&obs, &options).map_err(|e| in_file(&a.input, e.into()))?;
     if a.json {
-        json_out(&output::Json(&outcome))
+        json_out(&output::Json(&outcome))?;
     } else {
-        out(&output::text(&outcome))
+        out(&output::text(&outcome))?;
+    }
+    // printed in full first: a warning is for the reader of the result, and the exit code
+    // keeps a script from taking it silently
+    let warnings = outcome.warnings();
+    if warnings.is_empty() {
+        Ok(())
+    } else {
+        Err(Error::Warned(warnings))
     }
 }

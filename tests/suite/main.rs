@@ -28,6 +28,8 @@ mod inventory;
 mod renderers;
 /// Orthographic structure from motion: `reconstruct` and the `sfm` library.
 mod sfm;
+/// `reconstruct` on tracks that cannot all take part: dropped, grouped, warned of.
+mod sfm_groups;
 mod sfm_tracks;
 /// One verdict set with or without the paper's source; every quote at its tightest lines.
 mod transcription;

@@ -39,7 +39,10 @@ fn a_turntable_sequence_ninety_percent_missing_is_reconstructed() {
         per_frame.iter().all(|&n| (12..=14).contains(&n)),
         "{per_frame:?}"
     );
-    let out = reconstruct(&obs, &Options::default()).unwrap();
+    let out = reconstruct(&obs, &Options::default())
+        .unwrap()
+        .into_single()
+        .unwrap();
     let method = out.reconstruction.method.join("; ");
     assert!(method.starts_with("variable projection"), "{method}");
     assert!(method.contains("metric upgrade") && method.contains("bundle adjustment"));
@@ -80,8 +83,14 @@ fn robust_mode_returns_every_point_from_its_inliers_at_fifteen_percent_outlying_
         robust: Some(RansacOptions::from_data()),
         ..Options::default()
     };
-    let free = reconstruct(&Observations::from_tracks(&good), &Options::default()).unwrap();
-    let out = reconstruct(&Observations::from_tracks(&bad), &robust).unwrap();
+    let free = reconstruct(&Observations::from_tracks(&good), &Options::default())
+        .unwrap()
+        .into_single()
+        .unwrap();
+    let out = reconstruct(&Observations::from_tracks(&bad), &robust)
+        .unwrap()
+        .into_single()
+        .unwrap();
     let report = out.robust.as_ref().unwrap();
     assert_eq!(report.kept.len(), p, "rejected: {:?}", report.rejected);
     // no replaced observation kept (a random point lies far beyond the threshold)
@@ -179,7 +188,7 @@ fn where_three_frames_share_only_three_points_ransac_uses_the_three_point_solver
         robust: Some(RansacOptions::new(1e-3)),
         ..Options::default()
     };
-    let out = reconstruct(&obs, &options).unwrap();
+    let out = reconstruct(&obs, &options).unwrap().into_single().unwrap();
     let report = out.robust.as_ref().unwrap();
     assert!(report.triangles > 0 && report.triangles <= report.samples);
     assert!(out.reconstruction.method[0].contains("by the three-point solver"));

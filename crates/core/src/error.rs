@@ -111,6 +111,13 @@ pub enum Error {
         "the paper's source disagrees with the transcription; those claims are inconclusive:{0}"
     )]
     Unverified(String),
+    /// A result was printed in full, but with warnings that it may be wrong (one per line).
+    #[error(
+        "the result was printed with {} warning(s): it may be wrong{}",
+        .0.len(),
+        .0.iter().map(|w| format!("\n  {w}")).collect::<String>()
+    )]
+    Warned(Vec<String>),
     /// A numerical method failed where it should not (reported, never a panic).
     #[error("numerical failure: {0}")]
     Numerical(String),

@@ -428,6 +428,12 @@ pub fn bundle_adjust(
             ", iteration limit reached"
         }
     ));
+    if !report.converged {
+        rec.warnings.push(format!(
+            "bundle adjustment stopped at its iteration limit ({}) before it converged: the body may not be the least-squares one",
+            options.max_iterations
+        ));
+    }
     if !rec.is_finite() {
         return Err(Error::Numerical(
             "bundle adjustment produced a non-finite value".into(),

@@ -180,3 +180,48 @@ fn planar_or_in_plane(w: &DMatrix<f64>) -> Degenerate {
 pub fn motion_block(m: &DMatrix<f64>, f: usize) -> Matrix2x3<f64> {
     Matrix2x3::from_fn(|r, c| m[(2 * f + r, c)])
 }
+
+/// One point's images in two frames.
+type ImagePair = (Vector2<f64>, Vector2<f64>);
+
+/// Frames that are one view up to in-plane motions, judged on what is observed: for every pair
+/// of frames that follow each other in at least three tracks, the images of those tracks
+/// differ by an orthogonal map of the image plane (`factor::in_plane`, at rounding level), so
+/// no depth is seen (in-plane motions compose, so the pairs that chain the tracks decide for
+/// all). The first such pair (1-based), as the complete-tracks path names it; `None` when
+/// some pair sees depth or no pair shares three points.
+pub(crate) fn same_view(views: &[super::judge::Images]) -> Option<(usize, usize)> {
+    // each point's images in the frames adjacent in its track: one entry per observation at
+    // most, so time and memory stay within what the tracks hold
+    let mut pairs: std::collections::BTreeMap<(usize, usize), Vec<ImagePair>> =
+        std::collections::BTreeMap::new();
+    for v in views {
+        for w in v.windows(2) {
+            let ((a, ya), (b, yb)) = (w[0], w[1]);
+            let (key, pair) = if a < b {
+                ((a, b), (ya, yb))
+            } else {
+                ((b, a), (yb, ya))
+            };
+            pairs.entry(key).or_default().push(pair);
+        }
+    }
+    let mut first = None;
+    for ((a, b), shared) in pairs.iter().filter(|(_, s)| s.len() >= 3) {
+        let n = shared.len() as f64;
+        let ca = shared.iter().map(|s| s.0).sum::<Vector2<f64>>() / n;
+        let cb = shared.iter().map(|s| s.1).sum::<Vector2<f64>>() / n;
+        let w = DMatrix::from_fn(4, shared.len(), |r, c| {
+            let (ya, yb) = shared[c];
+            match r {
+                0 | 1 => ya[r] - ca[r],
+                _ => yb[r - 2] - cb[r - 2],
+            }
+        });
+        if !in_plane(&w, 0, 1) {
+            return None;
+        }
+        first.get_or_insert((a + 1, b + 1));
+    }
+    first
+}

@@ -118,12 +118,38 @@ pub fn resect(points: &[Option<Vector3<f64>>], seen: &[(usize, Vector2<f64>)]) -
     })
 }
 
-/// The block's reconstruction, grown to every frame and point (unit observations).
+/// What the growth did not reach, by kind, each kind named only when some were missed:
+/// frames by number, points by name.
+fn unreached(frames: &[usize], points: &[&str]) -> String {
+    let list = |v: Vec<String>| v.join(", ");
+    let mut parts = Vec::new();
+    if !frames.is_empty() {
+        parts.push(format!(
+            "{} frame(s) ({}; each needs 4 reconstructed points, not coplanar)",
+            frames.len(),
+            list(frames.iter().map(usize::to_string).collect())
+        ));
+    }
+    if !points.is_empty() {
+        parts.push(format!(
+            "{} point(s) ({}; each needs 2 reconstructed frames)",
+            points.len(),
+            list(points.iter().map(|n| n.to_string()).collect())
+        ));
+    }
+    format!(
+        "not reachable from the largest complete block: {}",
+        parts.join(" and ")
+    )
+}
+
+/// The block's reconstruction, grown to every frame and point (unit observations; `numbers`
+/// the input's number of each frame, for the message).
 fn grow(
     obs: &Observations,
     block: &Reconstruction,
-    frames_in: &[usize],
-    points_in: &[usize],
+    (frames_in, points_in): (&[usize], &[usize]),
+    numbers: &[usize],
 ) -> Result<(Vec<Frame>, Vec<Vector3<f64>>), Error> {
     let (k, p) = (obs.frames.len(), obs.names.len());
     let mut frames: Vec<Option<Frame>> = vec![None; k];
@@ -166,20 +192,16 @@ fn grow(
             break;
         }
     }
-    let lost_f: Vec<String> = (0..k)
+    let lost_f: Vec<usize> = (0..k)
         .filter(|&f| frames[f].is_none())
-        .map(|f| (f + 1).to_string())
+        .map(|f| numbers[f])
         .collect();
     let lost_p: Vec<&str> = (0..p)
         .filter(|&j| points[j].is_none())
         .map(|j| obs.names[j].as_str())
         .collect();
     if !lost_f.is_empty() || !lost_p.is_empty() {
-        return Err(Error::Unreachable(format!(
-            "not reachable from the largest complete block: frames [{}] (each needs 4 reconstructed points, not coplanar), points [{}] (each needs 2 reconstructed frames)",
-            lost_f.join(", "),
-            lost_p.join(", ")
-        )));
+        return Err(Error::Unreachable(unreached(&lost_f, &lost_p)));
     }
     Ok((
         frames.into_iter().flatten().collect(),
@@ -189,6 +211,16 @@ fn grow(
 
 /// The starting reconstruction of tracks with gaps (before bundle adjustment).
 pub fn initial(obs: &Observations) -> Result<Reconstruction, Error> {
+    let numbers: Vec<usize> = (1..=obs.frames.len()).collect();
+    initial_numbered(obs, &numbers)
+}
+
+/// [`initial`] of a part of the input: `numbers` gives each frame's number in the input, for
+/// the messages.
+pub(crate) fn initial_numbered(
+    obs: &Observations,
+    numbers: &[usize],
+) -> Result<Reconstruction, Error> {
     obs.check_counts()?;
     let units = Units::of(obs)?;
     let unit = units.to_unit(obs);
@@ -210,8 +242,10 @@ pub fn initial(obs: &Observations) -> Result<Reconstruction, Error> {
     let tracks = block_obs
         .complete()
         .ok_or_else(|| Error::Numerical("the complete block has a gap".into()))?;
-    let block = super::tk::unit_tomasi_kanade(&tracks)?;
-    let (frames, points) = grow(&unit, &block, &fs, &ps)?;
+    let block_numbers: Vec<usize> = fs.iter().map(|&f| numbers[f]).collect();
+    let block = super::tk::unit_tomasi_kanade(&tracks)
+        .map_err(|e| super::pipeline::renumber(e, &block_numbers))?;
+    let (frames, points) = grow(&unit, &block, (&fs, &ps), numbers)?;
     let mut method = block.method.clone();
     method[0] = format!(
         "{} on the largest complete block ({} points in {} frames)",
@@ -230,6 +264,7 @@ pub fn initial(obs: &Observations) -> Result<Reconstruction, Error> {
         frames,
         method,
         conditioning: block.conditioning,
+        warnings: block.warnings.clone(),
     };
     rec.align_to_first();
     rec.centre();

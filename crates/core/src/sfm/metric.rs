@@ -27,6 +27,9 @@ fn symmetric(l: &[f64]) -> Matrix3<f64> {
     Matrix3::new(l[0], l[1], l[2], l[1], l[3], l[4], l[2], l[4], l[5])
 }
 
+/// The warning when L was clipped: the upgrade is then not the one the constraints fix.
+pub const CLIPPED: &str = "the metric upgrade found L not positive definite and clipped its eigenvalues (noise, or too little motion): the start is not metric, and the body may be distorted";
+
 /// The upgrade found.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Upgrade {

@@ -251,7 +251,8 @@ pub fn varpro_within(
             break;
         }
     }
-    let mut f = finish(cams, views, c, iterations, converged);
+    // an exact fit ends the loop with nothing left to lower
+    let mut f = finish(cams, views, c, iterations, converged || c == 0.0);
     f.out_of_work = out_of_work;
     Some(f)
 }
@@ -538,7 +539,8 @@ pub fn reconstruct(obs: &Observations, seed: u64) -> Result<Reconstruction, Erro
         .collect();
     if !few.is_empty() {
         return Err(Error::Unreachable(format!(
-            "points seen in fewer than 2 frames cannot be placed: [{}]",
+            "{} point(s) seen in fewer than 2 frames cannot be placed (the pipeline drops them first): [{}]",
+            few.len(),
             few.join(", ")
         )));
     }
@@ -551,7 +553,7 @@ pub fn reconstruct(obs: &Observations, seed: u64) -> Result<Reconstruction, Erro
             crate::limits::VARPRO_WORK
         )));
     }
-    if let Some((first, second)) = same_view(&views) {
+    if let Some((first, second)) = super::factor::same_view(&views) {
         return Err(Error::Degenerate(super::Degenerate::InPlaneMotion {
             first,
             second,
@@ -571,55 +573,25 @@ pub fn reconstruct(obs: &Observations, seed: u64) -> Result<Reconstruction, Erro
             }
         ),
     );
+    rec.warnings.extend(stop_warning(&fact));
     rec.align_to_first();
     rec.centre();
     units.back(&mut rec);
     Ok(rec)
 }
 
-/// One point's images in two frames.
-type ImagePair = (Vector2<f64>, Vector2<f64>);
-
-/// Frames that are one view up to in-plane motions, judged on what is observed: for every pair
-/// of frames that follow each other in at least three tracks, the images of those tracks
-/// differ by an orthogonal map of the image plane (`factor::in_plane`, at rounding level), so
-/// no depth is seen (in-plane motions compose, so the pairs that chain the tracks decide for
-/// all). The first such pair (1-based), as the complete-tracks path names it; `None` when
-/// some pair sees depth or no pair shares three points.
-pub(crate) fn same_view(views: &[Images]) -> Option<(usize, usize)> {
-    // each point's images in the frames adjacent in its track: one entry per observation at
-    // most, so time and memory stay within what the tracks hold
-    let mut pairs: std::collections::BTreeMap<(usize, usize), Vec<ImagePair>> =
-        std::collections::BTreeMap::new();
-    for v in views {
-        for w in v.windows(2) {
-            let ((a, ya), (b, yb)) = (w[0], w[1]);
-            let (key, pair) = if a < b {
-                ((a, b), (ya, yb))
-            } else {
-                ((b, a), (yb, ya))
-            };
-            pairs.entry(key).or_default().push(pair);
-        }
-    }
-    let mut first = None;
-    for ((a, b), shared) in pairs.iter().filter(|(_, s)| s.len() >= 3) {
-        let n = shared.len() as f64;
-        let ca = shared.iter().map(|s| s.0).sum::<Vector2<f64>>() / n;
-        let cb = shared.iter().map(|s| s.1).sum::<Vector2<f64>>() / n;
-        let w = DMatrix::from_fn(4, shared.len(), |r, c| {
-            let (ya, yb) = shared[c];
-            match r {
-                0 | 1 => ya[r] - ca[r],
-                _ => yb[r - 2] - cb[r - 2],
-            }
-        });
-        if !super::factor::in_plane(&w, 0, 1) {
-            return None;
-        }
-        first.get_or_insert((a + 1, b + 1));
-    }
-    first
+/// The warning of a factorisation that stopped before it converged: at the work limit or
+/// the iteration limit; `None` when it converged.
+pub fn stop_warning(f: &Factorised) -> Option<String> {
+    let limit = match (f.converged, f.out_of_work) {
+        (true, _) => return None,
+        (false, true) => "its work limit (docs/limits.md)".to_string(),
+        (false, false) => "its iteration limit".to_string(),
+    };
+    Some(format!(
+        "variable projection stopped at {limit} after {} iterations, before it converged: the affine factorisation, and so the body, may not be the least-squares one",
+        f.iterations
+    ))
 }
 
 /// The affine factorisation and the name of its start, within the work limit
@@ -700,5 +672,10 @@ fn metric_of(
             "metric upgrade: cholesky".into()
         }],
         conditioning: None,
+        warnings: up
+            .clipped
+            .then(|| super::metric::CLIPPED.to_string())
+            .into_iter()
+            .collect(),
     })
 }

@@ -2,7 +2,9 @@
 //! upgrade ([`tomasi_kanade`]), bundle adjustment ([`bundle_adjust`]), tracks with gaps
 //! ([`gaps`]), RANSAC over the paper's four-point solver with a judgement of every
 //! observation ([`robust`], [`judge`], the threshold from the data: [`threshold`]), and the
-//! whole pipeline behind `orthocheck reconstruct` ([`reconstruct`]).
+//! whole pipeline behind `orthocheck reconstruct` ([`reconstruct`]): what cannot take part
+//! dropped, the frames split into groups that share too few points ([`groups`]), each
+//! reconstructed on its own, and a warning wherever a step can tell its answer may be wrong.
 //!
 //! The camera model is the paper's: image = the first two rows of a rotation times the point,
 //! plus a translation in the image plane. Every function works on tracks brought to unit size
@@ -12,11 +14,13 @@ pub mod bundle;
 mod covariance;
 pub mod factor;
 pub mod gaps;
+pub mod groups;
 pub mod judge;
 pub mod metric;
 pub mod missing;
 mod observations;
 pub mod output;
+pub mod pipeline;
 pub mod robust;
 pub mod threshold;
 mod tk;
@@ -27,6 +31,8 @@ use nalgebra::{Matrix2x3, Matrix3, Vector2, Vector3};
 pub use crate::derivations::solver::Degenerate;
 pub use bundle::{bundle_adjust, Adjusted, BundleOptions, BundleReport};
 pub use observations::Observations;
+pub(crate) use pipeline::fit;
+pub use pipeline::{reconstruct, Component, Options, Outcome};
 pub use tk::tomasi_kanade;
 
 /// Fewer than this many points: the factorisation's rank-3 structure is not overdetermined.
@@ -124,6 +130,10 @@ pub struct Reconstruction {
     pub method: Vec<String>,
     /// Conditioning of the factorisation, where one was made.
     pub conditioning: Option<Conditioning>,
+    /// What may be wrong with it, as the steps that made it can tell (a search stopped at
+    /// its limit, a metric upgrade clipped, bundle adjustment skipped, points implausibly
+    /// deep); empty when none can.
+    pub warnings: Vec<String>,
 }
 
 impl Reconstruction {
@@ -145,6 +155,7 @@ impl Reconstruction {
                 .collect(),
             method: self.method.clone(),
             conditioning: self.conditioning,
+            warnings: self.warnings.clone(),
         }
     }
 
@@ -286,159 +297,4 @@ impl Units {
 /// The power of two nearest below `v` (v > 0, finite).
 fn pow2_floor(v: f64) -> f64 {
     2f64.powi(v.log2().floor() as i32)
-}
-
-/// Options of [`reconstruct`].
-#[derive(Clone, Debug, PartialEq)]
-pub struct Options {
-    /// Refine by bundle adjustment.
-    pub bundle: bool,
-    /// Levenberg–Marquardt iterations at most.
-    pub max_iterations: usize,
-    /// RANSAC over the four-point solver, when given.
-    pub robust: Option<robust::RansacOptions>,
-    /// The seed of variable projection's random starts (tried when the chain of frame pairs
-    /// breaks); RANSAC's samples take theirs from `robust`.
-    pub seed: u64,
-}
-
-impl Default for Options {
-    fn default() -> Self {
-        Options {
-            bundle: true,
-            max_iterations: bundle::MAX_ITERATIONS,
-            robust: None,
-            seed: robust::DEFAULT_SEED,
-        }
-    }
-}
-
-/// What [`reconstruct`] returns.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Outcome {
-    /// The reconstruction.
-    pub reconstruction: Reconstruction,
-    /// Its mirror (Necker) twin: the same images.
-    pub mirror: Reconstruction,
-    /// Root mean square reprojection distance, in image units, over the points used.
-    pub rms: f64,
-    /// In robust mode: the names of the points kept (each with its inlier images).
-    pub inliers: Option<Vec<String>>,
-    /// The bundle adjustment, when it ran.
-    pub bundle: Option<BundleReport>,
-    /// In robust mode: the threshold, the dropped observations, the rejected points.
-    pub robust: Option<robust::RobustReport>,
-}
-
-/// The pipeline of `orthocheck reconstruct`: in robust mode RANSAC and the judgement of every
-/// observation ([`robust::run`]: the kept images go on), then Tomasi–Kanade (complete
-/// tracks) or the largest complete block grown by intersection and resection (tracks with
-/// gaps), then bundle adjustment, then the mirror twin.
-pub fn reconstruct(obs: &Observations, options: &Options) -> Result<Outcome, Error> {
-    obs.check_counts()?;
-    let (rec, bundle, robust, rms) = match &options.robust {
-        Some(r) => {
-            let f = robust::run(obs, r, options)?;
-            let rms = f.reconstruction.rms(&f.used);
-            (f.reconstruction, f.bundle, Some(f.report), rms)
-        }
-        None => {
-            let (rec, bundle) = fit(obs, options, None)?;
-            let rms = rec.rms(obs);
-            (rec, bundle, None, rms)
-        }
-    };
-    Ok(Outcome {
-        mirror: rec.mirror(),
-        reconstruction: rec,
-        rms,
-        inliers: robust.as_ref().map(|r| r.kept.clone()),
-        bundle,
-        robust,
-    })
-}
-
-/// The start of tracks with gaps. With most entries missing (a turntable), variable
-/// projection from the chained pairs ([`missing::reconstruct`]) first, the largest complete
-/// block grown when it fails; with fewer missing, the other way round. `method` names the
-/// path taken, and why the first failed.
-fn with_gaps(used: &Observations, options: &Options) -> Result<Reconstruction, Error> {
-    // identical frames, or frames differing in-plane only, judged on what is observed: the
-    // same refusal as for complete tracks, whichever path would start
-    if let Some((first, second)) = missing::same_view(&judge::views(used)) {
-        return Err(Error::Degenerate(Degenerate::InPlaneMotion {
-            first,
-            second,
-        }));
-    }
-    let seed = options.seed;
-    let cells = used.frames.len() * used.names.len();
-    let mostly_missing = 2 * used.count() < cells;
-    let (first, first_name): (Result<Reconstruction, Error>, &str) = if mostly_missing {
-        (missing::reconstruct(used, seed), "variable projection")
-    } else {
-        (gaps::initial(used), "largest complete block")
-    };
-    match first {
-        Ok(r) => Ok(r),
-        Err(Error::Unreachable(why)) | Err(Error::Numerical(why)) => {
-            let mut r = if mostly_missing {
-                gaps::initial(used)?
-            } else {
-                missing::reconstruct(used, seed)?
-            };
-            r.method.insert(0, format!("{first_name}: {why}"));
-            Ok(r)
-        }
-        Err(e) => Err(e),
-    }
-}
-
-/// The fit of observations: Tomasi–Kanade (complete tracks) or the largest complete block
-/// grown (gaps), then bundle adjustment when asked and within its limits (`method` says
-/// when it was skipped); an error on a non-finite coordinate.
-pub(crate) fn fit(
-    used: &Observations,
-    options: &Options,
-    huber: Option<f64>,
-) -> Result<(Reconstruction, Option<BundleReport>), Error> {
-    let mut rec = match used.complete() {
-        Some(t) => tomasi_kanade(&t)?,
-        None => with_gaps(used, options)?,
-    };
-    let mut report = None;
-    if options.bundle {
-        let frames = used.frames.len();
-        if frames > crate::limits::BUNDLE_FRAMES {
-            rec.method.push(format!(
-                "bundle adjustment skipped: {frames} frames, more than the limit of {} (see docs/limits.md)",
-                crate::limits::BUNDLE_FRAMES
-            ));
-        } else if used.count() > crate::limits::BUNDLE_OBSERVATIONS {
-            rec.method.push(format!(
-                "bundle adjustment skipped: {} observations, more than the limit of {} (see docs/limits.md)",
-                used.count(),
-                crate::limits::BUNDLE_OBSERVATIONS
-            ));
-        } else if bundle::work(used) <= crate::limits::BUNDLE_WORK {
-            let bo = bundle::BundleOptions {
-                huber,
-                ..bundle::BundleOptions::with(options)
-            };
-            let adjusted = bundle_adjust(used, &rec, &bo)?;
-            rec = adjusted.reconstruction;
-            report = Some(adjusted.report);
-        } else {
-            rec.method.push(format!(
-                "bundle adjustment skipped: its work (Σ frames² per point) exceeds the limit of {} (see docs/limits.md)",
-                crate::limits::BUNDLE_WORK
-            ));
-        }
-    }
-    if !rec.is_finite() {
-        return Err(Error::Numerical(
-            "a non-finite coordinate in the reconstruction".into(),
-        ));
-    }
-    Ok((rec, report))
 }

@@ -1,23 +1,31 @@
-//! What `orthocheck reconstruct` prints: JSON (`points` by name in the tracks' order,
-//! `frames` with `rotation` and `translation`, `rms`, `mirror`, `method`; in robust mode
-//! `inliers` and `rejected` (point names), `threshold` (`value`, `from`: `"data"` or
-//! `"--threshold"`, and for the data its `median`, `sigma`, `shrink`, `floor`,
-//! `observations`) and `dropped` (`point`, `frame` counted from 1, `residual`)), after a
-//! bundle adjustment `points_std` (each point's standard errors by name) and a plain-text
-//! table.
+//! What `orthocheck reconstruct` prints: JSON and a plain-text table.
+//!
+//! A reconstruction in JSON: `points` by name in the tracks' order, `frames` (each its
+//! `frame`, the input's number from 1, `rotation` and `translation`), `rms`, `mirror`,
+//! `method`; in robust mode `inliers` and `rejected` (point names), `threshold` (`value`,
+//! `from`: `"data"` or `"--threshold"`, and for the data its `median`, `sigma`, `shrink`,
+//! `floor`, `observations`) and `dropped` (`point`, `frame` counted from 1, `residual`);
+//! after a bundle adjustment `points_std` (each point's standard errors by name).
+//! The document: with one group of frames, its reconstruction's fields; with several,
+//! `components`, one reconstruction each (its own frame of reference); and always
+//! `warnings` (strings), `dropped_points` (`name`, `why`) and `dropped_frames` (`frame`,
+//! `why`).
 
 use std::fmt::Write as _;
 
 use serde::ser::{SerializeMap, SerializeStruct};
 use serde::{Serialize, Serializer};
 
+use super::groups::LINK;
 use super::judge::MIN_IMAGES;
+use super::pipeline::{group_label, Component};
 use super::robust::{Dropped, RobustReport};
 use super::threshold::{Source, Threshold, RAYLEIGH_INLIER, RAYLEIGH_MEDIAN};
 use super::{Frame, Outcome, Reconstruction};
 use crate::numfmt::sig;
 
-/// Dropped observations the text lists by name (the JSON lists every one).
+/// Dropped observations, points and frames the text lists by name (the JSON lists every
+/// one).
 const TEXT_DROPPED: usize = 20;
 
 /// Points by name, in the tracks' order (a streamed map keeps the order).
@@ -33,33 +41,38 @@ impl Serialize for Points<'_> {
     }
 }
 
-/// One frame: `rotation` (rows) and `translation`.
-struct FrameJson<'a>(&'a Frame);
+/// One frame: its number in the input, `rotation` (rows) and `translation`.
+struct FrameJson<'a>(usize, &'a Frame);
 
 impl Serialize for FrameJson<'_> {
     fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
-        let r = &self.0.rotation;
+        let r = &self.1.rotation;
         let rows: [[f64; 3]; 3] = std::array::from_fn(|i| std::array::from_fn(|j| r[(i, j)]));
-        let mut st = s.serialize_struct("Frame", 2)?;
+        let mut st = s.serialize_struct("Frame", 3)?;
+        st.serialize_field("frame", &self.0)?;
         st.serialize_field("rotation", &rows)?;
-        st.serialize_field("translation", &[self.0.translation.x, self.0.translation.y])?;
+        st.serialize_field("translation", &[self.1.translation.x, self.1.translation.y])?;
         st.end()
     }
 }
 
-/// The frames of a reconstruction.
-fn frames(r: &Reconstruction) -> Vec<FrameJson<'_>> {
-    r.frames.iter().map(FrameJson).collect()
+/// The frames of a reconstruction, with their numbers in the input.
+fn frames<'a>(r: &'a Reconstruction, numbers: &[usize]) -> Vec<FrameJson<'a>> {
+    numbers
+        .iter()
+        .zip(&r.frames)
+        .map(|(&n, f)| FrameJson(n, f))
+        .collect()
 }
 
-/// The mirror twin: its points and frames.
-struct Mirror<'a>(&'a Reconstruction);
+/// The mirror twin: its points and frames (with their numbers in the input).
+struct Mirror<'a>(&'a Reconstruction, &'a [usize]);
 
 impl Serialize for Mirror<'_> {
     fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
         let mut st = s.serialize_struct("Mirror", 2)?;
         st.serialize_field("points", &Points(self.0))?;
-        st.serialize_field("frames", &frames(self.0))?;
+        st.serialize_field("frames", &frames(self.0, self.1))?;
         st.end()
     }
 }
@@ -115,6 +128,33 @@ impl Serialize for InlierFrames<'_> {
     }
 }
 
+/// One component's fields (a reconstruction in JSON, see the module).
+fn component_fields<M: SerializeMap>(m: &mut M, c: &Component) -> Result<(), M::Error> {
+    let r = &c.reconstruction;
+    m.serialize_entry("points", &Points(r))?;
+    m.serialize_entry("frames", &frames(r, &c.frames))?;
+    m.serialize_entry("rms", &c.rms)?;
+    m.serialize_entry("mirror", &Mirror(&c.mirror, &c.frames))?;
+    m.serialize_entry("method", &r.method.join("; "))?;
+    if let Some(i) = &c.inliers {
+        m.serialize_entry("inliers", i)?;
+    }
+    if let Some(rb) = &c.robust {
+        m.serialize_entry("inlier_frames", &InlierFrames(rb))?;
+        m.serialize_entry("rejected", &rb.rejected)?;
+        m.serialize_entry("threshold", &ThresholdJson(&rb.threshold))?;
+        let dropped: Vec<DroppedJson<'_>> = rb.dropped.iter().map(DroppedJson).collect();
+        m.serialize_entry("dropped", &dropped)?;
+    }
+    if let Some(b) = &c.bundle {
+        m.serialize_entry("iterations", &b.iterations)?;
+    }
+    if let Some(sd) = points_std(c) {
+        m.serialize_entry("points_std", &Named(&r.names, sd))?;
+    }
+    Ok(())
+}
+
 /// Each point's standard errors, by name in the tracks' order.
 struct Named<'a>(&'a [String], &'a [nalgebra::Vector3<f64>]);
 
@@ -130,23 +170,22 @@ impl Serialize for Named<'_> {
 
 /// The points' standard errors from the bundle adjustment, when it gave them for these
 /// points.
-fn points_std(o: &Outcome) -> Option<&[nalgebra::Vector3<f64>]> {
-    let sd = o.bundle.as_ref()?.points_std.as_deref()?;
-    (sd.len() == o.reconstruction.points.len()).then_some(sd)
+fn points_std(c: &Component) -> Option<&[nalgebra::Vector3<f64>]> {
+    let sd = c.bundle.as_ref()?.points_std.as_deref()?;
+    (sd.len() == c.reconstruction.points.len()).then_some(sd)
 }
 
 /// A depth whose standard error exceeds this share of the body's size (the rms distance of
-/// its points from their centroid) is reported as barely determined: at a tenth, the
-/// depth's sign is still clear at 10 standard errors of the body's extent, but its value is
-/// not a measurement.
+/// its points from their centroid) is reported as barely determined: its sign is clear, its
+/// value is not a measurement.
 const POOR_DEPTH: f64 = 0.1;
 
 /// The points whose depth is barely determined ([`POOR_DEPTH`]).
-fn poor_depths(o: &Outcome) -> Vec<&str> {
-    let Some(sd) = points_std(o) else {
+fn poor_depths(c: &Component) -> Vec<&str> {
+    let Some(sd) = points_std(c) else {
         return Vec::new();
     };
-    let r = &o.reconstruction;
+    let r = &c.reconstruction;
     let size = (r.points.iter().map(|x| x.norm_squared()).sum::<f64>()
         / r.points.len().max(1) as f64)
         .sqrt();
@@ -158,36 +197,35 @@ fn poor_depths(o: &Outcome) -> Vec<&str> {
         .collect()
 }
 
-/// The JSON document of an outcome.
+/// One component as a JSON object.
+struct ComponentJson<'a>(&'a Component);
+
+impl Serialize for ComponentJson<'_> {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        let mut m = s.serialize_map(None)?;
+        component_fields(&mut m, self.0)?;
+        m.end()
+    }
+}
+
+/// The JSON document of an outcome (see the module).
 pub struct Json<'a>(pub &'a Outcome);
 
 impl Serialize for Json<'_> {
     fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
         let o = self.0;
-        let r = &o.reconstruction;
-        let mut st = s.serialize_struct("Reconstruction", 11)?;
-        st.serialize_field("points", &Points(r))?;
-        st.serialize_field("frames", &frames(r))?;
-        st.serialize_field("rms", &o.rms)?;
-        st.serialize_field("mirror", &Mirror(&o.mirror))?;
-        st.serialize_field("method", &r.method.join("; "))?;
-        if let Some(i) = &o.inliers {
-            st.serialize_field("inliers", i)?;
+        let mut m = s.serialize_map(None)?;
+        match o.components.as_slice() {
+            [one] => component_fields(&mut m, one)?,
+            many => {
+                let all: Vec<ComponentJson<'_>> = many.iter().map(ComponentJson).collect();
+                m.serialize_entry("components", &all)?;
+            }
         }
-        if let Some(rb) = &o.robust {
-            st.serialize_field("inlier_frames", &InlierFrames(rb))?;
-            st.serialize_field("rejected", &rb.rejected)?;
-            st.serialize_field("threshold", &ThresholdJson(&rb.threshold))?;
-            let dropped: Vec<DroppedJson<'_>> = rb.dropped.iter().map(DroppedJson).collect();
-            st.serialize_field("dropped", &dropped)?;
-        }
-        if let Some(b) = &o.bundle {
-            st.serialize_field("iterations", &b.iterations)?;
-        }
-        if let Some(sd) = points_std(o) {
-            st.serialize_field("points_std", &Named(&r.names, sd))?;
-        }
-        st.end()
+        m.serialize_entry("warnings", &o.warnings())?;
+        m.serialize_entry("dropped_points", &o.dropped_points)?;
+        m.serialize_entry("dropped_frames", &o.dropped_frames)?;
+        m.end()
     }
 }
 
@@ -256,22 +294,36 @@ fn robust_lines(s: &mut String, r: &RobustReport) {
     }
 }
 
-/// The plain-text table of an outcome.
-pub fn text(o: &Outcome) -> String {
-    let r = &o.reconstruction;
-    let mut s = String::new();
+/// Lines of `items` (at most [`TEXT_DROPPED`], then how many more).
+fn capped<T>(s: &mut String, items: &[T], what: &str, line: impl Fn(&T) -> String) {
+    for item in items.iter().take(TEXT_DROPPED) {
+        let _ = writeln!(s, "{}", line(item));
+    }
+    if items.len() > TEXT_DROPPED {
+        let _ = writeln!(
+            s,
+            "… and {} more {what} (--json lists each)",
+            items.len() - TEXT_DROPPED
+        );
+    }
+}
+
+/// The text of one component: method, error, points and frames (by their input numbers).
+fn component_text(s: &mut String, c: &Component) {
+    let r = &c.reconstruction;
     let _ = writeln!(s, "method: {}", r.method.join("; "));
-    let _ = writeln!(s, "rms reprojection error: {} image units", sig(o.rms));
-    if let Some(i) = &o.inliers {
+    let _ = writeln!(s, "rms reprojection error: {} image units", sig(c.rms));
+    if let Some(i) = c.inliers.as_ref().filter(|i| !i.is_empty()) {
         let _ = writeln!(s, "inliers ({}): {}", i.len(), i.join(", "));
     }
-    if let Some(r) = &o.robust {
-        robust_lines(&mut s, r);
+    if let Some(r) = &c.robust {
+        robust_lines(s, r);
     }
-    let sd = points_std(o);
+    let sd = points_std(c);
     let _ = writeln!(
         s,
-        "points (frame 1's camera coordinates, centred{}):",
+        "points (frame {}'s camera coordinates, centred{}):",
+        c.frames[0],
         if sd.is_some() {
             "; ± standard errors"
         } else {
@@ -285,7 +337,7 @@ pub fn text(o: &Outcome) -> String {
         });
         let _ = writeln!(s, "  {n:<width$}  {}{err}", triple([x.x, x.y, x.z]));
     }
-    let poor = poor_depths(o);
+    let poor = poor_depths(c);
     if !poor.is_empty() {
         let _ = writeln!(
             s,
@@ -297,14 +349,13 @@ pub fn text(o: &Outcome) -> String {
         );
     }
     let _ = writeln!(s, "frames (rotation rows; translation):");
-    for (f, fr) in r.frames.iter().enumerate() {
+    for (number, fr) in c.frames.iter().zip(&r.frames) {
         let rows: Vec<String> = (0..3)
             .map(|i| triple((0..3).map(|j| fr.rotation[(i, j)])))
             .collect();
         let _ = writeln!(
             s,
-            "  {:>3}  {}  {}",
-            f + 1,
+            "  {number:>3}  {}  {}",
             rows.join(" "),
             triple([fr.translation.x, fr.translation.y])
         );
@@ -313,5 +364,39 @@ pub fn text(o: &Outcome) -> String {
         s,
         "mirror (Necker) solution: every point's z and every rotation R ↦ DRD, D = diag(1, 1, −1), give the same images"
     );
+}
+
+/// The plain-text table of an outcome: a `warning:` line each, the dropped points and
+/// frames, then each group's reconstruction (labelled when there are several).
+pub fn text(o: &Outcome) -> String {
+    let mut s = String::new();
+    for w in o.warnings() {
+        let _ = writeln!(s, "warning: {w}");
+    }
+    capped(&mut s, &o.dropped_points, "dropped points", |d| {
+        format!("dropped point {}: {}", d.name, d.why)
+    });
+    capped(&mut s, &o.dropped_frames, "dropped frames", |d| {
+        format!("dropped frame {}: {}", d.frame, d.why)
+    });
+    match o.components.as_slice() {
+        [one] => component_text(&mut s, one),
+        many => {
+            let n = many.len();
+            let _ = writeln!(
+                s,
+                "the frames kept form {n} groups (no frame of one shares {LINK} points with a frame of another): each is reconstructed in its own frame of reference, and their bodies are not one"
+            );
+            for (i, c) in many.iter().enumerate() {
+                let _ = writeln!(
+                    s,
+                    "{}, {} points:",
+                    group_label(i, n, &c.frames),
+                    c.reconstruction.points.len()
+                );
+                component_text(&mut s, c);
+            }
+        }
+    }
     s
 }

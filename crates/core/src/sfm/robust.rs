@@ -456,7 +456,7 @@ fn fit_judged(
     obs: &Observations,
     judged: &Judgement,
     t: &Threshold,
-    options: &super::Options,
+    (options, numbers): (&super::Options, &[usize]),
 ) -> Result<Fit, Error> {
     if judged.kept.len() < MIN_POINTS {
         return Err(Error::Unreachable(format!(
@@ -468,7 +468,7 @@ fn fit_judged(
     }
     let used = judged.observations(obs);
     let corner = t.value * HUBER_CORNER / threshold::RAYLEIGH_INLIER;
-    let (rec, bundle) = super::fit(&used, options, Some(corner))?;
+    let (rec, bundle) = super::fit(&used, options, Some(corner), numbers)?;
     Ok((used, rec, bundle))
 }
 
@@ -517,11 +517,13 @@ fn fit_threshold(views: &[Images], fit: &Fit, kept: &[usize], size: f64) -> Opti
 }
 
 /// RANSAC, the judgement of every observation, the fit of the kept ones, and the judgement
-/// again from the fit (see the module).
+/// again from the fit (see the module). `numbers`: the input's number (from 1) of each frame
+/// of `obs`, as the report and the messages name them.
 pub fn run(
     obs: &Observations,
     o: &RansacOptions,
     options: &super::Options,
+    numbers: &[usize],
 ) -> Result<Fitted, Error> {
     obs.check_counts()?;
     check_threshold(o)?;
@@ -530,7 +532,7 @@ pub fn run(
     let (k, size) = (obs.frames.len(), Units::of(obs)?.scale);
     let mut threshold = sample.threshold;
     let mut judged = judge::judge(&views, k, &sample.cameras, threshold.value);
-    let mut fit = fit_judged(obs, &judged, &threshold, options)?;
+    let mut fit = fit_judged(obs, &judged, &threshold, (options, numbers))?;
     let (mut rounds, mut note) = (0, None);
     while rounds < REJUDGE_ROUNDS {
         rounds += 1;
@@ -550,7 +552,7 @@ pub fn run(
             threshold = t;
             break;
         }
-        match fit_judged(obs, &next, &t, options) {
+        match fit_judged(obs, &next, &t, (options, numbers)) {
             Ok(f) => {
                 judged = next;
                 threshold = t;
@@ -565,7 +567,7 @@ pub fn run(
         }
     }
     let report = summary(
-        obs,
+        (obs, numbers),
         &judged,
         threshold,
         (sample.samples, sample.triangles),
@@ -583,9 +585,9 @@ pub fn run(
     })
 }
 
-/// The report of the final judgement.
+/// The report of the final judgement (frames by their numbers in the input).
 fn summary(
-    obs: &Observations,
+    (obs, numbers): (&Observations, &[usize]),
     judged: &Judgement,
     threshold: Threshold,
     (samples, triangles): (usize, usize),
@@ -609,7 +611,7 @@ fn summary(
         .map(|&j| {
             (0..obs.frames.len())
                 .filter(|&f| judged.inlier[f][j])
-                .map(|f| f + 1)
+                .map(|f| numbers[f])
                 .collect()
         })
         .collect();
@@ -624,7 +626,7 @@ fn summary(
             .iter()
             .map(|d| Dropped {
                 point: obs.names[d.point].clone(),
-                frame: d.frame + 1,
+                frame: numbers[d.frame],
                 residual: d.residual,
             })
             .collect(),

@@ -93,6 +93,11 @@ pub(super) fn unit_tomasi_kanade(t: &Tracks) -> Result<Reconstruction, Error> {
             factor: factors.singular[0] / factors.singular[2],
             metric: up.condition,
         }),
+        warnings: up
+            .clipped
+            .then(|| super::metric::CLIPPED.to_string())
+            .into_iter()
+            .collect(),
     };
     rec.align_to_first();
     Ok(rec)

@@ -2,8 +2,10 @@
 
 mod covariance;
 mod gaps;
+mod groups;
 mod judge;
 mod metric;
 mod missing;
+mod pipeline;
 mod robust;
 mod threshold;

@@ -24,7 +24,10 @@ fn standard_errors_match_the_spread_over_noise_replicates() {
             y.x += g.random_range(-a..a);
             y.y += g.random_range(-a..a);
         }
-        let o = reconstruct(&Observations::from_tracks(&t), &Options::default()).unwrap();
+        let o = reconstruct(&Observations::from_tracks(&t), &Options::default())
+            .unwrap()
+            .into_single()
+            .unwrap();
         let mut e = o.reconstruction.points.clone();
         // the mirror (Necker) twin gives the same images: take the one nearer the first
         if let Some(first) = estimates.first() {

@@ -85,10 +85,21 @@ fn a_run_stops_when_its_work_is_spent_and_says_so() {
     let f = missing::varpro_within(&views, chained.clone(), missing::MAX_ITERATIONS, &mut work)
         .unwrap();
     assert!(f.out_of_work && !f.converged && f.iterations <= 2, "{f:?}");
+    let w = missing::stop_warning(&f).unwrap();
+    assert!(
+        w.starts_with("variable projection stopped at its work limit (docs/limits.md) after"),
+        "{w}"
+    );
     assert!(work >= 0.0 && work < model.normal + model.trial);
     // unmetered, the same start converges: the meter, not the data, stopped it
-    let free = missing::varpro(&views, chained, missing::MAX_ITERATIONS).unwrap();
+    let free = missing::varpro(&views, chained.clone(), missing::MAX_ITERATIONS).unwrap();
     assert!(free.converged && !free.out_of_work && free.iterations > 2);
+    assert_eq!(missing::stop_warning(&free), None);
+    // stopped by the iteration limit instead, and said so
+    let one = missing::varpro(&views, chained, 1).unwrap();
+    assert!(!one.converged && !one.out_of_work);
+    let w = missing::stop_warning(&one).unwrap();
+    assert!(w.contains("its iteration limit after 1 iterations"), "{w}");
 }
 
 #[test]

@@ -1,0 +1,164 @@
+//! Tests of `orthocheck_core::sfm::pipeline`: a warning wherever a step can tell its answer
+//! may be wrong, none where it cannot; groups reconstructed apart, frames by their numbers.
+
+use nalgebra::{Matrix3, Rotation3, Vector2, Vector3};
+use orthocheck_core::model::{rng, NoiseModel, Scene};
+use orthocheck_core::sfm::pipeline::{depth_warning, ranges, DEPTH_FACTOR};
+use orthocheck_core::sfm::{
+    bundle_adjust, gaps, metric, reconstruct, tomasi_kanade, BundleOptions, Error, Frame,
+    Observations, Options, Reconstruction,
+};
+
+#[test]
+fn a_clean_run_has_no_warning() {
+    let obs = Observations::from_tracks(&Scene::random(10, 5, 2).tracks());
+    let out = reconstruct(&obs, &Options::default()).unwrap();
+    assert!(out.warnings().is_empty(), "{:?}", out.warnings());
+    assert!(out.dropped_points.is_empty() && out.dropped_frames.is_empty());
+    assert_eq!(out.into_single().unwrap().frames, [1, 2, 3, 4, 5]);
+}
+
+#[test]
+fn bundle_adjustment_skipped_by_its_frame_limit_warns() {
+    let k = orthocheck_core::limits::BUNDLE_FRAMES + 1;
+    let obs = Observations::from_tracks(&Scene::random(5, k, 3).tracks());
+    let out = reconstruct(&obs, &Options::default()).unwrap();
+    let w = out.warnings();
+    assert_eq!(w.len(), 1, "{w:?}");
+    assert!(
+        w[0].starts_with(&format!(
+            "bundle adjustment was skipped ({k} frames, more than the limit of 200"
+        )),
+        "{w:?}"
+    );
+    // not asked for, not warned of
+    let asked_not = Options {
+        bundle: false,
+        ..Options::default()
+    };
+    assert!(reconstruct(&obs, &asked_not).unwrap().warnings().is_empty());
+}
+
+#[test]
+fn bundle_adjustment_stopped_at_its_iteration_limit_warns() {
+    let scene = Scene::random(20, 5, 4);
+    let t =
+        NoiseModel::RelativeCoordinate { eps: 0.01 }.perturb_tracks(&scene.tracks(), &mut rng(8));
+    let obs = Observations::from_tracks(&t);
+    let start = tomasi_kanade(&t).unwrap();
+    let one = BundleOptions {
+        max_iterations: 1,
+        ..BundleOptions::default()
+    };
+    let a = bundle_adjust(&obs, &start, &one).unwrap();
+    assert!(!a.report.converged);
+    assert_eq!(
+        a.reconstruction.warnings,
+        ["bundle adjustment stopped at its iteration limit (1) before it converged: the body may not be the least-squares one"]
+    );
+    let full = bundle_adjust(&obs, &start, &BundleOptions::default()).unwrap();
+    assert!(full.report.converged && full.reconstruction.warnings.is_empty());
+}
+
+#[test]
+fn a_clipped_metric_upgrade_warns() {
+    // three frames close to one view under heavy noise: L is now and then indefinite
+    let mut clipped = 0;
+    for seed in 0..60 {
+        let mut scene = Scene::random(6, 3, seed);
+        for (i, m) in scene.motions.iter_mut().enumerate().skip(1) {
+            m.rotation = Rotation3::from_euler_angles(0.05 * i as f64, -0.04 * i as f64, 0.3);
+        }
+        let t = NoiseModel::RelativeCoordinate { eps: 0.05 }
+            .perturb_tracks(&scene.tracks(), &mut rng(seed + 100));
+        let Ok(r) = tomasi_kanade(&t) else { continue };
+        let said = r.method.iter().any(|m| m.contains("eigenvalue clipping"));
+        assert_eq!(
+            said,
+            r.warnings.iter().any(|w| w == metric::CLIPPED),
+            "{r:?}"
+        );
+        clipped += usize::from(said);
+    }
+    assert!(clipped > 0, "no seed clipped: the test tests nothing");
+}
+
+/// A reconstruction of the given points in frames turned by `angle` about the x axis.
+fn turned(points: Vec<Vector3<f64>>, angle: f64) -> Reconstruction {
+    let frames = (0..3)
+        .map(|i| Frame {
+            rotation: *Rotation3::from_euler_angles(angle * i as f64, 0.0, 0.0).matrix(),
+            translation: Vector2::zeros(),
+        })
+        .collect();
+    Reconstruction {
+        names: (1..=points.len()).map(|i| format!("X{i}")).collect(),
+        points,
+        frames,
+        method: Vec::new(),
+        conditioning: None,
+        warnings: Vec::new(),
+    }
+}
+
+#[test]
+fn points_far_deeper_than_the_image_extent_are_warned_of() {
+    let body = vec![
+        Vector3::new(1.0, 0.0, 0.0),
+        Vector3::new(0.0, 1.0, 0.0),
+        Vector3::new(-1.0, 0.0, 0.5),
+        Vector3::new(0.0, -1.0, -0.5),
+    ];
+    // a turned body: depths shown in the images, no warning
+    assert_eq!(depth_warning(&turned(body.clone(), 0.5)), None);
+    // the frames 0.01 mrad apart and two points 10⁵ deep on either side of the centroid:
+    // their images stay within twice the body's
+    let mut deep = body;
+    deep.push(Vector3::new(0.0, 0.0, -1e5));
+    deep.push(Vector3::new(0.0, 0.0, 1e5));
+    let w = depth_warning(&turned(deep, 1e-5)).unwrap();
+    assert!(
+        w.starts_with("2 point(s) (X5, X6) lie at depths beyond 100 ×"),
+        "{w}"
+    );
+    assert_eq!(DEPTH_FACTOR, 100.0);
+}
+
+#[test]
+fn what_the_largest_block_does_not_reach_is_named_and_never_an_empty_list() {
+    // frame 4 sees three points only: every point is reached, frame 4 is not
+    let t = Scene::random(8, 4, 6).tracks();
+    let obs = Observations::seen_where(&t, |f, j| f < 3 || j < 3);
+    let e = gaps::initial(&obs).unwrap_err();
+    let Error::Unreachable(m) = &e else {
+        panic!("{e}")
+    };
+    assert!(
+        m.starts_with("not reachable from the largest complete block: 1 frame(s) (4; each needs 4"),
+        "{m}"
+    );
+    assert!(!m.contains("point(s)") && !m.contains("[]"), "{m}");
+}
+
+#[test]
+fn groups_are_reconstructed_apart_with_their_frame_numbers() {
+    // frames 1–3 see points 1–4, frames 4–6 points 5–8: two bodies, never one
+    let scene = Scene::random(8, 6, 9);
+    let obs = Observations::seen_where(&scene.tracks(), |f, j| (f < 3) == (j < 4));
+    let out = reconstruct(&obs, &Options::default()).unwrap();
+    assert_eq!(out.components.len(), 2);
+    let (a, b) = (&out.components[0], &out.components[1]);
+    assert_eq!(
+        (a.frames.as_slice(), b.frames.as_slice()),
+        ([1, 2, 3].as_slice(), [4, 5, 6].as_slice())
+    );
+    assert_eq!(a.reconstruction.names, ["P", "Q", "R", "T"]);
+    assert_eq!(b.reconstruction.names, ["S", "P6", "P7", "P8"]);
+    // each in its own frame of reference: its first frame's rotation the identity
+    for c in [a, b] {
+        assert!((c.reconstruction.frames[0].rotation - Matrix3::identity()).norm() < 1e-9);
+        assert!(c.rms < 1e-9, "{}", c.rms);
+    }
+    assert!(out.clone().into_single().is_none());
+    assert_eq!(ranges(&[1, 2, 3, 5, 7, 8]), "1–3, 5, 7, 8");
+}
