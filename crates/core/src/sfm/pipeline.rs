@@ -161,8 +161,9 @@ fn component(obs: &Observations, g: &Group, options: &Options) -> Result<Compone
             (f.reconstruction, f.bundle, Some(f.report), rms)
         }
         None => {
-            let (rec, bundle) = fit(used, options, None, &numbers)?;
+            let (mut rec, bundle) = fit(used, options, None, &numbers)?;
             let rms = rec.rms(used);
+            rec.warnings.extend(uneven_warning(used, &rec, &numbers));
             (rec, bundle, None, rms)
         }
     };
@@ -415,6 +416,84 @@ pub fn depth_warning(rec: &Reconstruction) -> Option<String> {
             sig(DEPTH_FACTOR),
             sig(extent),
             sig(deepest)
+        )
+    })
+}
+
+/// How far beyond its typical share a frame's residual may go before the fit is called
+/// uneven: the Wilson–Hilferty point of χ²_ν/ν at z = 5 (about 3·10⁻⁷ one-sided per frame,
+/// so a fit at its optimum with iid noise warns about once in 30,000 runs of 100 frames).
+const UNEVEN_Z: f64 = 5.0;
+
+/// The least ratio that calls a frame's fit uneven, whatever its degrees of freedom: a
+/// frame's noise may well be twice the median frame's (a tracker's accuracy varies with the
+/// image, relative noise with the body's extent in the frame), a mean square four times as
+/// large. A chosen factor: at turntable rates the frames of good fits stayed below 3.8, those
+/// of local optima reached 3 to 480 (`turntable_family`, docs/limits.md).
+const UNEVEN_FLOOR: f64 = 4.0;
+
+/// The warning of frames whose reprojection error is far beyond the others': a fit at its
+/// optimum leaves every frame a share of the noise in proportion to its observations, a
+/// local optimum leaves some frames fitting badly. Each frame's mean squared residual per
+/// degree of freedom (ν = 2 n − 5 for its n images and five parameters) is compared with
+/// the median frame's, scaled by the χ²_ν/ν point at [`UNEVEN_Z`] and at least
+/// [`UNEVEN_FLOOR`]; `None` when every frame
+/// is within it (or fewer than three frames have residual freedom). `numbers` names the
+/// frames as the input does.
+pub fn uneven_warning(
+    obs: &Observations,
+    rec: &Reconstruction,
+    numbers: &[usize],
+) -> Option<String> {
+    let k = rec.frames.len();
+    let (mut ss, mut n) = (vec![0.0f64; k], vec![0usize; k]);
+    for (f, j, y) in obs.seen() {
+        ss[f] += (rec.frames[f].project(&rec.points[j]) - y).norm_squared();
+        n[f] += 1;
+    }
+    let per: Vec<(usize, f64, f64)> = (0..k)
+        .filter(|&f| 2 * n[f] > 5)
+        .map(|f| {
+            let nu = (2 * n[f] - 5) as f64;
+            (f, ss[f] / nu, nu)
+        })
+        .collect();
+    if per.len() < 3 {
+        return None;
+    }
+    let mut means: Vec<f64> = per.iter().map(|p| p.1).collect();
+    means.sort_by(f64::total_cmp);
+    let median = means[means.len() / 2];
+    if !(median > 0.0) {
+        return None;
+    }
+    let limit = |nu: f64| {
+        let a = 2.0 / (9.0 * nu);
+        (1.0 - a + UNEVEN_Z * a.sqrt()).powi(3)
+    };
+    let mut bad: Vec<(usize, f64)> = per
+        .iter()
+        .filter(|(_, m, nu)| *m > median * limit(*nu).max(UNEVEN_FLOOR))
+        .map(|(f, m, _)| (*f, m / median))
+        .collect();
+    bad.sort_by(|a, b| b.1.total_cmp(&a.1));
+    let named: Vec<String> = bad
+        .iter()
+        .take(DEEP_NAMED)
+        .map(|(f, r)| {
+            format!(
+                "{} ({}×)",
+                numbers.get(*f).copied().unwrap_or(f + 1),
+                sig(*r)
+            )
+        })
+        .collect();
+    (!bad.is_empty()).then(|| {
+        format!(
+            "{} frame(s) fit far worse than the median frame (frame, mean squared residual over the median's): {}{}: likely a local optimum, not the best fit",
+            bad.len(),
+            named.join(", "),
+            if bad.len() > DEEP_NAMED { ", …" } else { "" }
         )
     })
 }

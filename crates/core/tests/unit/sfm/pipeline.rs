@@ -162,3 +162,27 @@ fn groups_are_reconstructed_apart_with_their_frame_numbers() {
     assert!(out.clone().into_single().is_none());
     assert_eq!(ranges(&[1, 2, 3, 5, 7, 8]), "1–3, 5, 7, 8");
 }
+
+#[test]
+fn a_frame_that_fits_far_worse_than_the_others_is_warned_of() {
+    use orthocheck_core::sfm::pipeline::uneven_warning;
+    // 30 points in 8 frames, 0.5 % noise: the fit at its optimum warns of nothing
+    let clean = Scene::random(30, 8, 11).tracks();
+    let noisy = NoiseModel::RelativeCoordinate { eps: 0.005 }.perturb_tracks(&clean, &mut rng(12));
+    let obs = Observations::from_tracks(&noisy);
+    let numbers: Vec<usize> = (1..=8).collect();
+    let good = reconstruct(&obs, &Options::default())
+        .unwrap()
+        .into_single()
+        .unwrap();
+    assert_eq!(uneven_warning(&obs, &good.reconstruction, &numbers), None);
+    // the same fit with frame 5 turned by a few degrees: its residual is far beyond the
+    // others', the rest as before
+    let mut bad = good.reconstruction.clone();
+    bad.frames[4].rotation *= *Rotation3::from_axis_angle(&Vector3::y_axis(), 0.05).matrix();
+    let w = uneven_warning(&obs, &bad, &numbers).expect("a warning");
+    assert!(
+        w.starts_with("1 frame(s) fit far worse than the median frame") && w.contains(": 5 ("),
+        "{w}"
+    );
+}
