@@ -464,7 +464,7 @@ pub fn uneven_warning(
     let mut means: Vec<f64> = per.iter().map(|p| p.1).collect();
     means.sort_by(f64::total_cmp);
     let median = means[means.len() / 2];
-    if !(median > 0.0) {
+    if median.is_nan() || median <= 0.0 {
         return None;
     }
     let limit = |nu: f64| {
