@@ -423,14 +423,14 @@ pub fn depth_warning(rec: &Reconstruction) -> Option<String> {
 /// How far beyond its typical share a frame's residual may go before the fit is called
 /// uneven: the Wilson–Hilferty point of χ²_ν/ν at z = 5 (about 3·10⁻⁷ one-sided per frame,
 /// so a fit at its optimum with iid noise warns about once in 30,000 runs of 100 frames).
-const UNEVEN_Z: f64 = 5.0;
+pub const UNEVEN_Z: f64 = 5.0;
 
 /// The least ratio that calls a frame's fit uneven, whatever its degrees of freedom: a
 /// frame's noise may well be twice the median frame's (a tracker's accuracy varies with the
 /// image, relative noise with the body's extent in the frame), a mean square four times as
 /// large. A chosen factor: at turntable rates the frames of good fits stayed below 3.8, those
 /// of local optima reached 3 to 480 (`turntable_family`, docs/limits.md).
-const UNEVEN_FLOOR: f64 = 4.0;
+pub const UNEVEN_FLOOR: f64 = 4.0;
 
 /// The warning of frames whose reprojection error is far beyond the others': a fit at its
 /// optimum leaves every frame a share of the noise in proportion to its observations, a

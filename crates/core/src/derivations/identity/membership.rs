@@ -22,7 +22,7 @@ const FIT_PARAMETERS: usize = 4;
 
 /// Rousseeuw's reweighting cut: after least median of squares, the points within 2.5
 /// robust standard deviations start the least-squares refit.
-const REWEIGHT: f64 = 2.5;
+pub const REWEIGHT: f64 = 2.5;
 
 /// Four-point subsets tried by [`robust_tolerance`]: all of them up to this many, else this
 /// many drawn with a fixed seed (the same input gives the same tolerance).
