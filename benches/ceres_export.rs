@@ -74,14 +74,21 @@ fn timed<T>(runs: usize, mut f: impl FnMut() -> T) -> (f64, T) {
     (secs[secs.len() / 2], last.expect("one run at least"))
 }
 
-/// The start `reconstruct` makes before its bundle adjustment.
+/// The start `reconstruct` makes before its bundle adjustment (the frames here form one
+/// group, and no point or frame is dropped).
 fn pipeline_start(obs: &Observations) -> Reconstruction {
     let options = Options {
         bundle: false,
         ..Options::default()
     };
-    reconstruct(obs, &options)
-        .expect("a reconstruction")
+    let outcome = reconstruct(obs, &options).expect("a reconstruction");
+    assert!(
+        outcome.dropped_points.is_empty() && outcome.dropped_frames.is_empty(),
+        "the pipeline dropped points or frames"
+    );
+    outcome
+        .into_single()
+        .expect("one group of frames")
         .reconstruction
 }
 
@@ -263,7 +270,15 @@ fn main() {
         };
         let (_, obs) = t.generate();
         let start = pipeline_start(&obs);
-        export(&dir, "turntable_500x36w5", &obs, &start, repeat, longer, &reach);
+        export(
+            &dir,
+            "turntable_500x36w5",
+            &obs,
+            &start,
+            repeat,
+            longer,
+            &reach,
+        );
     }
     let mut i = 0;
     while i < args.len() {

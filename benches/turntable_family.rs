@@ -99,7 +99,7 @@ fn main() {
         args.get(1).copied().unwrap_or(1),
     );
     // [elevation band][longest − 2]: (scenes, reached, missed but warned, errors, split)
-    let mut table = [[(0usize, 0usize, 0usize, 0usize, 0usize); 7]; 3];
+    let mut table: [[Cell; 7]; 3] = [[(0, 0, 0, 0, 0); 7]; 3];
     // scenes that reached the optimum and still warned
     let mut alarms = 0usize;
     for s in 0..scenes {
@@ -152,7 +152,10 @@ fn main() {
     println!("warned although the optimum was reached: {alarms}");
 }
 
-fn print_table(table: &[[(usize, usize, usize, usize, usize); 7]; 3]) {
+/// Per cell: scenes, reached, misses warned, refused, split or with frames dropped.
+type Cell = (usize, usize, usize, usize, usize);
+
+fn print_table(table: &[[Cell; 7]; 3]) {
     println!("reached the truth-started optimum (of scenes; misses warned; refused; split into groups or frames dropped, unwarned), by elevation and longest track:\n");
     println!("| elevation | L = 2 | 3 | 4 | 5 | 6 | 7 | 8 | all |");
     println!("|---|---:|---:|---:|---:|---:|---:|---:|---:|");

@@ -10,8 +10,15 @@
 # --seed 1) and tt100k (scripts/cli_limits.py's turntable of 100,000 points each in 2 of 100
 # frames, 0.2 % noise: the largest turntable the project runs, at BUNDLE_OBSERVATIONS), the
 # turntables from the pipeline's own start (variable projection from the chained pairs).
-# Every build and every timed run holds /tmp/cargo.lock, so no other build on this shared
-# machine runs beside it.
+# PROBLEMS="…" picks some; REACH_TT100K="C1,C2" also times how long orthocheck takes to
+# bring tt100k's cost down to each Cᵢ (e.g. Ceres' final costs, which it reaches only after
+# far more than the pipeline's 100 iterations); SKIP_CERES=1 times orthocheck only.
+#
+# Configurations of Ceres (bench.cc): SPARSE_SCHUR and DENSE_SCHUR, 1 and 2 threads, the
+# rotation a quaternion (QuaternionManifold) or orthocheck's R·exp([δ]×), tolerances at
+# rounding (4ε, orthocheck's stopping rule), and Ceres' default tolerances (quaternion).
+# Every build and every timed run holds /tmp/cargo.lock (released between configurations),
+# so no other build on this shared machine runs beside a timing.
 set -eu
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../.." && pwd)
@@ -27,12 +34,29 @@ if [ ! -f "$out/tt100k.csv" ]; then
 fi
 
 cd "$root"
-flock /tmp/cargo.lock cargo run --release -p orthocheck-benches --example ceres_export -- \
-    "$out/problems" --repeat "$repeat" --csv tt100k "$out/tt100k.csv" | tee "$out/orthocheck.txt"
-
 lscpu | grep 'Model name' | tee "$out/machine.txt"
+flock /tmp/cargo.lock cargo build --release -p orthocheck-benches --example ceres_export
 for p in $problems; do
-    flock /tmp/cargo.lock "$root/target/ceres_bench/bench" "$out/problems/$p.txt" \
-        --repeat "$repeat" --solver sparse,dense --threads 1,2 --rot quat,matrix \
-        --tol tight,default | tee "$out/ceres_$p.txt"
+    case $p in
+        tt100k) extra="--csv tt100k $out/tt100k.csv ${REACH_TT100K:+--reach $REACH_TT100K}" ;;
+        *) extra="" ;;
+    esac
+    # shellcheck disable=SC2086
+    flock /tmp/cargo.lock target/release/examples/ceres_export "$out/problems" \
+        --repeat "$repeat" --only "$p" $extra | tee "$out/orthocheck_$p.txt"
+done
+
+[ -n "${SKIP_CERES:-}" ] && exit 0
+for p in $problems; do
+    : > "$out/ceres_$p.txt"
+    for config in "quat tight" "matrix tight" "quat default"; do
+        set -- $config
+        for solver in sparse dense; do
+            for threads in 1 2; do
+                flock /tmp/cargo.lock "$root/target/ceres_bench/bench" "$out/problems/$p.txt" \
+                    --repeat "$repeat" --solver "$solver" --threads "$threads" --rot "$1" \
+                    --tol "$2" | tee -a "$out/ceres_$p.txt"
+            done
+        done
+    done
 done
