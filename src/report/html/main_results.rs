@@ -90,14 +90,15 @@ fn map_svg(map: &Map) -> String {
         );
     }
     s.push_str("</style>");
-    let reach_of = |node: usize| -> String {
-        map.reach
-            .iter()
-            .enumerate()
-            .filter(|(_, set)| set.contains(&node))
-            .map(|(i, _)| format!(" r{i}"))
-            .collect()
-    };
+    push_columns(&mut s, map);
+    push_edges(&mut s, map);
+    push_nodes(&mut s, map);
+    s.push_str("</svg>");
+    s
+}
+
+/// Each section's column: a box and its number.
+fn push_columns(s: &mut String, map: &Map) {
     let bottom = map.height - 4.0;
     for (sec, left) in &map.columns {
         let _ = write!(
@@ -111,6 +112,10 @@ fn map_svg(map: &Map) -> String {
             escape(sec)
         );
     }
+}
+
+/// Every edge, from the user to its support: darker from a main result.
+fn push_edges(s: &mut String, map: &Map) {
     for &(from, to) in &map.edges {
         let (a, b) = (&map.nodes[from], &map.nodes[to]);
         let main = matches!(a.colour, Colour::Standing(_));
@@ -139,6 +144,18 @@ fn map_svg(map: &Map) -> String {
             if main { "1.2" } else { "0.8" }
         );
     }
+}
+
+/// Every box, linked to its card; each names the main results whose reach holds it.
+fn push_nodes(s: &mut String, map: &Map) {
+    let reach_of = |node: usize| -> String {
+        map.reach
+            .iter()
+            .enumerate()
+            .filter(|(_, set)| set.contains(&node))
+            .map(|(i, _)| format!(" r{i}"))
+            .collect()
+    };
     for (k, n) in map.nodes.iter().enumerate() {
         let main = if k < map.reach.len() {
             format!(" n{k}")
@@ -169,6 +186,4 @@ fn map_svg(map: &Map) -> String {
             escape(&shown)
         );
     }
-    s.push_str("</svg>");
-    s
 }
