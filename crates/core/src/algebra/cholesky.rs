@@ -57,3 +57,15 @@ pub fn cholesky_solve(
     let y = l.solve_lower_triangular(b)?;
     l.tr_solve_lower_triangular(&y)
 }
+
+/// The inverse of a symmetric positive definite matrix whose lower triangle is `a`: A⁻¹ =
+/// L⁻ᵀ L⁻¹ from the blocked factor, the last product in one matrix product; `None` as
+/// [`cholesky_lower`].
+pub fn cholesky_inverse(a: DMatrix<f64>) -> Option<DMatrix<f64>> {
+    let n = a.nrows();
+    let l = cholesky_lower(a)?;
+    let linv = l.solve_lower_triangular(&DMatrix::identity(n, n))?;
+    // an explicit transpose: the product then runs in `matrixmultiply` (gemm_tr does not)
+    let inv = linv.transpose() * &linv;
+    inv.iter().all(|v| v.is_finite()).then_some(inv)
+}
