@@ -30,7 +30,7 @@ pub use float_roots::{
 pub use gram::gram;
 pub use interval::Interval;
 pub use lanczos::largest_eigenvalue;
-pub use multiquad::Multiquad;
+pub use multiquad::{Multiquad, MultiquadField};
 pub use newton::{min_norm_newton, min_norm_newton_step};
 pub use parse::parse_decimal;
 pub use perm::{permutations, permutations4};

@@ -2,12 +2,33 @@
 //! every √dᵢ the positive real root: the field of a few square roots at once (the directions
 //! of lines found by solving one quadratic each), with an exact sign, so that comparisons and
 //! zero tests need no rounding.
+//!
+//! An element is stored as integer coefficients over one common denominator, in the basis of
+//! the integers Dᵢ = pᵢqᵢ (√(p/q) = √(pq)/q): a product then costs integer products and one
+//! content reduction, not a rational normalisation (a gcd) per coefficient product.
 
 use std::ops::{Add, Mul, Neg, Sub};
 use std::rc::Rc;
 
+use num_bigint::BigInt;
+use num_integer::Integer;
 use num_rational::BigRational;
-use num_traits::{Signed, Zero};
+use num_traits::{One, Signed, Zero};
+
+/// The generators of a multiquadratic field: their squares dᵢ, and the integers Dᵢ = pᵢqᵢ
+/// (dᵢ = pᵢ/qᵢ in lowest terms) whose roots are the basis.
+#[derive(Debug, PartialEq)]
+pub struct MultiquadField {
+    squares: Vec<BigRational>,
+    integers: Vec<BigInt>,
+}
+
+impl MultiquadField {
+    /// The generators' squares dᵢ.
+    pub fn squares(&self) -> &[BigRational] {
+        &self.squares
+    }
+}
 
 /// An element Σ c_S ∏_{i∈S} √dᵢ over the subsets S of the generators (a bit mask each).
 ///
@@ -26,70 +47,95 @@ use num_traits::{Signed, Zero};
 /// assert_eq!((&(&s * &s) - &five).sign(), Ordering::Greater);
 /// assert_eq!((&(&(&s * &s) - &five) - &Multiquad::constant(&field, rat(5, 1))).sign(), Ordering::Less);
 /// ```
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug)]
 pub struct Multiquad {
-    squares: Rc<[BigRational]>,
-    coeffs: Vec<BigRational>,
+    field: Rc<MultiquadField>,
+    /// Coefficients of ∏_{i∈S} √Dᵢ, over `den`.
+    num: Vec<BigInt>,
+    /// Positive. Not kept in lowest terms: a content gcd on every product costs more than the
+    /// growth it saves; elements made or scaled from rationals are reduced.
+    den: BigInt,
 }
 
 impl Multiquad {
-    /// The generators' squares dᵢ (each must be positive; at most 16 of them).
-    pub fn field(squares: Vec<BigRational>) -> Rc<[BigRational]> {
+    /// The field of the generators' squares dᵢ (each must be positive; at most 16 of them).
+    pub fn field(squares: Vec<BigRational>) -> Rc<MultiquadField> {
         assert!(squares.len() <= 16 && squares.iter().all(Signed::is_positive));
-        squares.into()
+        let integers = squares.iter().map(|d| d.numer() * d.denom()).collect();
+        Rc::new(MultiquadField { squares, integers })
     }
 
     /// The rational `c` in the field.
-    pub fn constant(field: &Rc<[BigRational]>, c: BigRational) -> Multiquad {
-        let mut coeffs = vec![BigRational::zero(); 1 << field.len()];
-        coeffs[0] = c;
-        Multiquad {
-            squares: field.clone(),
-            coeffs,
-        }
+    pub fn constant(field: &Rc<MultiquadField>, c: BigRational) -> Multiquad {
+        let mut num = vec![BigInt::zero(); 1 << field.squares.len()];
+        let (n, den) = c.into_raw();
+        num[0] = n;
+        Multiquad::reduced(field, num, den)
     }
 
-    /// The generator √dᵢ.
-    pub fn root(field: &Rc<[BigRational]>, i: usize) -> Multiquad {
-        let mut coeffs = vec![BigRational::zero(); 1 << field.len()];
-        coeffs[1 << i] = BigRational::from_integer(1.into());
-        Multiquad {
-            squares: field.clone(),
-            coeffs,
-        }
+    /// The generator √dᵢ = √Dᵢ / qᵢ.
+    pub fn root(field: &Rc<MultiquadField>, i: usize) -> Multiquad {
+        let mut num = vec![BigInt::zero(); 1 << field.squares.len()];
+        num[1 << i] = BigInt::one();
+        Multiquad::reduced(field, num, field.squares[i].denom().clone())
     }
 
-    /// The generators' squares of the element's field.
-    pub fn squares(&self) -> &Rc<[BigRational]> {
-        &self.squares
+    /// The element's field.
+    pub fn squares(&self) -> &Rc<MultiquadField> {
+        &self.field
     }
 
     /// The element times the rational `c`.
     pub fn scale(&self, c: &BigRational) -> Multiquad {
-        Multiquad {
-            squares: self.squares.clone(),
-            coeffs: self.coeffs.iter().map(|x| x * c).collect(),
-        }
+        let num = self.num.iter().map(|x| x * c.numer()).collect();
+        Multiquad::reduced(&self.field, num, &self.den * c.denom())
     }
 
     /// The sign of the real value, exactly.
     pub fn sign(&self) -> std::cmp::Ordering {
-        sign_of(&self.coeffs, &self.squares)
+        sign_of(&self.num, &self.field.integers)
     }
 
     /// Whether the value is zero.
     pub fn is_zero(&self) -> bool {
         self.sign() == std::cmp::Ordering::Equal
     }
+
+    /// `num / den` in lowest terms, the denominator positive.
+    fn reduced(field: &Rc<MultiquadField>, mut num: Vec<BigInt>, mut den: BigInt) -> Multiquad {
+        if den.is_negative() {
+            num.iter_mut().for_each(|x| *x = -&*x);
+            den = -den;
+        }
+        let mut g = den.clone();
+        for x in num.iter().filter(|x| !x.is_zero()) {
+            if g.is_one() {
+                break;
+            }
+            g = g.gcd(x);
+        }
+        if num.iter().all(Zero::is_zero) {
+            g = den.clone();
+        }
+        if !g.is_one() {
+            num.iter_mut().for_each(|x| *x /= &g);
+            den /= &g;
+        }
+        Multiquad {
+            field: field.clone(),
+            num,
+            den,
+        }
+    }
 }
 
-/// The sign of Σ c_S √d_S with generators `d` (c has 2^|d| entries). Split off the last
+/// The sign of Σ c_S √D_S with generators `d` (c has 2^|d| entries). Split off the last
 /// generator: x = a + b√d with a, b over the others. Where a and b agree in sign, that is the
 /// sign; where they differ, the larger of a² and b²d wins.
-fn sign_of(c: &[BigRational], d: &[BigRational]) -> std::cmp::Ordering {
+fn sign_of(c: &[BigInt], d: &[BigInt]) -> std::cmp::Ordering {
     use std::cmp::Ordering::*;
     let Some((last, rest)) = d.split_last() else {
-        return c[0].cmp(&BigRational::zero());
+        return c[0].sign().cmp(&num_bigint::Sign::NoSign);
     };
     let (a, b) = c.split_at(c.len() / 2);
     let (sa, sb) = (sign_of(a, rest), sign_of(b, rest));
@@ -100,8 +146,8 @@ fn sign_of(c: &[BigRational], d: &[BigRational]) -> std::cmp::Ordering {
         return sb;
     }
     // a² − d·b², over the remaining generators
-    let diff: Vec<BigRational> = {
-        let sq = |x: &[BigRational]| product(x, x, rest);
+    let diff: Vec<BigInt> = {
+        let sq = |x: &[BigInt]| product(x, x, rest);
         let (aa, bb) = (sq(a), sq(b));
         aa.iter().zip(&bb).map(|(p, q)| p - q * last).collect()
     };
@@ -113,8 +159,8 @@ fn sign_of(c: &[BigRational], d: &[BigRational]) -> std::cmp::Ordering {
 }
 
 /// The product of two coefficient vectors over the generators `d`: √d_S·√d_T = √d_{S⊕T}·∏_{S∩T} dᵢ.
-fn product(x: &[BigRational], y: &[BigRational], d: &[BigRational]) -> Vec<BigRational> {
-    let mut out = vec![BigRational::zero(); x.len()];
+fn product(x: &[BigInt], y: &[BigInt], d: &[BigInt]) -> Vec<BigInt> {
+    let mut out = vec![BigInt::zero(); x.len()];
     for (s, a) in x.iter().enumerate().filter(|(_, a)| !a.is_zero()) {
         for (t, b) in y.iter().enumerate().filter(|(_, b)| !b.is_zero()) {
             let shared = (0..d.len())
@@ -126,18 +172,31 @@ fn product(x: &[BigRational], y: &[BigRational], d: &[BigRational]) -> Vec<BigRa
     out
 }
 
+/// Equal values (the representation is not unique).
+impl PartialEq for Multiquad {
+    fn eq(&self, o: &Multiquad) -> bool {
+        (self - o).is_zero()
+    }
+}
+
 impl Add for &Multiquad {
     type Output = Multiquad;
     fn add(self, o: &Multiquad) -> Multiquad {
-        debug_assert!(Rc::ptr_eq(&self.squares, &o.squares));
+        debug_assert!(Rc::ptr_eq(&self.field, &o.field));
+        // over the least common denominator: one gcd of the denominators, none of the sum's
+        // content (rarely more than one; the coefficient growth is what a product reduces)
+        let g = self.den.gcd(&o.den);
+        let (fa, fb) = (&o.den / &g, &self.den / &g);
+        let num = self
+            .num
+            .iter()
+            .zip(&o.num)
+            .map(|(a, b)| a * &fa + b * &fb)
+            .collect();
         Multiquad {
-            squares: self.squares.clone(),
-            coeffs: self
-                .coeffs
-                .iter()
-                .zip(&o.coeffs)
-                .map(|(a, b)| a + b)
-                .collect(),
+            field: self.field.clone(),
+            num,
+            den: fa * &self.den,
         }
     }
 }
@@ -153,8 +212,9 @@ impl Neg for &Multiquad {
     type Output = Multiquad;
     fn neg(self) -> Multiquad {
         Multiquad {
-            squares: self.squares.clone(),
-            coeffs: self.coeffs.iter().map(|a| -a).collect(),
+            field: self.field.clone(),
+            num: self.num.iter().map(|a| -a).collect(),
+            den: self.den.clone(),
         }
     }
 }
@@ -162,10 +222,11 @@ impl Neg for &Multiquad {
 impl Mul for &Multiquad {
     type Output = Multiquad;
     fn mul(self, o: &Multiquad) -> Multiquad {
-        debug_assert!(Rc::ptr_eq(&self.squares, &o.squares));
+        debug_assert!(Rc::ptr_eq(&self.field, &o.field));
         Multiquad {
-            squares: self.squares.clone(),
-            coeffs: product(&self.coeffs, &o.coeffs, &self.squares),
+            field: self.field.clone(),
+            num: product(&self.num, &o.num, &self.field.integers),
+            den: &self.den * &o.den,
         }
     }
 }

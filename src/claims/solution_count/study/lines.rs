@@ -22,7 +22,7 @@ use num_rational::BigRational;
 use num_traits::{Signed, Zero};
 
 use super::{constant_of, RationalScene};
-use crate::algebra::{rat, Multiquad, Poly, UPoly};
+use crate::algebra::{rat, Multiquad, MultiquadField, Poly, UPoly};
 
 type M2 = [[BigRational; 2]; 2];
 type V2 = [Multiquad; 2];
@@ -105,7 +105,7 @@ fn form(n: &M2) -> (M2, BigRational) {
 fn null_lines(
     f: &M2,
     disc: &BigRational,
-    field: &Rc<[BigRational]>,
+    field: &Rc<MultiquadField>,
     root: usize,
 ) -> Option<Vec<V2>> {
     let c = |x: &BigRational| Multiquad::constant(field, x.clone());
@@ -223,19 +223,19 @@ impl Choice {
     }
 }
 
-/// Whether `n / d` is a root of `p` (d ≠ 0): Σ cₖ nᵏ d^(deg − k) = 0.
+/// Whether `n / d` is a root of `p` (d ≠ 0): Σ cₖ nᵏ d^(deg − k) = 0, by Horner's rule in
+/// homogeneous form (2·deg products, not deg²).
 fn is_root(p: &UPoly, n: &Multiquad, d: &Multiquad) -> bool {
-    let deg = p.degree().unwrap_or(0);
     let f = n.squares();
-    let power =
-        |x: &Multiquad, k: usize| (0..k).fold(Multiquad::constant(f, rat(1, 1)), |s, _| &s * x);
-    let sum = p
-        .coeffs()
-        .iter()
-        .enumerate()
-        .fold(Multiquad::constant(f, rat(0, 1)), |s, (k, c)| {
-            &s + &(&power(n, k) * &power(d, deg - k)).scale(c)
-        });
+    let Some((top, rest)) = p.coeffs().split_last() else {
+        return true;
+    };
+    let mut d_power = Multiquad::constant(f, rat(1, 1));
+    let mut sum = Multiquad::constant(f, top.clone());
+    for c in rest.iter().rev() {
+        d_power = &d_power * d;
+        sum = &(&sum * n) + &d_power.scale(c);
+    }
     sum.is_zero()
 }
 

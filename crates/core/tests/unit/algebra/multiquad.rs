@@ -43,3 +43,25 @@ fn a_dependent_basis_still_finds_zero() {
     );
     assert_eq!(x.scale(&rat(3, 1)).sign(), Equal);
 }
+
+#[test]
+fn a_rational_generator_and_a_sum_over_unequal_denominators() {
+    // √(2/3) = 0.816496…, kept as √6 / 3; its square is 2/3 exactly
+    let f = Multiquad::field(vec![rat(2, 3)]);
+    let r = Multiquad::root(&f, 0);
+    assert!((&(&r * &r) - &Multiquad::constant(&f, rat(2, 3))).is_zero());
+    assert_eq!(
+        (&r - &Multiquad::constant(&f, rat(8164, 10000))).sign(),
+        Greater
+    );
+    assert_eq!(
+        (&r - &Multiquad::constant(&f, rat(8165, 10000))).sign(),
+        Less
+    );
+    // 1/6 + √(2/3)/4 − (1/6 + √(2/3)/4) over denominators 6 and 12
+    let x = &Multiquad::constant(&f, rat(1, 6)) + &r.scale(&rat(1, 4));
+    assert_eq!(
+        x,
+        &r.scale(&rat(3, 12)) + &Multiquad::constant(&f, rat(2, 12))
+    );
+}
