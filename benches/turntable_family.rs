@@ -19,6 +19,14 @@ use orthocheck::sfm::{
 };
 use rand::Rng;
 
+/// The adjustment alone: the peers compute no standard errors.
+fn loop_only() -> BundleOptions {
+    BundleOptions {
+        standard_errors: false,
+        ..BundleOptions::default()
+    }
+}
+
 struct Made {
     obs: Observations,
     truth: Reconstruction,
@@ -107,7 +115,7 @@ fn main() {
         let band = ((m.elevation - 10.0) / 20.0).floor().clamp(0.0, 2.0) as usize;
         let cell = &mut table[band][m.longest - 2];
         cell.0 += 1;
-        let truth = bundle_adjust(&m.obs, &m.truth, &BundleOptions::default());
+        let truth = bundle_adjust(&m.obs, &m.truth, &loop_only());
         let best = truth.ok().and_then(|a| a.report.costs.last().copied());
         match reconstruct(&m.obs, &Options::default()) {
             Ok(o) => {

@@ -76,10 +76,14 @@ fn squared(f: &[Vector2<f64>; 4]) -> [f64; 3] {
     ]
 }
 
-/// The Appendix A quadratic at c²: F₁ − F₂ gives a² = p b² + q c² + r; substituted into
-/// F₁, A b⁴ + B b² + C = 0. Returns (A, B, C, p, s) with a² = p b² + s; `None` when F₁ − F₂
-/// has no a² term.
-fn quadratic_at(f1: &[Vector2<f64>; 4], f2: &[Vector2<f64>; 4], c2: f64) -> Option<[f64; 5]> {
+/// The Appendix A quadratic as a function of c²: F₁ − F₂ gives a² = p b² + q c² + r;
+/// substituted into F₁, A b⁴ + B b² + C = 0. The function returns (A, B, C, p, s) with
+/// a² = p b² + s; `None` when F₁ − F₂ has no a² term. The frames' coefficients are computed
+/// once, for scans over c².
+fn quadratic_in(
+    f1: &[Vector2<f64>; 4],
+    f2: &[Vector2<f64>; 4],
+) -> Option<impl Fn(f64) -> [f64; 5]> {
     let (g1, g2) = (
         FrameCoefficients::new(squared(f1)),
         FrameCoefficients::new(squared(f2)),
@@ -88,17 +92,23 @@ fn quadratic_at(f1: &[Vector2<f64>; 4], f2: &[Vector2<f64>; 4], c2: f64) -> Opti
     if d[0] == 0.0 {
         return None;
     }
-    let (p, s) = (-d[1] / d[0], (-d[2] * c2 - k) / d[0]);
-    let a = p * p - 2.0 * p + 1.0;
-    let b = 2.0 * p * s - 2.0 * s - 2.0 * c2 - 2.0 * p * c2 + 2.0 * g1.alpha * p + 2.0 * g1.beta;
-    let c = s * s + c2 * c2 - 2.0 * s * c2 + g1.k + 2.0 * g1.alpha * s + 2.0 * g1.gamma * c2;
-    Some([a, b, c, p, s])
+    Some(move |c2: f64| {
+        let (p, s) = (-d[1] / d[0], (-d[2] * c2 - k) / d[0]);
+        let a = p * p - 2.0 * p + 1.0;
+        let b =
+            2.0 * p * s - 2.0 * s - 2.0 * c2 - 2.0 * p * c2 + 2.0 * g1.alpha * p + 2.0 * g1.beta;
+        let c = s * s + c2 * c2 - 2.0 * s * c2 + g1.k + 2.0 * g1.alpha * s + 2.0 * g1.gamma * c2;
+        [a, b, c, p, s]
+    })
 }
 
 /// Δ_b = B² − 4AC of the Appendix A quadratic at c², in floating point (NaN when the
 /// quadratic does not exist).
 pub fn float_delta_b(f1: &[Vector2<f64>; 4], f2: &[Vector2<f64>; 4], c2: f64) -> f64 {
-    quadratic_at(f1, f2, c2).map_or(f64::NAN, |[a, b, c, _, _]| b * b - 4.0 * a * c)
+    quadratic_in(f1, f2).map_or(f64::NAN, |q| {
+        let [a, b, c, _, _] = q(c2);
+        b * b - 4.0 * a * c
+    })
 }
 
 /// b² from the Appendix A quadratic at a given c² (both roots when real) and the a² that go
@@ -108,16 +118,28 @@ pub fn b_squared(
     f2: &[Vector2<f64>; 4],
     c2: f64,
 ) -> Option<[(f64, f64); 2]> {
-    let [a, b, c, p, s] = quadratic_at(f1, f2, c2)?;
-    let disc = b * b - 4.0 * a * c;
-    if disc < 0.0 || a == 0.0 {
-        return None;
-    }
-    let root = |sign: f64| {
-        let y = (-b + sign * disc.sqrt()) / (2.0 * a);
-        (y, p * y + s)
-    };
-    Some([root(-1.0), root(1.0)])
+    b_squared_in(f1, f2)?(c2)
+}
+
+/// [`b_squared`] as a function of c², the frames' coefficients computed once (`None` when
+/// F₁ − F₂ has no a² term).
+pub fn b_squared_in(
+    f1: &[Vector2<f64>; 4],
+    f2: &[Vector2<f64>; 4],
+) -> Option<impl Fn(f64) -> Option<[(f64, f64); 2]>> {
+    let q = quadratic_in(f1, f2)?;
+    Some(move |c2: f64| {
+        let [a, b, c, p, s] = q(c2);
+        let disc = b * b - 4.0 * a * c;
+        if disc < 0.0 || a == 0.0 {
+            return None;
+        }
+        let root = |sign: f64| {
+            let y = (-b + sign * disc.sqrt()) / (2.0 * a);
+            (y, p * y + s)
+        };
+        Some([root(-1.0), root(1.0)])
+    })
 }
 
 /// The paper's test for frames of P, Q, R, T (in that order) at one c, for each sign of b

@@ -39,6 +39,9 @@ pub struct BundleOptions {
     /// minimised by iteratively reweighted least squares: weight 1 within the corner, k/‖r‖
     /// beyond it; `None`: least squares.
     pub huber: Option<f64>,
+    /// Whether to compute each point's standard errors at the optimum
+    /// ([`BundleReport::points_std`]); they cost about as much as the adjustment itself.
+    pub standard_errors: bool,
 }
 
 impl Default for BundleOptions {
@@ -46,6 +49,7 @@ impl Default for BundleOptions {
         BundleOptions {
             max_iterations: MAX_ITERATIONS,
             huber: None,
+            standard_errors: true,
         }
     }
 }
@@ -55,7 +59,7 @@ impl BundleOptions {
     pub fn with(o: &super::Options) -> Self {
         BundleOptions {
             max_iterations: o.max_iterations,
-            huber: None,
+            ..BundleOptions::default()
         }
     }
 }
@@ -360,6 +364,23 @@ fn predicted(n: &Normal, dc: &[Vec5], dp: &[Vector3<f64>], lambda: f64) -> f64 {
     (c + p) / 2.0
 }
 
+/// Each point's standard errors at the optimum `state` (`sfm::covariance`), in input units.
+fn standard_errors(
+    by_point: &ByPoint,
+    state: &State,
+    huber: Option<f64>,
+    scale: f64,
+) -> Option<Vec<Vector3<f64>>> {
+    let frames_of: Vec<Vec<usize>> = by_point
+        .iter()
+        .map(|l| l.iter().map(|(f, _)| *f).collect())
+        .collect();
+    let at_optimum = normal(by_point, state, huber);
+    let squares = cost(by_point, state, None);
+    super::covariance::points_std(&at_optimum, &frames_of, state, squares)
+        .map(|v| v.into_iter().map(|x| x * scale).collect())
+}
+
 /// Refine `start` (a reconstruction of `obs`' points and frames, in its units) by
 /// Levenberg–Marquardt with Nielsen's damping update. It stops when a step lowers the cost
 /// by no more than its rounding (4ε·cost: the cost is a sum of squares, each rounded to about
@@ -398,14 +419,9 @@ pub fn bundle_adjust(
         ));
     }
     let (state, mut report) = levenberg_marquardt(&by_point, state, options.max_iterations, huber)?;
-    let frames_of: Vec<Vec<usize>> = by_point
-        .iter()
-        .map(|l| l.iter().map(|(f, _)| *f).collect())
-        .collect();
-    let at_optimum = normal(&by_point, &state, huber);
-    let squares = cost(&by_point, &state, None);
-    report.points_std = super::covariance::points_std(&at_optimum, &frames_of, &state, squares)
-        .map(|v| v.into_iter().map(|x| x * units.scale).collect());
+    if options.standard_errors {
+        report.points_std = standard_errors(&by_point, &state, huber, units.scale);
+    }
     let s2 = units.scale * units.scale;
     report.costs.iter_mut().for_each(|c| *c *= s2);
     let mut rec = unit_start;

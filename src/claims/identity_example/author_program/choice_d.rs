@@ -170,10 +170,11 @@ fn minimum(
     let a = |f: &[Vector2<f64>; 4]| [f[3], f[1], f[2], f[0]];
     let (a1, a2) = (a(f1), a(f2));
     let step = (1e8_f64).ln() / (GRID - 1) as f64;
+    let at = crate::derivations::identity::b_squared_in(&a1, &a2)?;
     (0..GRID)
         .filter_map(|i| {
             let x = lo * (1.0 + 1e-6 * (step * i as f64).exp());
-            let (b2, g2) = crate::derivations::identity::b_squared(&a1, &a2, x)?[root];
+            let (b2, g2) = at(x)?[root];
             Some((x, if g { g2 } else { b2 }))
         })
         .min_by(|u, v| u.1.total_cmp(&v.1))

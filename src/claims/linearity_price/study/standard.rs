@@ -22,7 +22,11 @@ pub fn squares(tracks: &Tracks, frames: usize, refine: bool) -> Option<Vec<f64>>
         bundle_adjust(
             &Observations::from_tracks(&t),
             &start,
-            &BundleOptions::default(),
+            // only the body is read
+            &BundleOptions {
+                standard_errors: false,
+                ..BundleOptions::default()
+            },
         )
         .ok()?
         .reconstruction
