@@ -208,14 +208,23 @@ pub fn paper_tests(f1: &[Vector2<f64>; 4], f2: &[Vector2<f64>; 4], c: f64) -> Ve
     out
 }
 
+/// 1.001ⁱ as `powi` gives it, tabulated once: [`smallest_c`] scans the same grid for every
+/// assignment of every scene.
+fn grid_step(i: i32) -> f64 {
+    static STEPS: std::sync::LazyLock<Vec<f64>> =
+        std::sync::LazyLock::new(|| (0..4610).map(|i| 1.001_f64.powi(i)).collect());
+    STEPS[i as usize]
+}
+
 /// The smallest c the paper allows, to a relative step of 10⁻³: RP at least its longest
 /// projection, then the first c on the grid start·1.001ⁱ for which some b is real with a and b
 /// at least their longest projections. `None` if none up to 100 times the projection.
 pub fn smallest_c(f1: &[Vector2<f64>; 4], f2: &[Vector2<f64>; 4]) -> Option<f64> {
     let (p1, p2) = (squared(f1), squared(f2));
     let start = p1[2].max(p2[2]).sqrt();
-    (0..4610).map(|i| start * 1.001_f64.powi(i)).find(|&c| {
-        b_squared(f1, f2, c * c).is_some_and(|roots| {
+    let at = b_squared_in(f1, f2)?;
+    (0..4610).map(|i| start * grid_step(i)).find(|&c| {
+        at(c * c).is_some_and(|roots| {
             roots
                 .iter()
                 .any(|&(b2, a2)| b2 >= p1[1].max(p2[1]) && a2 >= p1[0].max(p2[0]))
