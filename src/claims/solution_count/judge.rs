@@ -45,10 +45,18 @@ fn ratio_verdict(printed: usize, computed: Option<usize>) -> Verdict {
 
 /// Run the case: the three-point and four-point counts, then the literature's ratios.
 pub(super) fn results(b: &ResultBuilder, case: &SolutionCountCase) -> Result<Vec<ClaimResult>> {
-    let three = solution_count::p3f3_count(case.instances, case.seed);
-    let four = solution_count::p4f3_count(case.instances, case.seed);
+    // three independent exact studies of the same seeds: at once
+    let (n, seed) = (case.instances, case.seed);
+    let ((three, four), lines) = rayon::join(
+        || {
+            rayon::join(
+                || solution_count::p3f3_count(n, seed),
+                || solution_count::p4f3_count(n, seed),
+            )
+        },
+        || solution_count::lines_first_count(n, seed),
+    );
     let mut out = vec![three_points(b, case, &three), four_points(b, case, &four)];
-    let lines = solution_count::lines_first_count(case.instances, case.seed);
     out.extend(literature(b, case, (&three, &four), &lines));
     Ok(out)
 }

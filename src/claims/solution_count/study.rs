@@ -338,7 +338,9 @@ fn even_part(p: &UPoly) -> UPoly {
 /// Count `instances` seeded three-point scenes (seeds `seed`, `seed + 1`, …) and the
 /// identical-frames degenerate scene.
 pub fn p3f3_count(instances: usize, seed: u64) -> P3f3Count {
+    use rayon::prelude::*;
     let instances = (0..instances as u64)
+        .into_par_iter()
         .filter_map(|t| {
             let s = seed.wrapping_add(t);
             p3f3_instance(&RationalScene::random(3, 3, s), s)

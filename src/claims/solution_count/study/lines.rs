@@ -360,7 +360,9 @@ fn tally(
 /// The lines-first construction at `instances` seeded scenes (seeds `seed`, `seed + 1`, …,
 /// the scenes of [`super::p3f3_count`]).
 pub fn lines_first_count(instances: usize, seed: u64) -> Vec<LinesFirst> {
+    use rayon::prelude::*;
     (0..instances as u64)
+        .into_par_iter()
         .filter_map(|t| {
             let seed = seed.wrapping_add(t);
             let s = RationalScene::random(3, 3, seed);
