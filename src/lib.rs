@@ -5,6 +5,7 @@
 pub mod cases;
 pub mod check;
 pub mod claims;
+mod cli;
 pub mod files;
 pub mod input;
 pub mod mathtext;
@@ -14,4 +15,5 @@ pub mod seeds;
 
 pub use orthocheck_core::{algebra, derivations, error, limits, model, numfmt, sfm, studies};
 
+pub use cli::run_command_line;
 pub use error::{Error, Result};

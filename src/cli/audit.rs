@@ -3,13 +3,13 @@
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
-use orthocheck::check::{ClaimResult, Verdict};
-use orthocheck::claims::audit::{InFull, Shown, Wanted};
-use orthocheck::claims::shared::Place;
-use orthocheck::claims::twofold_squared::TwofoldAudit;
-use orthocheck::claims::{CaseCheck, PaperCase};
-use orthocheck::report::values::quantities_text;
-use orthocheck::{cases, report, Error};
+use crate::check::{ClaimResult, Verdict};
+use crate::claims::audit::{InFull, Shown, Wanted};
+use crate::claims::shared::Place;
+use crate::claims::twofold_squared::TwofoldAudit;
+use crate::claims::{CaseCheck, PaperCase};
+use crate::report::values::quantities_text;
+use crate::{cases, report, Error};
 use serde::Serialize;
 
 use super::{emit, out};
@@ -95,7 +95,7 @@ fn export(loaded: &[PaperCase], a: &Args, dir: &Path) -> Result<(), Error> {
         .iter()
         .map(|s| (s.file.clone(), s.source.clone()))
         .collect();
-    orthocheck::files::write_new_set(dir, &files)?;
+    crate::files::write_new_set(dir, &files)?;
     let mut listing = String::new();
     for s in &scripts {
         listing.push_str(&format!("{}  {}\n", s.id, dir.join(&s.file).display()));
@@ -114,7 +114,7 @@ fn in_full(loaded: &[PaperCase], id: &str) -> Option<Result<InFull, Error>> {
 /// One twofold-squared case in full, the errata list, or the items an id names.
 pub fn run(a: Args) -> Result<(), Error> {
     let origin = cases::CaseOrigin::from_arg(a.cases.as_deref());
-    let audited = orthocheck::claims::audited_kinds();
+    let audited = crate::claims::audited_kinds();
     let source = cases::source_path(a.paper.as_deref());
     // the errata list runs the whole paper; the items need the audited kinds' cases only
     let kinds = match a.markdown {
@@ -127,8 +127,8 @@ pub fn run(a: Args) -> Result<(), Error> {
         return export(loaded, &a, dir);
     }
     if a.markdown {
-        let run = orthocheck::claims::run_paper(&inputs, &|_, _| {})?;
-        let r = orthocheck::report::Report::from_run(run, Default::default());
+        let run = crate::claims::run_paper(&inputs, &|_, _| {})?;
+        let r = crate::report::Report::from_run(run, Default::default());
         out(&report::errata_markdown(&r.claims))?;
         return Ok(());
     }
@@ -139,7 +139,7 @@ pub fn run(a: Args) -> Result<(), Error> {
         return Ok(());
     }
     let wanted = a.id.as_deref().map_or(Wanted::All, Wanted::Id);
-    let mut items: Vec<AuditItem> = orthocheck::claims::audit::audit_all(loaded, wanted)?
+    let mut items: Vec<AuditItem> = crate::claims::audit::audit_all(loaded, wanted)?
         .into_iter()
         .map(|(r, s)| item(&r, s))
         .collect();

@@ -1,9 +1,9 @@
 //! `orthocheck dof`: degrees of freedom (§2.1) and identifiability by Jacobian rank.
 
-use orthocheck::derivations::dof;
+use crate::derivations::dof;
 use std::fmt::Write as _;
 
-use orthocheck::Error;
+use crate::Error;
 
 use super::emit;
 
@@ -59,7 +59,7 @@ pub fn run(a: Args) -> Result<(), Error> {
 
 /// The sizes within `docs/limits.md` before any work starts.
 fn check_limits(a: &Args) -> Result<(), String> {
-    use orthocheck::limits::{at_most, DOF_FRAMES, DOF_GRID, DOF_POINTS, DOF_POINTS_TIMES_FRAMES};
+    use crate::limits::{at_most, DOF_FRAMES, DOF_GRID, DOF_POINTS, DOF_POINTS_TIMES_FRAMES};
     if a.table {
         if a.max_points == 0 || a.max_frames == 0 {
             return Err(
@@ -127,7 +127,7 @@ fn dof_text(r: &dof::Identifiability) -> String {
         n = r.parameters,
         cond = r
             .condition
-            .map_or("- (rank-deficient)".into(), orthocheck::numfmt::sig),
+            .map_or("- (rank-deficient)".into(), crate::numfmt::sig),
         er = r.exact_rank,
         method = r.exact_method.describe(),
         d = r.deficiency,

@@ -2,11 +2,11 @@
 
 use std::path::PathBuf;
 
-use orthocheck::input::PointOrder;
-use orthocheck::studies::family_samples::sample_family;
+use crate::input::PointOrder;
+use crate::studies::family_samples::sample_family;
 use std::fmt::Write as _;
 
-use orthocheck::Error;
+use crate::Error;
 use serde::Serialize;
 
 use super::{emit, in_file, two_frames};
@@ -27,13 +27,13 @@ pub struct Args {
 
 /// Sample the family and print its members.
 pub fn run(a: Args) -> Result<(), Error> {
-    orthocheck::limits::count("--samples", a.samples, orthocheck::limits::FAMILY_SAMPLES)
+    crate::limits::count("--samples", a.samples, crate::limits::FAMILY_SAMPLES)
         .map_err(Error::InvalidInput)?;
     let t = two_frames(&a.input, PointOrder::ByName)?;
-    orthocheck::limits::at_most(
+    crate::limits::at_most(
         "the points × --samples of family",
         t.names.len().saturating_mul(a.samples),
-        orthocheck::limits::FAMILY_POINTS_TIMES_SAMPLES,
+        crate::limits::FAMILY_POINTS_TIMES_SAMPLES,
     )
     .map_err(|m| {
         in_file(
@@ -62,7 +62,7 @@ struct FamilyMember {
 /// The family as shown: names with coordinates.
 fn family_view(
     names: &[String],
-    members: &[orthocheck::derivations::two_frames::Member],
+    members: &[crate::derivations::two_frames::Member],
 ) -> Vec<FamilyMember> {
     members
         .iter()
@@ -80,7 +80,7 @@ fn family_view(
 
 /// `orthocheck family` as text.
 fn family_text(members: &[FamilyMember]) -> String {
-    use orthocheck::numfmt::{below, sig, sig_list};
+    use crate::numfmt::{below, sig, sig_list};
     let mut s = String::from(
         "members of the family of bodies both frames allow (frame 1's camera coordinates; the depth is fixed up to a shift)\n",
     );

@@ -3,10 +3,10 @@
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
+use crate::derivations::identity;
+use crate::input::PointOrder;
+use crate::Error;
 use clap::ValueEnum;
-use orthocheck::derivations::identity;
-use orthocheck::input::PointOrder;
-use orthocheck::Error;
 use serde::Serialize;
 
 use super::{emit, in_file, two_frames};
@@ -64,7 +64,7 @@ impl From<IdentifyMethod> for identity::IdentifyMethod {
 
 /// Rank the assignments of frame 2's points to frame 1's, print the best `top` by name.
 pub fn run(a: Args) -> Result<(), Error> {
-    orthocheck::limits::count("--top", a.top, orthocheck::limits::IDENTIFY_TOP)
+    crate::limits::count("--top", a.top, crate::limits::IDENTIFY_TOP)
         .map_err(Error::InvalidInput)?;
     let t = two_frames(&a.input, PointOrder::AsListed)?;
     check_size(&a, t.frames[0].len()).map_err(|m| in_file(&a.input, Error::InvalidInput(m)))?;
@@ -117,7 +117,7 @@ struct Match {
 /// Frame 2's point labels: the names a CSV file gives them (and `true`), else `#1`, `#2`, …
 /// by position (and `false`).
 fn frame2_labels(path: &Path, n: usize) -> Result<(Vec<String>, bool), Error> {
-    let listed = orthocheck::input::listed_names(path)?;
+    let listed = crate::input::listed_names(path)?;
     match listed.and_then(|frames| frames.into_iter().nth(1)) {
         Some(names) if names.len() == n => Ok((names, true)),
         _ => Ok(((1..=n).map(|k| format!("#{k}")).collect(), false)),
@@ -141,7 +141,7 @@ fn pairs(frame1: &[String], frame2: &[String], indices: &[usize]) -> Vec<(String
 /// `identify` as text: the method, the assignments as `P→X3 Q→X1 …` (frame-1 point →
 /// frame-2 point), then the best full correspondence.
 fn identify_text(n: &Named, method: &str, named: bool) -> String {
-    use orthocheck::numfmt::sig;
+    use crate::numfmt::sig;
     let r = n.identified;
     let arrows = |indices: &[usize]| -> String {
         pairs(n.frame1_points, n.frame2_points, indices)
@@ -181,7 +181,7 @@ fn identify_text(n: &Named, method: &str, named: bool) -> String {
 
 /// The points per frame within the method's limit (or `--max-points`), before any work.
 fn check_size(a: &Args, n: usize) -> Result<(), String> {
-    use orthocheck::limits::{
+    use crate::limits::{
         at_most, IDENTIFY_POINTS_EPIPOLAR, IDENTIFY_POINTS_FIVE, IDENTIFY_POINTS_FOUR,
     };
     let (name, limit, growth) = match a.method {

@@ -2,11 +2,11 @@
 
 use std::path::PathBuf;
 
-use orthocheck::derivations::identity;
-use orthocheck::input::PointOrder;
+use crate::derivations::identity;
+use crate::input::PointOrder;
 use std::fmt::Write as _;
 
-use orthocheck::Error;
+use crate::Error;
 use serde::Serialize;
 
 use super::{emit, in_file, two_frames};
@@ -38,10 +38,10 @@ pub fn run(a: Args) -> Result<(), Error> {
         )));
     }
     let t = two_frames(&a.input, PointOrder::ByName)?;
-    orthocheck::limits::at_most(
+    crate::limits::at_most(
         "the number of points per frame of membership",
         t.names.len(),
-        orthocheck::limits::MEMBERSHIP_POINTS,
+        crate::limits::MEMBERSHIP_POINTS,
     )
     .map_err(|m| in_file(&a.input, Error::InvalidInput(m)))?;
     if let Some(d) = identity::degeneracy(&t.frames[0], &t.frames[1]) {
@@ -63,7 +63,7 @@ pub fn run(a: Args) -> Result<(), Error> {
             &a.input,
             Error::InvalidInput(format!(
                 "{d} (tolerance {}){hint}",
-                orthocheck::numfmt::sig(tolerance)
+                crate::numfmt::sig(tolerance)
             )),
         ));
     }
@@ -94,7 +94,7 @@ struct MemberRow {
 
 /// `orthocheck membership` as text.
 fn membership_text(rows: &[MemberRow], tolerance: f64, from_data: bool) -> String {
-    use orthocheck::numfmt::sig;
+    use crate::numfmt::sig;
     let mut s = format!(
         "members: epipolar distance at most {} of the image size{}\n",
         sig(tolerance),

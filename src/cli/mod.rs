@@ -1,10 +1,13 @@
-//! The subcommands, one file each: its argument struct and one `run`.
+//! The command line: the subcommands, one file each (its argument struct and one `run`), and
+//! [`run_command_line`], the whole of `main`.
 //!
-//! The command line lives in the binary crate, not in the library: argument parsing (clap),
-//! progress on standard error and printing are the binary's business, so the library carries
-//! no clap types and never prints. A `run` only validates its arguments, calls the library
-//! and prints through the `report` renderers (`solve`, `identify` and `noise` lay out their
-//! own text tables); it computes nothing itself.
+//! It is a private module of the library, on the top floor: no other module names it, the
+//! library's public items carry no clap types, and only this module prints. It lives here, not
+//! in the binary, because a release build compiles the generic code a crate instantiates in
+//! that crate (case loading, serialisation, the claim runner): in the binary all of it was
+//! compiled a second time, the longest step of a cold build. A `run` only validates its
+//! arguments, calls the library and prints through the `report` renderers (`solve`,
+//! `identify` and `noise` lay out their own text tables); it computes nothing itself.
 
 mod audit;
 mod dof;
@@ -12,7 +15,7 @@ mod family;
 mod identify;
 mod membership;
 mod noise;
-pub mod progress;
+mod progress;
 mod reconstruct;
 mod report;
 mod solve;
@@ -20,11 +23,50 @@ mod synth;
 
 use std::path::Path;
 
-use clap::Subcommand;
-use orthocheck::error::InputLocation;
-use orthocheck::input::{load_tracks, PointOrder};
-use orthocheck::model::Tracks;
-use orthocheck::Error;
+use std::io::Write as _;
+use std::process::ExitCode;
+
+use crate::error::InputLocation;
+use crate::input::{load_tracks, PointOrder};
+use crate::model::Tracks;
+use crate::Error;
+use clap::{Parser, Subcommand};
+
+#[derive(Parser)]
+#[command(
+    name = "orthocheck",
+    version,
+    about = "Machine-checked reproduction of Kłopotek's orthographic structure-from-motion paper"
+)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+/// The exit code of a failed command.
+fn exit_code(e: &Error) -> u8 {
+    match e {
+        Error::Numerical(_) | Error::Write { .. } | Error::Unverified(_) | Error::Warned(_) => 1,
+        _ => 2,
+    }
+}
+
+/// The `orthocheck` command: parse the process's arguments, run the subcommand, say what
+/// failed on standard error and return the exit code (0 ran, 1 a check could not be carried
+/// out or a result came with warnings, 2 bad input or usage, 130 interrupted).
+pub fn run_command_line() -> ExitCode {
+    let cli = Cli::parse();
+    progress::on_interrupt_stop();
+    match cli.command.run() {
+        // a reader that stopped reading is the Unix way of saying "enough"
+        Ok(()) | Err(Error::ClosedOutput) => ExitCode::SUCCESS,
+        Err(e) => {
+            // a closed standard error leaves the exit code to say it
+            let _ = writeln!(std::io::stderr(), "error: {e}");
+            ExitCode::from(exit_code(&e))
+        }
+    }
+}
 
 /// Every subcommand.
 #[derive(Subcommand)]
@@ -158,9 +200,9 @@ fn emit<T: serde::Serialize>(
 
 /// Print `value` as pretty JSON through the output guard: serde_json writes a non-finite
 /// number as `null`, which the text guard cannot tell from an honest `null`, so the value is
-/// walked first ([`orthocheck::report::finite`]) and a NaN or inf is an error (exit 1).
+/// walked first ([`crate::report::finite`]) and a NaN or inf is an error (exit 1).
 fn json_out<T: serde::Serialize>(value: &T) -> Result<(), Error> {
-    if let Some(bad) = orthocheck::report::finite::first_non_finite(value) {
+    if let Some(bad) = crate::report::finite::first_non_finite(value) {
         return Err(non_finite(&bad.to_string()));
     }
     out(&format!("{}\n", to_json(value)))
@@ -178,7 +220,7 @@ fn non_finite(what: &str) -> Error {
 /// this command, nothing is printed or written (exit 1). It counts numbers as they are
 /// formatted, so a point named `inf` or `NaN` passes.
 fn guard_formatted() -> Result<(), Error> {
-    match orthocheck::numfmt::non_finite_formatted() {
+    match crate::numfmt::non_finite_formatted() {
         0 => Ok(()),
         1 => Err(non_finite("one was formatted")),
         n => Err(non_finite(&format!("{n} were formatted"))),
@@ -240,7 +282,7 @@ fn in_file(path: &Path, e: Error) -> Error {
 /// name is refused with [`would_overwrite`], exit 2; a failed write is exit 1).
 fn write_new(path: &Path, text: &str) -> Result<(), Error> {
     guard_formatted()?;
-    orthocheck::files::write_new(path, text, would_overwrite)
+    crate::files::write_new(path, text, would_overwrite)
 }
 
 /// The refusal to write over an existing file: usage, not a failure (exit 2).
@@ -258,9 +300,9 @@ fn would_overwrite(path: &Path) -> Error {
 mod tests {
     #[test]
     fn the_output_guard_refuses_once_a_non_finite_number_was_formatted() {
-        let before = orthocheck::numfmt::non_finite_formatted();
-        let text = orthocheck::numfmt::sig(f64::NAN);
-        assert!(orthocheck::numfmt::non_finite_formatted() > before);
+        let before = crate::numfmt::non_finite_formatted();
+        let text = crate::numfmt::sig(f64::NAN);
+        assert!(crate::numfmt::non_finite_formatted() > before);
         let refused = super::guard_formatted().unwrap_err().to_string();
         assert!(refused.contains("non-finite"), "{text}: {refused}");
     }

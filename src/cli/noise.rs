@@ -3,11 +3,11 @@
 use std::fmt::Write as _;
 use std::path::PathBuf;
 
+use crate::claims::rerun::{ModelChoice, NoiseRequest, RequestError};
+use crate::claims::{CaseCheck, PaperCase};
+use crate::derivations::noise::LevelSummary;
+use crate::{cases, Error};
 use clap::ValueEnum;
-use orthocheck::claims::rerun::{ModelChoice, NoiseRequest, RequestError};
-use orthocheck::claims::{CaseCheck, PaperCase};
-use orthocheck::derivations::noise::LevelSummary;
-use orthocheck::{cases, Error};
 
 use super::emit;
 
@@ -34,7 +34,7 @@ pub struct Args {
     #[arg(long)]
     cases: Option<PathBuf>,
     /// Largest trial count accepted (docs/limits.md); memory stays fixed, time grows.
-    #[arg(long, allow_negative_numbers = true, default_value_t = orthocheck::limits::NOISE_TRIALS)]
+    #[arg(long, allow_negative_numbers = true, default_value_t = crate::limits::NOISE_TRIALS)]
     max_trials: usize,
     /// JSON output.
     #[arg(long)]
@@ -110,7 +110,7 @@ fn noise_ids(all: &[PaperCase]) -> String {
 /// `noise` as text: one table per level and model, a row per metric, a column per quantile
 /// and the mean; each column as wide as its widest cell, two spaces apart.
 fn noise_text(case: &str, rows: &[LevelSummary]) -> String {
-    use orthocheck::numfmt::sig;
+    use crate::numfmt::sig;
     let pct = |x: f64| format!("{}%", sig(100.0 * x));
     let mut t = format!("noise study {case}: relative errors against the truth\n");
     for r in rows {
@@ -175,7 +175,7 @@ fn columns(table: &[Vec<String>]) -> String {
 
 /// Trials, levels and ε within `docs/limits.md` before the cases are read.
 fn check_limits(a: &Args) -> Result<(), String> {
-    use orthocheck::limits::{at_most, count, noise_level, NOISE_LEVELS};
+    use crate::limits::{at_most, count, noise_level, NOISE_LEVELS};
     if let Some(t) = a.trials {
         count("--trials", t, a.max_trials).map_err(|m| format!("{m}; --max-trials raises it"))?;
     }

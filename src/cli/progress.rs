@@ -22,7 +22,7 @@ pub const INTERRUPTED: i32 = 130;
 /// EFBIG and its error names the file, instead of the signal ending the process silently.
 pub fn on_interrupt_stop() {
     let _ = ctrlc::set_handler(|| {
-        orthocheck::files::remove_temporaries();
+        crate::files::remove_temporaries();
         // a closed standard error must not keep the command from stopping
         let _ = writeln!(std::io::stderr(), "\ninterrupted");
         std::process::exit(INTERRUPTED);

@@ -6,10 +6,10 @@
 
 use std::path::PathBuf;
 
-use orthocheck::input::load_observations;
-use orthocheck::sfm::robust::{RansacOptions, DEFAULT_SEED};
-use orthocheck::sfm::{output, reconstruct, Options};
-use orthocheck::Error;
+use crate::input::load_observations;
+use crate::sfm::robust::{RansacOptions, DEFAULT_SEED};
+use crate::sfm::{output, reconstruct, Options};
+use crate::Error;
 
 use super::{in_file, json_out, out};
 
@@ -54,18 +54,18 @@ pub fn run(a: Args) -> Result<(), Error> {
     }
     let obs = load_observations(&a.input)?;
     if a.robust {
-        orthocheck::limits::at_most(
+        crate::limits::at_most(
             "points × frames of --robust",
             obs.names.len().saturating_mul(obs.frames.len()),
-            orthocheck::limits::RANSAC_OBSERVATIONS,
+            crate::limits::RANSAC_OBSERVATIONS,
         )
         .map_err(|m| in_file(&a.input, Error::InvalidInput(m)))?;
     }
     let side = (2 * obs.frames.len()).min(obs.names.len());
-    orthocheck::limits::at_most(
+    crate::limits::at_most(
         "the Gram matrix side min(2 × frames, points)",
         side,
-        orthocheck::limits::RECONSTRUCT_GRAM,
+        crate::limits::RECONSTRUCT_GRAM,
     )
     .map_err(|m| in_file(&a.input, Error::InvalidInput(m)))?;
     let robust = a.robust.then(|| RansacOptions {

@@ -5,8 +5,8 @@ use std::io::{IsTerminal, Write as _};
 use std::path::PathBuf;
 use std::time::Instant;
 
-use orthocheck::claims::CaseCheck;
-use orthocheck::{cases, provenance, Error};
+use crate::claims::CaseCheck;
+use crate::{cases, provenance, Error};
 
 /// Arguments of `report`.
 #[derive(clap::Args)]
@@ -31,7 +31,7 @@ pub fn run(args: Args) -> Result<(), Error> {
     let inputs = cases::load_inputs::<CaseCheck>(&origin, source.as_deref())?;
     let all = &inputs.cases;
     // an unwritable folder is found before the report is computed
-    orthocheck::report::prepare_output_dir(&args.out)?;
+    crate::report::prepare_output_dir(&args.out)?;
     let started = Instant::now();
     // only for a run that takes long enough to wonder about
     let show = || std::io::stderr().is_terminal() && started.elapsed().as_secs_f64() > 1.0;
@@ -48,8 +48,8 @@ pub fn run(args: Args) -> Result<(), Error> {
     };
     let mut prov = provenance::report_provenance();
     prov.transcription = inputs.transcription_sentence();
-    let run = orthocheck::claims::run_paper(&inputs, &progress)?;
-    let r = orthocheck::report::Report::from_run(run, prov).with_paper(inputs.paper.clone());
+    let run = crate::claims::run_paper(&inputs, &progress)?;
+    let r = crate::report::Report::from_run(run, prov).with_paper(inputs.paper.clone());
     if show() {
         let _ = writeln!(std::io::stderr());
     }
@@ -60,13 +60,12 @@ pub fn run(args: Args) -> Result<(), Error> {
             .path
             .file_name()
             .map_or_else(|| "paper.tex".into(), |n| n.to_string_lossy().into_owned());
-        let patch =
-            orthocheck::report::errata_patch(&src.text, &name, &inputs.corrections, &r.claims)?;
+        let patch = crate::report::errata_patch(&src.text, &name, &inputs.corrections, &r.claims)?;
         files.push(("errata.patch".to_string(), patch));
     }
     // the text guard: a number formatted as `NaN` or `inf` anywhere in the report
     guard_formatted()?;
-    orthocheck::report::write_all_atomic(&args.out, &files)?;
+    crate::report::write_all_atomic(&args.out, &files)?;
     let dir = &args.out;
     out(&format!(
         "wrote {}, {} and {} ({} claims), and {} figures as {}\n",

@@ -3,11 +3,11 @@
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
+use crate::derivations::solver::{solve_tracks, Method, Solution, Solved, Structure};
+use crate::input::{load_observations, load_tracks, PointOrder};
+use crate::numfmt::{below, sig, sig_list};
+use crate::Error;
 use clap::ValueEnum;
-use orthocheck::derivations::solver::{solve_tracks, Method, Solution, Solved, Structure};
-use orthocheck::input::{load_observations, load_tracks, PointOrder};
-use orthocheck::numfmt::{below, sig, sig_list};
-use orthocheck::Error;
 
 use super::{in_file, json_out, non_finite, out};
 
@@ -66,7 +66,7 @@ pub fn run(a: Args) -> Result<(), Error> {
     }
     if a.json {
         // the guard walks what was solved: the JSON built from it would hold `null`s
-        if let Some(bad) = orthocheck::report::finite::first_non_finite(&solved) {
+        if let Some(bad) = crate::report::finite::first_non_finite(&solved) {
             return Err(non_finite(&bad.to_string()));
         }
         json_out(&solve_json(&solved))?;

@@ -3,12 +3,12 @@
 use std::fmt::Write as _;
 use std::path::PathBuf;
 
+use crate::input::{tracks_to_csv, tracks_to_yaml};
+use crate::model::Tracks;
+use crate::numfmt::round_trip;
+use crate::seeds::synthetic;
+use crate::Error;
 use clap::ValueEnum;
-use orthocheck::input::{tracks_to_csv, tracks_to_yaml};
-use orthocheck::model::Tracks;
-use orthocheck::numfmt::round_trip;
-use orthocheck::seeds::synthetic;
-use orthocheck::Error;
 use rand::seq::SliceRandom as _;
 
 use super::{out, write_new};
@@ -112,7 +112,7 @@ pub fn run(a: Args) -> Result<(), Error> {
 
 /// `synth --turntable`: the sequence's observations, with a header naming the truth.
 fn turntable(a: &Args) -> Result<(), Error> {
-    let t = orthocheck::sfm::turntable::Turntable {
+    let t = crate::sfm::turntable::Turntable {
         points: a.points,
         frames: a.frames,
         window: a.window,
@@ -130,8 +130,8 @@ fn turntable(a: &Args) -> Result<(), Error> {
         1,
     );
     let body = match a.format {
-        FormatArg::Yaml => orthocheck::input::observations_to_yaml(&obs),
-        FormatArg::Csv => orthocheck::input::observations_to_csv(&obs),
+        FormatArg::Yaml => crate::input::observations_to_yaml(&obs),
+        FormatArg::Csv => crate::input::observations_to_csv(&obs),
     };
     let text = format!("{header}{body}");
     match &a.out {
@@ -144,7 +144,7 @@ fn turntable(a: &Args) -> Result<(), Error> {
 }
 
 /// The random stream of `--shuffle`: apart from the scene's (`seed`) and its noise's
-/// (`seed + 1`, [`orthocheck::seeds::noise_seed`]), so that shuffling moves no point.
+/// (`seed + 1`, [`crate::seeds::noise_seed`]), so that shuffling moves no point.
 fn shuffle_seed(seed: u64) -> u64 {
     seed.wrapping_add(2)
 }
@@ -152,7 +152,7 @@ fn shuffle_seed(seed: u64) -> u64 {
 /// For every frame after the first, the order it lists the points in: `orders[f][k]` is the
 /// point (index into frame 1's) listed `k`-th in frame `f + 2`.
 fn shuffled_orders(points: usize, frames: usize, seed: u64) -> Vec<Vec<usize>> {
-    let mut g = orthocheck::model::rng(shuffle_seed(seed));
+    let mut g = crate::model::rng(shuffle_seed(seed));
     (1..frames)
         .map(|_| {
             let mut order: Vec<usize> = (0..points).collect();
@@ -229,7 +229,7 @@ fn shuffled_header(
 
 /// The sizes within `docs/limits.md`, and ε in range, before the scene is made.
 fn check_limits(a: &Args) -> Result<(), String> {
-    use orthocheck::limits::{count, SYNTH_FRAMES, SYNTH_POINTS, SYNTH_POINTS_TIMES_FRAMES};
+    use crate::limits::{count, SYNTH_FRAMES, SYNTH_POINTS, SYNTH_POINTS_TIMES_FRAMES};
     count("--points", a.points, SYNTH_POINTS)?;
     count("--frames", a.frames, SYNTH_FRAMES)?;
     count(
@@ -258,25 +258,25 @@ fn check_limits(a: &Args) -> Result<(), String> {
         }
     }
     a.noise
-        .map_or(Ok(()), |e| orthocheck::limits::noise_level("--noise", e))
+        .map_or(Ok(()), |e| crate::limits::noise_level("--noise", e))
 }
 
 /// The comment block `orthocheck synth` writes above the tracks: how to make them again, and
 /// the truth to compare a solve with.
-fn synth_header(scene: &orthocheck::model::Scene, seed: u64, noise: Option<f64>) -> String {
+fn synth_header(scene: &crate::model::Scene, seed: u64, noise: Option<f64>) -> String {
     // The edges among the first points only: a header listing all p(p−1)/2 edges of a large
     // scene would outgrow the tracks themselves (10,000 points: 49,995,000 edges, ~1 GB).
     const LISTED_POINTS: usize = 10;
     let b = &scene.body;
     let p = b.points.len();
     let shown = p.min(LISTED_POINTS);
-    let truth: Vec<String> = orthocheck::derivations::solver::edges(shown)
+    let truth: Vec<String> = crate::derivations::solver::edges(shown)
         .iter()
         .map(|&(i, j)| {
             format!(
                 "{}={}",
-                orthocheck::derivations::solver::edge_name(&b.names[i], &b.names[j]),
-                orthocheck::numfmt::sig(b.squared_distance(i, j))
+                crate::derivations::solver::edge_name(&b.names[i], &b.names[j]),
+                crate::numfmt::sig(b.squared_distance(i, j))
             )
         })
         .collect();
