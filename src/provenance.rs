@@ -4,7 +4,7 @@
 use serde::Serialize;
 
 /// The command that makes the whole report.
-pub const REPORT_COMMAND: &str = "cargo run --release -- report";
+pub const REPORT_COMMAND: &str = "cargo run -- report";
 
 /// The provenance of a report made now from this source tree (the seeds are filled in by
 /// [`crate::report::Report::from_run`]).
