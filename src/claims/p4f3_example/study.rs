@@ -33,10 +33,10 @@ fn frames_of(x: &[f64], points: usize) -> Vec<Vec<[f64; 2]>> {
         .collect()
 }
 
-/// The view residuals of `body` at flat coordinates `x`, in units of their rounding: the
-/// affine camera solves a 3×3 system in XXᵀ, so its error is at most about
-/// κ(XXᵀ) · 64ε · (body size) (condition × unit roundoff × size).
-fn scaled_views(x: &[f64], body: &[Vector3<f64>]) -> Option<Vec<f64>> {
+/// The rounding unit of the view residuals of `body`: the affine camera solves a 3×3 system
+/// in XXᵀ, so its error is at most about κ(XXᵀ) · 64ε · (body size) (condition × unit
+/// roundoff × size). It depends on the body only: a search computes it once.
+fn view_unit(body: &[Vector3<f64>]) -> Option<f64> {
     let p = body.len();
     let centre = body.iter().sum::<Vector3<f64>>() / p as f64;
     let xxt: nalgebra::Matrix3<f64> = body
@@ -45,13 +45,24 @@ fn scaled_views(x: &[f64], body: &[Vector3<f64>]) -> Option<Vec<f64>> {
         .sum();
     let cond = svd_rank(&DMatrix::from_fn(3, 3, |i, j| xxt[(i, j)])).condition?;
     let size = body.iter().map(|v| (v - centre).norm()).fold(1.0, f64::max);
-    let unit = cond * NEGLIGIBLE_ULPS * f64::EPSILON * size;
-    let r: Vec<f64> = frames_of(x, p)
+    Some(cond * NEGLIGIBLE_ULPS * f64::EPSILON * size)
+}
+
+/// The view residuals of `body` at flat coordinates `x`, in units of their rounding `unit`
+/// ([`view_unit`]).
+fn scaled_views(x: &[f64], body: &[Vector3<f64>], unit: f64) -> Option<Vec<f64>> {
+    let r: Vec<f64> = frames_of(x, body.len())
         .iter()
         .flat_map(|f| view_residual(body, f))
         .map(|v| v / unit)
         .collect();
     r.iter().all(|v| v.is_finite()).then_some(r)
+}
+
+/// A point of the box where the views of `body` are exact to their rounding.
+fn views_witness(figure_box: &RoundingBox, body: &[Vector3<f64>]) -> Option<Witness> {
+    let unit = view_unit(body)?;
+    reproduce(figure_box, &|x| scaled_views(x, body, unit))
 }
 
 /// The body of the table projected into the figure's box, and how far each square may move.
@@ -75,7 +86,7 @@ pub fn figure_fit(figure_box: &RoundingBox, squares: &[f64], half: &[f64]) -> Fi
         .iter()
         .flat_map(|f| view_residual(&body, f))
         .fold(0.0, |a: f64, v| a.max(v.abs()));
-    let witness = reproduce(figure_box, &|x| scaled_views(x, &body));
+    let witness = views_witness(figure_box, &body);
     let acceptance = (0..squares.len())
         .map(|e| {
             acceptance(&|shift| {
@@ -97,7 +108,7 @@ pub fn figure_fit(figure_box: &RoundingBox, squares: &[f64], half: &[f64]) -> Fi
 /// box: the test of every acceptance and of a named alternative body.
 pub fn reproduces(figure_box: &RoundingBox, squares: &[f64]) -> bool {
     let r = realize(squares, 4);
-    r.realizable && reproduce(figure_box, &|x| scaled_views(x, &r.points)).is_some()
+    r.realizable && views_witness(figure_box, &r.points).is_some()
 }
 
 /// The printed solution against the printed matrix.

@@ -31,7 +31,7 @@ pub use gram::gram;
 pub use interval::Interval;
 pub use lanczos::largest_eigenvalue;
 pub use multiquad::{Multiquad, MultiquadField};
-pub use newton::{min_norm_newton, min_norm_newton_step};
+pub use newton::{min_norm_newton, min_norm_newton_step, min_norm_newton_with};
 pub use parse::parse_decimal;
 pub use perm::{permutations, permutations4};
 pub use poly::{Monomial, Poly};

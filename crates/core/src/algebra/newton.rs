@@ -1,6 +1,6 @@
 //! Minimum-norm Gauss–Newton for underdetermined systems (finding a witness point).
 
-use nalgebra::DVector;
+use nalgebra::{DMatrix, DVector};
 
 /// Find `x` near `x0` with `f(x) ≈ 0` when there are more unknowns than equations: each step
 /// is the minimum-norm solution of the linearised system (Jacobian by central differences
@@ -36,6 +36,20 @@ pub fn min_norm_newton_step(
     max_iter: usize,
     step: f64,
 ) -> Option<(Vec<f64>, f64)> {
+    let jac = |x: &[f64]| super::central_jacobian(f, x, |_, xj| step * xj.abs().max(1.0));
+    min_norm_newton_with(f, &jac, x0, tolerance, max_iter)
+}
+
+/// [`min_norm_newton`] with the Jacobian `jac` of `f` (`None`: undefined there), for a
+/// caller that forms the central differences of [`min_norm_newton_step`] faster than by
+/// evaluating all of `f` at every probe.
+pub fn min_norm_newton_with(
+    f: &dyn Fn(&[f64]) -> Option<Vec<f64>>,
+    jac: &dyn Fn(&[f64]) -> Option<DMatrix<f64>>,
+    x0: &[f64],
+    tolerance: f64,
+    max_iter: usize,
+) -> Option<(Vec<f64>, f64)> {
     let norm = |r: &[f64]| r.iter().fold(0.0_f64, |a, b| a.max(b.abs()));
     let mut x = x0.to_vec();
     let mut r = f(&x)?;
@@ -45,12 +59,12 @@ pub fn min_norm_newton_step(
             break;
         }
         let n = x.len();
-        let Some(jac) = super::central_jacobian(f, &x, |_, xj| step * xj.abs().max(1.0)) else {
+        let Some(jac) = jac(&x) else {
             return Some(best);
         };
-        let rv = DVector::from_vec(r.clone());
+        let rv = DVector::from_column_slice(&r);
         // a bounded SVD: the unbounded one may never converge on badly scaled Jacobians
-        let Some(svd) = jac.clone().try_svd(true, true, 5.0 * f64::EPSILON, 10_000) else {
+        let Some(svd) = jac.try_svd(true, true, 5.0 * f64::EPSILON, 10_000) else {
             return Some(best);
         };
         let Ok(dx) = svd.solve(&rv, 1e-14) else {

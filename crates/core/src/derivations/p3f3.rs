@@ -460,39 +460,59 @@ pub(crate) use crate::algebra::kabsch;
 /// Real solutions (a², b², c²) of three frames given as flat image coordinates
 /// `[x, y]` of P, Q, R per frame (18 numbers), ordered by c².
 pub fn real_solutions_from_coordinates(coords: &[f64]) -> Vec<[f64; 3]> {
+    let (s, n) = real_solutions_at(coords);
+    s[..n].to_vec()
+}
+
+/// [`real_solutions_from_coordinates`] without allocating: the solutions and their number.
+pub fn real_solutions_at(coords: &[f64]) -> ([[f64; 3]; 2], usize) {
+    // PQ, QR, RP of each frame, as `model::squared_lengths` computes them
     let l: [[f64; 3]; 3] = std::array::from_fn(|i| {
-        let pts: Vec<[f64; 2]> = (0..3)
-            .map(|j| [coords[6 * i + 2 * j], coords[6 * i + 2 * j + 1]])
-            .collect();
-        let sq = crate::model::squared_lengths(&pts);
-        [sq[0], sq[1], sq[2]]
+        let p = |j: usize| [coords[6 * i + 2 * j], coords[6 * i + 2 * j + 1]];
+        [(0, 1), (1, 2), (2, 0)].map(|(a, b)| {
+            let (a, b) = (p(a), p(b));
+            (a[0] - b[0]).powi(2) + (a[1] - b[1]).powi(2)
+        })
     });
     let core = solve_core(&l);
-    let mut out: Vec<[f64; 3]> = (0..core.count)
-        .filter(|&k| core.imag[k].iter().all(|v| *v == 0.0))
-        .map(|k| core.squares[k])
-        .collect();
-    out.sort_by(|a, b| a[2].total_cmp(&b[2]));
-    out
+    let mut out = [[0.0; 3]; 2];
+    let mut n = 0;
+    for k in (0..core.count).filter(|&k| core.imag[k].iter().all(|v| *v == 0.0)) {
+        out[n] = core.squares[k];
+        n += 1;
+    }
+    // the stable sort by c² of two
+    if n == 2 && out[0][2].total_cmp(&out[1][2]).is_gt() {
+        out.swap(0, 1);
+    }
+    (out, n)
 }
 
 /// Pair each target with a distinct solution, minimising the largest component difference;
 /// `None` when there are fewer solutions than targets (at most two of each here).
 pub fn match_solutions(solutions: &[[f64; 3]], targets: &[[f64; 3]]) -> Option<Vec<[f64; 3]>> {
+    match_solutions_at(solutions, targets).map(|(m, n)| m[..n].to_vec())
+}
+
+/// [`match_solutions`] without allocating: the paired solutions and their number.
+pub fn match_solutions_at(
+    solutions: &[[f64; 3]],
+    targets: &[[f64; 3]],
+) -> Option<([[f64; 3]; 2], usize)> {
     let dist = |a: &[f64; 3], b: &[f64; 3]| (0..3).map(|i| (a[i] - b[i]).abs()).fold(0.0, f64::max);
     match (solutions.len(), targets.len()) {
-        (_, 0) => Some(Vec::new()),
+        (_, 0) => Some(([[0.0; 3]; 2], 0)),
         (n, 1) if n >= 1 => solutions
             .iter()
             .min_by(|a, b| dist(a, &targets[0]).total_cmp(&dist(b, &targets[0])))
-            .map(|s| vec![*s]),
+            .map(|s| ([*s, [0.0; 3]], 1)),
         (2, 2) => {
             let straight = dist(&solutions[0], &targets[0]).max(dist(&solutions[1], &targets[1]));
             let crossed = dist(&solutions[1], &targets[0]).max(dist(&solutions[0], &targets[1]));
             Some(if straight <= crossed {
-                vec![solutions[0], solutions[1]]
+                ([solutions[0], solutions[1]], 2)
             } else {
-                vec![solutions[1], solutions[0]]
+                ([solutions[1], solutions[0]], 2)
             })
         }
         _ => None,

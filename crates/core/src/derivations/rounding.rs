@@ -1,9 +1,10 @@
 //! Propagating the rounding of printed data: seeded Monte Carlo over the rounding box, and a
 //! witness search for a point of the box that reproduces printed results.
 
+use nalgebra::DMatrix;
 use rand::Rng;
 
-use crate::algebra::min_norm_newton_step;
+use crate::algebra::{min_norm_newton_step, min_norm_newton_with};
 use crate::model::rng;
 
 /// Printed values and their rounding half-widths (0 for values known exactly).
@@ -82,6 +83,24 @@ pub fn witness_step(
     tolerance: f64,
     step: f64,
 ) -> Option<Witness> {
+    witness_with(b, residual, None, tolerance, step)
+}
+
+/// The Jacobian of a witness search's residuals over the box's scaled unknowns (each
+/// coordinate's shift in units of its half-width, the rounded coordinates only); `None`
+/// where it is undefined.
+pub type ScaledJacobian<'a> = &'a dyn Fn(&[f64]) -> Option<DMatrix<f64>>;
+
+/// [`witness_step`] with `jacobian` in place of its central differences: it must give
+/// exactly the central differences of step `step·max(1, |uₖ|)` (for a caller that forms
+/// them without evaluating every residual at every probe).
+pub fn witness_with(
+    b: &RoundingBox,
+    residual: &dyn Fn(&[f64]) -> Option<Vec<f64>>,
+    jacobian: Option<ScaledJacobian>,
+    tolerance: f64,
+    step: f64,
+) -> Option<Witness> {
     let free: Vec<usize> = (0..b.center.len()).filter(|&i| b.half[i] > 0.0).collect();
     // unknowns scaled by their half-widths, so the minimum-norm step is a minimum shift in
     // units of rounding
@@ -93,7 +112,11 @@ pub fn witness_step(
         x
     };
     let f = |u: &[f64]| residual(&embed(u));
-    let (mut u, mut r) = min_norm_newton_step(&f, &vec![0.0; free.len()], tolerance, 60, step)?;
+    let newton = |u0: &[f64], iterations: usize| match jacobian {
+        Some(jac) => min_norm_newton_with(&f, jac, u0, tolerance, iterations),
+        None => min_norm_newton_step(&f, u0, tolerance, iterations, step),
+    };
+    let (mut u, mut r) = newton(&vec![0.0; free.len()], 60)?;
     // The minimum-norm point minimises the shift in the 2-norm; the box is a ∞-norm ball.
     // When that point leaves the box, alternate: clamp into the box, then back onto the
     // solutions by minimum-norm steps (clamping to 0.98 of the box, so that a box whose
@@ -106,7 +129,7 @@ pub fn witness_step(
             break;
         }
         let clamped: Vec<f64> = u.iter().map(|v| v.clamp(-0.98, 0.98)).collect();
-        let Some((v, rv)) = min_norm_newton_step(&f, &clamped, tolerance, 20, step) else {
+        let Some((v, rv)) = newton(&clamped, 20) else {
             break;
         };
         if rv > tolerance {

@@ -6,15 +6,17 @@
 
 use rand::Rng;
 
-use nalgebra::{Rotation3, Vector3};
+use nalgebra::Vector3;
 
 use crate::algebra::{central_jacobian, kabsch};
 use crate::derivations::p3f3::{match_solutions, real_solutions_from_coordinates, solve_core};
 use crate::model::rng;
-use crate::studies::joint_fit::lp_minimax;
+use crate::studies::joint_fit::lp::lp_minimax_problem;
 use crate::studies::rounding::{
     acceptance, cloud_spread, inside, spread, Acceptance, RoundingBox, Witness,
 };
+
+mod fit;
 
 /// Bisection steps when solving a frame's last coordinate: 60 halvings of a box of width
 /// 0.01 leave far less than one ulp.
@@ -65,6 +67,32 @@ pub fn rigidity(body: [f64; 3], q: [f64; 2], r: [f64; 2], s: f64) -> Option<f64>
 /// scan for sign changes and bisection.
 pub fn solve_ry(body: [f64; 3], q: [f64; 2], rx: f64, lo: f64, hi: f64) -> Vec<f64> {
     let mut out = Vec::new();
+    scan_ry(body, q, rx, lo, hi, &mut |y| {
+        out.push(y);
+        false
+    });
+    out
+}
+
+/// The first ry that [`solve_ry`] lists, without the scan beyond it.
+pub fn first_ry(body: [f64; 3], q: [f64; 2], rx: f64, lo: f64, hi: f64) -> Option<f64> {
+    let mut first = None;
+    scan_ry(body, q, rx, lo, hi, &mut |y| {
+        first = Some(y);
+        true
+    });
+    first
+}
+
+/// [`solve_ry`]'s roots in its order, each handed to `found` until it returns `true`.
+fn scan_ry(
+    body: [f64; 3],
+    q: [f64; 2],
+    rx: f64,
+    lo: f64,
+    hi: f64,
+    found: &mut dyn FnMut(f64) -> bool,
+) {
     for s in [1.0, -1.0] {
         let f = |y: f64| rigidity(body, q, [rx, y], s);
         for k in 0..SCAN {
@@ -87,10 +115,11 @@ pub fn solve_ry(body: [f64; 3], q: [f64; 2], rx: f64, lo: f64, hi: f64) -> Vec<f
                     (a, fa) = (m, fm);
                 }
             }
-            out.push(0.5 * (a + b));
+            if found(0.5 * (a + b)) {
+                return;
+            }
         }
     }
-    out
 }
 
 /// What the restricted analysis needs.
@@ -198,8 +227,7 @@ fn draw_frame<R: Rng>(inp: &RestrictedDesign, f: usize, g: &mut R) -> Option<[f6
     );
     let u = |g: &mut R, k: usize| c[k] + g.random_range(-h[k]..=h[k]);
     let (qx, qy, rx) = (u(g, 2), u(g, 3), u(g, 4));
-    let ys = solve_ry(inp.body, [qx, qy], rx, c[5] - h[5], c[5] + h[5]);
-    ys.first().map(|y| [qx, qy, rx, *y])
+    first_ry(inp.body, [qx, qy], rx, c[5] - h[5], c[5] + h[5]).map(|y| [qx, qy, rx, y])
 }
 
 /// Per solution and component, the quantiles of the paired roots of `cloud`.
@@ -219,21 +247,6 @@ fn triangle(body: [f64; 3]) -> Option<[Vector3<f64>; 3]> {
             Vector3::new(rx, ry2.sqrt(), 0.0),
         ]
     })
-}
-
-/// The views of `tri` through the rotation vectors `p` (three per frame), P at the origin.
-fn views(tri: &[Vector3<f64>; 3], p: &[f64]) -> Vec<f64> {
-    p.chunks(3)
-        .flat_map(|w| {
-            let r = Rotation3::new(Vector3::new(w[0], w[1], w[2]));
-            tri.iter()
-                .flat_map(|x| {
-                    let y = r * x;
-                    [y.x, y.y]
-                })
-                .collect::<Vec<f64>>()
-        })
-        .collect()
 }
 
 /// Per frame, the rotation taking the body's triangle onto the exact view at flat
@@ -282,14 +295,9 @@ fn restricted_witness(inp: &RestrictedDesign, seed_views: &[f64]) -> Option<Witn
                 .collect(),
         )
     };
-    let f = |p: &[f64]| {
-        let x = views(&tri, p);
-        let mut r = shifts(&x);
-        r.extend(deviations(&x)?);
-        r.iter().all(|v| v.is_finite()).then_some(r)
-    };
-    let p = lp_minimax(&f, &rotations_of(inp, &tri, seed_views)?)?;
-    let x = views(&tri, &p);
+    let fit = fit::ViewsFit { inp, tri };
+    let p = lp_minimax_problem(&fit, &rotations_of(inp, &tri, seed_views)?)?;
+    let x = fit.views(&p);
     let worst = |v: &[f64]| v.iter().fold(0.0, |m: f64, r| m.max(r.abs()));
     Some(Witness {
         shift_ratio: worst(&shifts(&x)),
@@ -299,23 +307,26 @@ fn restricted_witness(inp: &RestrictedDesign, seed_views: &[f64]) -> Option<Witn
 }
 
 /// Per solution and component, the ladder of the witness search: the target moved by each
-/// rung (in its half units), the search from the same start.
+/// rung (in its half units), the search from the same start. The ladders are independent:
+/// they run in parallel and are collected in order.
 fn witness_acceptance(inp: &RestrictedDesign, start: &[f64]) -> Vec<[Acceptance; 3]> {
-    (0..inp.targets.len())
-        .map(|k| {
-            std::array::from_fn(|e| {
-                acceptance(&|shift| {
-                    let mut moved = inp.targets.to_vec();
-                    moved[k][e] += shift * inp.target_half[k][e];
-                    let design = RestrictedDesign {
-                        targets: &moved,
-                        ..inp.clone()
-                    };
-                    restricted_witness(&design, start).is_some_and(|w| inside(&w))
-                })
+    use rayon::prelude::*;
+    let ladders: Vec<Acceptance> = (0..inp.targets.len() * 3)
+        .into_par_iter()
+        .map(|c| {
+            let (k, e) = (c / 3, c % 3);
+            acceptance(&|shift| {
+                let mut moved = inp.targets.to_vec();
+                moved[k][e] += shift * inp.target_half[k][e];
+                let design = RestrictedDesign {
+                    targets: &moved,
+                    ..inp.clone()
+                };
+                restricted_witness(&design, start).is_some_and(|w| inside(&w))
             })
         })
-        .collect()
+        .collect();
+    ladders.chunks(3).map(|c| [c[0], c[1], c[2]]).collect()
 }
 
 /// The largest deviation of paired roots from the printed solutions, in half units.

@@ -2,7 +2,7 @@
 //! coordinates and solved, and one exact configuration (a body with the table's edges and
 //! three orthographic cameras) fitted jointly to the figure and to every printed coefficient.
 
-use nalgebra::{DMatrix, DVector, Rotation3, Vector2, Vector3};
+use nalgebra::{DMatrix, Rotation3, Vector2, Vector3};
 
 use crate::algebra::{central_jacobian, complete_rotation, orthonormal_rows};
 use crate::derivations::p4f3::solve_points;
@@ -10,16 +10,12 @@ use crate::studies::printed_matrix::{identify_rows, row_at, RowMatch};
 use crate::studies::rounding::RoundingBox;
 
 pub mod jacobian;
+pub mod lp;
+
+pub use lp::{lp_minimax, lp_minimax_with, ResidualJacobian, Residuals};
 
 /// Points per frame of §4's example.
 pub const POINTS: usize = 4;
-
-/// The exponents of the Lᵖ stages of the joint fit: least squares first, then ever closer to
-/// the largest residual (p = 64 weighs a residual 1.1 times another by 1.1⁶⁴ ≈ 450).
-const STAGES: [f64; 6] = [2.0, 4.0, 8.0, 16.0, 32.0, 64.0];
-
-/// Levenberg–Marquardt steps per stage.
-const STEPS: usize = 200;
 
 fn frames_of(x: &[f64]) -> Vec<Vec<[f64; 2]>> {
     (0..x.len() / (2 * POINTS))
@@ -176,6 +172,24 @@ fn squares_at(inp: &JointInput, p: &[f64]) -> Vec<f64> {
         .collect()
 }
 
+/// The flat image coordinates of the configuration `p` (as [`unpack`] projects them) into
+/// `x`; `false` when the edges span no body.
+fn project_into(inp: &JointInput, p: &[f64], x: &mut Vec<f64>) -> bool {
+    x.clear();
+    let Some(body) = tetrahedron(&squares_at(inp, p)) else {
+        return false;
+    };
+    for c in p[6..].chunks(5) {
+        let r = Rotation3::new(Vector3::new(c[0], c[1], c[2]));
+        let m = r.matrix();
+        for b in &body {
+            let y = m * b;
+            x.extend([y.x + c[3], y.y + c[4]]);
+        }
+    }
+    true
+}
+
 /// The configuration at parameters `p`: 6 edge offsets (in half-widths of their intervals),
 /// then per camera a rotation vector and a 2-D translation; `None` when the edges span no
 /// body.
@@ -206,22 +220,49 @@ fn flat(frames: &[Vec<[f64; 2]>]) -> Vec<f64> {
 
 /// Every scaled deviation of the configuration `p`: figure, nonzero coefficients, edges.
 pub fn scaled(inp: &JointInput, matches: &[RowMatch], p: &[f64]) -> Option<Vec<f64>> {
-    let (_, frames, _) = unpack(inp, p)?;
-    let x = flat(&frames);
-    let mut r: Vec<f64> = x
-        .iter()
+    let mut r = Vec::new();
+    scaled_into(inp, matches, p, &mut r).then_some(r)
+}
+
+/// [`scaled`] into `out`; `false` where it is `None`. The image coordinates are projected
+/// into `out` itself, read for the coefficients and then turned into their own deviations.
+fn scaled_into(inp: &JointInput, matches: &[RowMatch], p: &[f64], out: &mut Vec<f64>) -> bool {
+    if !project_into(inp, p, out) {
+        return false;
+    }
+    let n = out.len();
+    for (m, (row, h)) in matches.iter().zip(inp.rows.iter().zip(inp.half)) {
+        let r = row_at(&out[..n], POINTS, m);
+        for j in (0..7).filter(|j| h[*j] > 0.0) {
+            out.push((r[j] - row[j]) / h[j]);
+        }
+    }
+    for ((a, c), h) in out[..n]
+        .iter_mut()
         .zip(&inp.figure.center)
         .zip(&inp.figure.half)
-        .map(|((a, c), h)| (a - c) / h)
-        .collect();
-    for (row, h) in coefficient_deviation(&x, inp.rows, inp.half, matches)
-        .iter()
-        .zip(inp.half)
     {
-        r.extend((0..7).filter(|j| h[*j] > 0.0).map(|j| row[j]));
+        *a = (*a - c) / h;
     }
-    r.extend(p[..6].iter().copied());
-    r.iter().all(|v| v.is_finite()).then_some(r)
+    out.extend(p[..6].iter().copied());
+    out.iter().all(|v| v.is_finite())
+}
+
+/// The joint fit as a problem of the Lᵖ stages: [`scaled`] and its analytic Jacobian.
+struct JointProblem<'a, 'b> {
+    inp: &'a JointInput<'b>,
+    matches: &'a [RowMatch],
+}
+
+impl lp::LpProblem for JointProblem<'_, '_> {
+    fn residuals(&self, p: &[f64], out: &mut Vec<f64>) -> bool {
+        scaled_into(self.inp, self.matches, p, out)
+    }
+
+    fn lp_jacobian(&self, p: &[f64], raw: &[f64], power: f64, jt: &mut DMatrix<f64>) -> bool {
+        jacobian::scaled_jacobian_into(self.inp, self.matches, p, jt)
+            && lp::chain_rule(jt, raw, power)
+    }
 }
 
 /// The start: the body at the centre of its intervals, each camera the nearest orthographic
@@ -248,119 +289,20 @@ fn start(inp: &JointInput) -> Option<Vec<f64>> {
     Some(p)
 }
 
-/// Residuals of a parameter vector (`None`: undefined there).
-pub type Residuals<'a> = &'a dyn Fn(&[f64]) -> Option<Vec<f64>>;
-
-/// The Jacobian of [`Residuals`] (`None`: undefined there).
-pub type ResidualJacobian<'a> = &'a dyn Fn(&[f64]) -> Option<DMatrix<f64>>;
-
-/// Minimise the largest |rᵢ| of `f` from `x0`: the Lᵖ stages of `STAGES`, least squares
-/// first, with central-difference Jacobians. `None` when `f` is undefined at the start.
-pub fn lp_minimax(f: Residuals, x0: &[f64]) -> Option<Vec<f64>> {
-    lp_minimax_with(f, None, x0)
-}
-
-/// [`lp_minimax`] with the Jacobian `jac` of `f` when one is known (central differences
-/// otherwise).
-pub fn lp_minimax_with(
-    f: Residuals,
-    jac: Option<ResidualJacobian>,
-    x0: &[f64],
-) -> Option<Vec<f64>> {
-    let mut p = x0.to_vec();
-    for power in STAGES {
-        p = lp_stage(f, jac, &p, power)?;
-    }
-    Some(p)
-}
-
-/// The Jacobian of g = sign(r)|r|^(p/2) at `x` (residuals `r` there): from `jac` by the
-/// chain rule, ∂gᵢ = (p/2)|rᵢ|^(p/2 − 1) ∂rᵢ, or by central differences of `g`.
-fn lp_jacobian(
-    g: Residuals,
-    jac: Option<ResidualJacobian>,
-    x: &[f64],
-    r: &[f64],
-    power: f64,
-) -> Option<DMatrix<f64>> {
-    let Some(jac) = jac else {
-        return central_jacobian(g, x, |_, xj| 1e-7 * xj.abs().max(1.0));
-    };
-    let mut j = jac(x)?;
-    for (i, mut row) in j.row_iter_mut().enumerate() {
-        row *= power / 2.0 * r[i].abs().powf(power / 2.0 - 1.0);
-    }
-    j.iter().all(|v| v.is_finite()).then_some(j)
-}
-
-/// Levenberg–Marquardt on Σ gᵢ², gᵢ = sign(rᵢ)|rᵢ|^(p/2): the Lᵖ norm of the residuals.
-fn lp_stage(
-    f: Residuals,
-    jac: Option<ResidualJacobian>,
-    x0: &[f64],
-    power: f64,
-) -> Option<Vec<f64>> {
-    let lp = |r: Vec<f64>| -> Vec<f64> {
-        r.iter()
-            .map(|v| v.signum() * v.abs().powf(power / 2.0))
-            .collect()
-    };
-    let g = |x: &[f64]| f(x).map(lp);
-    let cost = |r: &[f64]| r.iter().map(|v| v * v).sum::<f64>();
-    let mut x = x0.to_vec();
-    let mut raw = f(&x)?;
-    let mut r = lp(raw.clone());
-    let mut c = cost(&r);
-    let mut lambda = 1e-3;
-    for _ in 0..STEPS {
-        let Some(j) = lp_jacobian(&g, jac, &x, &raw, power) else {
-            break;
-        };
-        let jt = j.transpose();
-        let jtj = &jt * &j;
-        let grad = &jt * DVector::from_vec(r.clone());
-        let mut improved = false;
-        while lambda < 1e12 {
-            let mut a = jtj.clone();
-            for k in 0..a.nrows() {
-                a[(k, k)] += lambda * jtj[(k, k)].max(1e-12);
-            }
-            let Some(dx) = a.cholesky().map(|ch| ch.solve(&grad)) else {
-                lambda *= 10.0;
-                continue;
-            };
-            let trial: Vec<f64> = x.iter().zip(dx.iter()).map(|(a, d)| a - d).collect();
-            if let Some(rawt) = f(&trial) {
-                let rt = lp(rawt.clone());
-                let ct = cost(&rt);
-                if ct < c {
-                    (x, r, c, raw) = (trial, rt, ct, rawt);
-                    lambda = (lambda / 10.0).max(1e-12);
-                    improved = true;
-                    break;
-                }
-            }
-            lambda *= 10.0;
-        }
-        if !improved {
-            break;
-        }
-    }
-    Some(x)
-}
-
 /// Fit one exact configuration to the figure, the printed rows and the edge intervals by
 /// Lᵖ stages from least squares to p = 64, starting from `p0` (or the affine start).
 pub fn joint_fit(inp: &JointInput, p0: Option<&[f64]>) -> Option<(JointFit, Vec<f64>)> {
     let frames = frames_of(&inp.figure.center);
     let matches = identify_rows(inp.rows, &frames);
-    let f = |p: &[f64]| scaled(inp, &matches, p);
     let p0 = match p0 {
         Some(p) => p.to_vec(),
         None => start(inp)?,
     };
-    let jac = |p: &[f64]| jacobian::scaled_jacobian(inp, &matches, p);
-    let p = lp_minimax_with(&f, Some(&jac), &p0)?;
+    let problem = JointProblem {
+        inp,
+        matches: &matches,
+    };
+    let p = lp::lp_minimax_problem(&problem, &p0)?;
     let (squares, fr, views) = unpack(inp, &p)?;
     let x = flat(&fr);
     let figure_half_units: Vec<f64> = x

@@ -2,10 +2,12 @@
 //! each row is, a point of the figure's rounding box that reproduces every printed entry
 //! within half a unit of its last digit, and the same search for single-entry mutants.
 
+use rayon::prelude::*;
+
 use crate::algebra::Interval;
 use crate::derivations::p4f3::{all_triangles, Triangle};
 use crate::derivations::twofold::FrameCoefficients;
-use crate::studies::rounding::{reproduce_gauged, RoundingBox, Witness};
+use crate::studies::rounding::{reproduce_grouped, GroupedResiduals, RoundingBox, Witness};
 
 /// How a printed row of the paper's matrix arises from the figure: which triangle, which
 /// pair of frames (`first` − `second`), and the factor applied.
@@ -85,32 +87,37 @@ fn edges_of(p: usize) -> Vec<(usize, usize)> {
 pub fn identify_rows(printed: &[[f64; 7]], frames: &[Vec<[f64; 2]>]) -> Vec<RowMatch> {
     let k = frames.len();
     let tris = all_triangles(frames[0].len());
+    // every candidate row once, in the order of the search (they depend on the frames only)
+    let mut candidates = Vec::new();
+    // positive factors first: a tie between −(F₁ − F₂) and F₂ − F₁ names the latter
+    for factor in [1.0, 0.5, 2.0, -1.0, -0.5, -2.0] {
+        for &triangle in &tris {
+            for first in 1..=k {
+                for second in (1..=k).filter(|s| *s != first) {
+                    let r = row_enclosure(frames, 0.0, triangle, first, second, factor);
+                    candidates.push((triangle, first, second, factor, r.map(|iv| iv.mid())));
+                }
+            }
+        }
+    }
     printed
         .iter()
         .map(|row| {
             let mut best: Option<RowMatch> = None;
-            // positive factors first: a tie between −(F₁ − F₂) and F₂ − F₁ names the latter
-            for factor in [1.0, 0.5, 2.0, -1.0, -0.5, -2.0] {
-                for &triangle in &tris {
-                    for first in 1..=k {
-                        for second in (1..=k).filter(|s| *s != first) {
-                            let r = row_enclosure(frames, 0.0, triangle, first, second, factor);
-                            let deviation = r
-                                .iter()
-                                .zip(row)
-                                .map(|(iv, x)| (iv.mid() - x).abs())
-                                .fold(0.0, f64::max);
-                            if best.is_none_or(|b| deviation < b.deviation) {
-                                best = Some(RowMatch {
-                                    triangle,
-                                    first,
-                                    second,
-                                    factor,
-                                    deviation,
-                                });
-                            }
-                        }
-                    }
+            for &(triangle, first, second, factor, mid) in &candidates {
+                let deviation = mid
+                    .iter()
+                    .zip(row)
+                    .map(|(m, x)| (m - x).abs())
+                    .fold(0.0, f64::max);
+                if best.is_none_or(|b| deviation < b.deviation) {
+                    best = Some(RowMatch {
+                        triangle,
+                        first,
+                        second,
+                        factor,
+                        deviation,
+                    });
                 }
             }
             best.unwrap_or(RowMatch {
@@ -195,19 +202,41 @@ pub fn row_at(x: &[f64], points: usize, m: &RowMatch) -> [f64; 7] {
     row
 }
 
-/// Residuals of every nonzero printed entry, in units of its half unit.
-fn scaled(x: &[f64], inp: &PrintedSystem, rows: &[[f64; 7]], matches: &[RowMatch]) -> Vec<f64> {
-    matches
-        .iter()
-        .zip(rows.iter().zip(inp.half))
-        .flat_map(|(m, (p, h))| {
-            let r = row_at(x, inp.points, m);
-            (0..7)
-                .filter(|j| h[*j] > 0.0)
-                .map(move |j| (r[j] - p[j]) / h[j])
-                .collect::<Vec<_>>()
-        })
-        .collect()
+/// Residuals of every nonzero printed entry, in units of its half unit: one group per
+/// printed row, moved by the coordinates of the two frames it compares.
+struct Scaled<'a> {
+    inp: &'a PrintedSystem<'a>,
+    rows: &'a [[f64; 7]],
+    matches: &'a [RowMatch],
+}
+
+impl GroupedResiduals for Scaled<'_> {
+    fn groups(&self) -> usize {
+        self.matches
+            .len()
+            .min(self.rows.len())
+            .min(self.inp.half.len())
+    }
+
+    fn group(&self, g: usize, x: &[f64], out: &mut Vec<f64>) {
+        let (m, p, h) = (&self.matches[g], &self.rows[g], &self.inp.half[g]);
+        let r = row_at(x, self.inp.points, m);
+        out.extend((0..7).filter(|j| h[*j] > 0.0).map(|j| (r[j] - p[j]) / h[j]));
+    }
+
+    fn moves(&self, i: usize, g: usize) -> bool {
+        let f = i / (2 * self.inp.points) + 1;
+        self.matches[g].first == f || self.matches[g].second == f
+    }
+}
+
+/// Every residual of [`Scaled`] at `x`, in order.
+fn scaled(x: &[f64], s: &Scaled) -> Vec<f64> {
+    let mut out = Vec::new();
+    for g in 0..s.groups() {
+        s.group(g, x, &mut out);
+    }
+    out
 }
 
 /// Run the audit.
@@ -231,28 +260,44 @@ pub fn audit(inp: &PrintedSystem) -> Audit {
             })
         })
         .collect();
-    let at_printed = scaled(&inp.figure_box.center, inp, inp.rows, &matches)
+    let printed = Scaled {
+        inp,
+        rows: inp.rows,
+        matches: &matches,
+    };
+    let at_printed = scaled(&inp.figure_box.center, &printed)
         .iter()
         .fold(0.0, |a: f64, v| a.max(v.abs()));
-    let search = |rows: &[[f64; 7]]| {
-        reproduce_gauged(inp.figure_box, &|x| Some(scaled(x, inp, rows, &matches)))
-    };
-    let witness = search(inp.rows);
-    let mut mutants = Vec::new();
+    let witness = reproduce_grouped(inp.figure_box, &printed);
+    let mut moves = Vec::new();
     for (i, h) in inp.half.iter().enumerate() {
         for j in (0..7).filter(|j| h[*j] > 0.0) {
             for shift in inp.mutant_half_units.iter().flat_map(|m| [-m, *m]) {
-                let mut rows = inp.rows.to_vec();
-                rows[i][j] += shift * h[j];
-                mutants.push(Mutant {
-                    row: i,
-                    column: j,
-                    shift,
-                    rejected: search(&rows).is_none(),
-                });
+                moves.push((i, j, shift));
             }
         }
     }
+    // the searches are independent: in parallel, collected in order
+    let mutants = moves
+        .into_par_iter()
+        .map(|(i, j, shift)| {
+            let mut rows = inp.rows.to_vec();
+            rows[i][j] += shift * inp.half[i][j];
+            Mutant {
+                row: i,
+                column: j,
+                shift,
+                rejected: reproduce_grouped(
+                    inp.figure_box,
+                    &Scaled {
+                        rows: &rows,
+                        ..printed
+                    },
+                )
+                .is_none(),
+            }
+        })
+        .collect();
     Audit {
         matches,
         enclosure_half_units,

@@ -1,8 +1,10 @@
 //! Witness searches with tolerances from the printed precision, and the acceptance region of
 //! such a search (its power): how far a printed target may move before the search fails.
 
+use nalgebra::DMatrix;
+
 pub use crate::derivations::rounding::{
-    monte_carlo, quantile, witness, witness_step, RoundingBox, Witness,
+    monte_carlo, quantile, witness, witness_step, witness_with, RoundingBox, Witness,
 };
 
 /// Shifts of a mutant target, in units of the target's own tolerance (half a unit of its last
@@ -50,6 +52,91 @@ pub fn reproduce_gauged(
         Some(r)
     };
     witness_step(b, &with_shift, 1.0, GAUGED_STEP).filter(inside)
+}
+
+/// Scaled residuals in groups, each moved by a few coordinates only (a printed row by the
+/// two frames it compares): [`reproduce_grouped`] probes a coordinate by re-evaluating only
+/// the groups it moves.
+pub trait GroupedResiduals {
+    /// Number of groups.
+    fn groups(&self) -> usize;
+    /// Group `g`'s scaled residuals at the coordinates `x`, appended to `out`.
+    fn group(&self, g: usize, x: &[f64], out: &mut Vec<f64>);
+    /// Whether changing coordinate `i` alone can change group `g`.
+    fn moves(&self, i: usize, g: usize) -> bool;
+}
+
+/// All of a grouped residual's groups at `x`, in order.
+fn all_groups(res: &dyn GroupedResiduals, x: &[f64]) -> Vec<f64> {
+    let mut out = Vec::new();
+    for g in 0..res.groups() {
+        res.group(g, x, &mut out);
+    }
+    out
+}
+
+/// The shift residual of coordinate `i` at `x`.
+fn shift_of(b: &RoundingBox, x: &[f64], i: usize) -> f64 {
+    SHIFT_WEIGHT * (x[i] - b.center[i]) / b.half[i]
+}
+
+/// [`reproduce_gauged`] of every group in order.
+pub fn reproduce_grouped(b: &RoundingBox, res: &dyn GroupedResiduals) -> Option<Witness> {
+    let free: Vec<usize> = (0..b.center.len()).filter(|&i| b.half[i] > 0.0).collect();
+    let with_shift = |x: &[f64]| {
+        let mut r = finite(Some(all_groups(res, x)))?;
+        r.extend(free.iter().map(|&i| shift_of(b, x, i)));
+        Some(r)
+    };
+    let jac = |u: &[f64]| grouped_jacobian(b, &free, res, u);
+    witness_with(b, &with_shift, Some(&jac), 1.0, GAUGED_STEP).filter(inside)
+}
+
+/// The central differences [`witness_step`] takes of [`reproduce_gauged`]'s residuals at
+/// the scaled unknowns `u`, entry for entry: a probe of coordinate `i` changes only the groups
+/// `i` moves and its own shift, so only those are evaluated; every other entry is
+/// (v − v)/2h = +0 for the finite v at `u`. `None` where a probe is undefined.
+fn grouped_jacobian(
+    b: &RoundingBox,
+    free: &[usize],
+    res: &dyn GroupedResiduals,
+    u: &[f64],
+) -> Option<DMatrix<f64>> {
+    let mut x = b.center.clone();
+    for (k, &i) in free.iter().enumerate() {
+        x[i] += u[k] * b.half[i];
+    }
+    // each group's first row, and the number of rows
+    let mut starts = Vec::with_capacity(res.groups() + 1);
+    let mut probe = Vec::new();
+    for g in 0..res.groups() {
+        starts.push(probe.len());
+        res.group(g, &x, &mut probe);
+    }
+    starts.push(probe.len());
+    let scaled = probe.len();
+    let mut jac = DMatrix::zeros(scaled + free.len(), free.len());
+    let (mut up, mut down) = (x.clone(), x.clone());
+    for (k, &i) in free.iter().enumerate() {
+        let h = GAUGED_STEP * u[k].abs().max(1.0);
+        up[i] = b.center[i] + (u[k] + h) * b.half[i];
+        down[i] = b.center[i] + (u[k] - h) * b.half[i];
+        for g in (0..res.groups()).filter(|&g| res.moves(i, g)) {
+            probe.clear();
+            res.group(g, &up, &mut probe);
+            let n = probe.len();
+            res.group(g, &down, &mut probe);
+            if n != starts[g + 1] - starts[g] || probe.iter().any(|v| !v.is_finite()) {
+                return None;
+            }
+            for (row, (fu, fd)) in (starts[g]..).zip(probe[..n].iter().zip(&probe[n..])) {
+                jac[(row, k)] = (fu - fd) / (2.0 * h);
+            }
+        }
+        jac[(scaled + k, k)] = (shift_of(b, &up, i) - shift_of(b, &down, i)) / (2.0 * h);
+        (up[i], down[i]) = (x[i], x[i]);
+    }
+    Some(jac)
 }
 
 /// Whether a witness lies in the box and meets every tolerance.
