@@ -1,5 +1,5 @@
 //! The floors of docs/architecture.md, read from the sources: every path a file names
-//! (`crate::…`, `super::…`, and `orthocheck::…` in the binary) runs down a floor or sideways
+//! (`crate::…`, `super::…`, and `orthocheck::…` in `main.rs`) runs down a floor or sideways
 //! along an edge the table allows, never up; no kind's folder names another kind; and inside
 //! `report` the shared presentation lies below the outputs, without a circle.
 //! Comments and string literals are not read, so a doc link is not an import.

@@ -1,4 +1,4 @@
-//! Typed library errors; the binary maps them to exit codes.
+//! Typed library errors; the command line (`run_command_line`) maps them to exit codes.
 
 use std::fmt;
 use std::path::PathBuf;

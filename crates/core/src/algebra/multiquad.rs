@@ -61,6 +61,8 @@ impl Multiquad {
     /// The field of the generators' squares dᵢ (each must be positive; at most 16 of them).
     pub fn field(squares: Vec<BigRational>) -> Rc<MultiquadField> {
         assert!(squares.len() <= 16 && squares.iter().all(Signed::is_positive));
+        // lowest terms, the denominator positive: √(p/q) = √(pq)/q needs q > 0
+        let squares: Vec<BigRational> = squares.iter().map(BigRational::reduced).collect();
         let integers = squares.iter().map(|d| d.numer() * d.denom()).collect();
         Rc::new(MultiquadField { squares, integers })
     }
@@ -172,10 +174,11 @@ fn product(x: &[BigInt], y: &[BigInt], d: &[BigInt]) -> Vec<BigInt> {
     out
 }
 
-/// Equal values (the representation is not unique).
+/// Equal values of one field (the representation is not unique); elements of different
+/// fields are not equal.
 impl PartialEq for Multiquad {
     fn eq(&self, o: &Multiquad) -> bool {
-        (self - o).is_zero()
+        Rc::ptr_eq(&self.field, &o.field) && (self - o).is_zero()
     }
 }
 

@@ -212,9 +212,12 @@ pub fn paper_tests(f1: &[Vector2<f64>; 4], f2: &[Vector2<f64>; 4], c: f64) -> Ve
 /// assignment of every scene.
 fn grid_step(i: i32) -> f64 {
     static STEPS: std::sync::LazyLock<Vec<f64>> =
-        std::sync::LazyLock::new(|| (0..4610).map(|i| 1.001_f64.powi(i)).collect());
+        std::sync::LazyLock::new(|| (0..SMALLEST_C_STEPS).map(|i| 1.001_f64.powi(i)).collect());
     STEPS[i as usize]
 }
+
+/// The grid of [`smallest_c`]: 1.001⁴⁶¹⁰ ≈ 100, so up to 100 times the projection.
+const SMALLEST_C_STEPS: i32 = 4610;
 
 /// The smallest c the paper allows, to a relative step of 10⁻³: RP at least its longest
 /// projection, then the first c on the grid start·1.001ⁱ for which some b is real with a and b
@@ -223,13 +226,15 @@ pub fn smallest_c(f1: &[Vector2<f64>; 4], f2: &[Vector2<f64>; 4]) -> Option<f64>
     let (p1, p2) = (squared(f1), squared(f2));
     let start = p1[2].max(p2[2]).sqrt();
     let at = b_squared_in(f1, f2)?;
-    (0..4610).map(|i| start * grid_step(i)).find(|&c| {
-        at(c * c).is_some_and(|roots| {
-            roots
-                .iter()
-                .any(|&(b2, a2)| b2 >= p1[1].max(p2[1]) && a2 >= p1[0].max(p2[0]))
+    (0..SMALLEST_C_STEPS)
+        .map(|i| start * grid_step(i))
+        .find(|&c| {
+            at(c * c).is_some_and(|roots| {
+                roots
+                    .iter()
+                    .any(|&(b2, a2)| b2 >= p1[1].max(p2[1]) && a2 >= p1[0].max(p2[0]))
+            })
         })
-    })
 }
 
 /// The equal-scale residual |a² + b² − c² − d²| of the affine epipolar constraint of four

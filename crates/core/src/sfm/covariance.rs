@@ -90,7 +90,7 @@ pub(super) fn points_std(
         })
         .collect();
     // S = U − Σ W V⁻¹ Wᵀ = U − Σ B V Bᵀ
-    subtract_points(&mut s, &blocks, &n.v)?;
+    subtract_points(&mut s, &blocks, &n.v);
     let mut b_bar = DMatrix::<f64>::zeros(size, 3);
     for b in &blocks {
         for (x, &rx) in b.rows.iter().enumerate() {
@@ -172,15 +172,19 @@ fn side_by_side(
 }
 
 /// S −= Σ B_j V_j B_jᵀ over every point, chunk by chunk.
-fn subtract_points(s: &mut DMatrix<f64>, blocks: &[Sparse], v: &[Matrix3<f64>]) -> Option<()> {
+fn subtract_points(s: &mut DMatrix<f64>, blocks: &[Sparse], v: &[Matrix3<f64>]) {
     for (chunk, vs) in blocks.chunks(CHUNK).zip(v.chunks(CHUNK)) {
         let (rows, pos) = union_rows(chunk);
-        if dense_pays(rows.len(), chunk) {
-            // B V Bᵀ = (B L)(B L)ᵀ for V = L Lᵀ
-            let ls: Vec<Matrix3<f64>> = vs
-                .iter()
-                .map(|v| v.cholesky().map(|c| c.unpack()))
-                .collect::<Option<_>>()?;
+        // B V Bᵀ = (B L)(B L)ᵀ for V = L Lᵀ; a chunk with a V that has no Cholesky factor
+        // (a point without images, or one barely determined) goes point by point
+        let factors = dense_pays(rows.len(), chunk)
+            .then(|| {
+                vs.iter()
+                    .map(|v| v.cholesky().map(|c| c.unpack()))
+                    .collect::<Option<Vec<Matrix3<f64>>>>()
+            })
+            .flatten();
+        if let Some(ls) = factors {
             let z = side_by_side(chunk, &pos, rows.len(), &ls);
             let zz = &z * z.transpose();
             for (a, &ra) in rows.iter().enumerate() {
@@ -199,7 +203,6 @@ fn subtract_points(s: &mut DMatrix<f64>, blocks: &[Sparse], v: &[Matrix3<f64>]) 
             }
         }
     }
-    Some(())
 }
 
 /// Each point's B_jᵀ S⁻¹ B_j, chunk by chunk, reading S⁻¹ in place where a chunk goes point
