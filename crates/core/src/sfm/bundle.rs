@@ -227,14 +227,14 @@ fn normal(by_point: &ByPoint, s: &State, huber: Option<f64>) -> Normal {
 
 /// Points whose Schur terms are accumulated together (one matrix product when their frames
 /// make it cheaper than block by block).
-const CHUNK: usize = 64;
+pub(super) const CHUNK: usize = 64;
 /// Rows of the camera system per matrix product when a chunk's points span every frame: the
 /// lower triangle is computed panel by panel, about half the products of the whole square.
 const PANEL: usize = 128;
 /// How much faster a multiply-add is taken to run in a large matrix product than in the
 /// 5 × 3 · 3 × 5 block products of the scattered accumulation: a chosen factor, not a
 /// measured one (it only moves time, never the result beyond rounding).
-const DENSE_GAIN: usize = 4;
+pub(super) const DENSE_GAIN: usize = 4;
 
 /// One point's share of the damped step: M = L⁻¹ for L Lᵀ = V + λI, and per image the
 /// camera–point block Z = W Mᵀ (so that W (V + λI)⁻¹ Wᵀ = Z Zᵀ).

@@ -22,7 +22,8 @@ use std::ops::AddAssign as _;
 
 use nalgebra::{DMatrix, Matrix3, Vector3};
 
-use super::bundle::{Normal, State};
+// chunks of points, and when one matrix product pays: as the adjustment's own Schur complement
+use super::bundle::{Normal, State, CHUNK, DENSE_GAIN};
 
 /// The rows of camera `f`'s parameters that are free: frame 1 (`f` = 0) keeps only its two
 /// translations (its rotation is the gauge).
@@ -120,13 +121,6 @@ pub(super) fn points_std(
         .collect();
     Some(out)
 }
-
-/// Points taken together: one matrix product over the rows they see where that costs less
-/// than point by point (as the adjustment's own Schur complement, `bundle::subtract_chunk`).
-const CHUNK: usize = 64;
-/// How much faster a multiply-add runs in a large matrix product than in the scattered
-/// per-point loops: the adjustment's chosen factor, which moves time only.
-const DENSE_GAIN: usize = 4;
 
 /// The union of a chunk's rows, and each point's rows' positions in it.
 fn union_rows(chunk: &[Sparse]) -> (Vec<usize>, Vec<Vec<usize>>) {
