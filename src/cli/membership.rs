@@ -17,12 +17,13 @@ pub struct Args {
     /// Tracks file with two frames.
     #[arg(long)]
     input: PathBuf,
-    /// Largest epipolar distance of a member, relative to the image size. Default: from the
-    /// data's noise, with the fit's degrees of freedom accounted for: least median of squares
-    /// finds the body, the epipolar geometry is refitted to its points, and the tolerance is
-    /// the residual standard deviation times Student's t at 99 % two-sided with m − 4 degrees
-    /// of freedom (m members), so that about 1 % of true members are rejected at most
-    /// (docs/limits.md, "Membership's tolerance").
+    /// Largest epipolar distance of a member, relative to the image size, the same for every
+    /// point. Default: from the data's noise, point by point, with the fit's degrees of
+    /// freedom accounted for: least median of squares finds the body, the epipolar geometry
+    /// is refitted to its points, the noise's mix of one scale and a scale growing with the
+    /// coordinates is estimated (from 10 members), and each point's tolerance is its own
+    /// standard deviation times Student's t at 99 % two-sided, so that about 1 % of true
+    /// members are rejected at most (docs/limits.md, "Membership's tolerance").
     #[arg(long, allow_negative_numbers = true)]
     tolerance: Option<f64>,
     /// JSON output.
@@ -48,12 +49,14 @@ pub fn run(a: Args) -> Result<(), Error> {
         return Err(in_file(&a.input, Error::InvalidInput(d.to_string())));
     }
     let from_data = a.tolerance.is_none();
-    let tolerance = a
-        .tolerance
-        .unwrap_or_else(|| identity::robust_tolerance(&t.frames[0], &t.frames[1]));
-    let m = identity::membership(&t.frames[0], &t.frames[1], tolerance);
-    let inside: Vec<bool> = m.iter().map(|(i, _)| *i).collect();
-    if let Some(d) = identity::members_rigid(&t.frames[0], &t.frames[1], &inside, tolerance) {
+    let tolerance = a.tolerance.map_or_else(
+        || identity::robust_tolerance(&t.frames[0], &t.frames[1]),
+        identity::Tolerance::uniform,
+    );
+    let m = identity::membership(&t.frames[0], &t.frames[1], &tolerance);
+    let inside: Vec<bool> = m.iter().map(|j| j.member).collect();
+    let largest = tolerance.largest(&t.frames[0], &t.frames[1], &inside);
+    if let Some(d) = identity::members_rigid(&t.frames[0], &t.frames[1], &inside, largest) {
         let hint = if from_data {
             "; the tolerance came from the data's own noise: a larger --tolerance admits more points, a smaller one fewer"
         } else {
@@ -63,7 +66,7 @@ pub fn run(a: Args) -> Result<(), Error> {
             &a.input,
             Error::InvalidInput(format!(
                 "{d} (tolerance {}){hint}",
-                crate::numfmt::sig(tolerance)
+                crate::numfmt::sig(largest)
             )),
         ));
     }
@@ -71,13 +74,14 @@ pub fn run(a: Args) -> Result<(), Error> {
         .names
         .iter()
         .zip(&m)
-        .map(|(n, (inside, d))| MemberRow {
+        .map(|(n, j)| MemberRow {
             point: n.clone(),
-            member: *inside,
-            distance: *d,
+            member: j.member,
+            distance: j.distance,
+            tolerance: j.tolerance,
         })
         .collect();
-    emit(a.json, &rows, |r| membership_text(r, tolerance, from_data))?;
+    emit(a.json, &rows, |r| membership_text(r, &tolerance, from_data))?;
     Ok(())
 }
 
@@ -90,28 +94,44 @@ struct MemberRow {
     pub member: bool,
     /// Its epipolar distance, relative to the image size.
     pub distance: f64,
+    /// The largest distance it could have had as a member (its own when the noise grows
+    /// with the coordinates).
+    pub tolerance: f64,
 }
 
 /// `orthocheck membership` as text.
-fn membership_text(rows: &[MemberRow], tolerance: f64, from_data: bool) -> String {
+fn membership_text(rows: &[MemberRow], tolerance: &identity::Tolerance, from_data: bool) -> String {
     use crate::numfmt::sig;
+    let per_point = tolerance.relative > 0.0;
     let mut s = format!(
-        "members: epipolar distance at most {} of the image size{}\n",
-        sig(tolerance),
+        "members: epipolar distance at most {}{} of the image size{}\n",
+        sig(tolerance.base),
+        if per_point {
+            format!(
+                " × the point's noise weight ({} % of the noise variance grows with the coordinates; each point's tolerance in the last column)",
+                sig(100.0 * tolerance.relative)
+            )
+        } else {
+            String::new()
+        },
         if from_data {
-            " (from the data: the members' residual scale times Student's t at 99 %; --tolerance sets it)"
+            " (from the data: the members' residual scale times Student's t at 99 %; --tolerance sets one for every point)"
         } else {
             ""
         }
     );
     for r in rows {
-        let _ = writeln!(
+        let _ = write!(
             s,
             "{:<6} {:<9} {}",
             r.point,
             if r.member { "member" } else { "outside" },
             sig(r.distance)
         );
+        if per_point {
+            let _ = write!(s, "  (at most {})", sig(r.tolerance));
+        }
+        s.push('\n');
     }
     s
 }

@@ -171,3 +171,52 @@ fn membership_finds_a_foreign_point_at_its_default_tolerance() {
         "{text}"
     );
 }
+
+/// Under noise relative to the coordinates (30 points of one body, 0.5 %), `membership`
+/// finds the noise growing with them and gives each point its own tolerance, in the text
+/// and in JSON; the foreign point is set apart. (The level itself, over 200 scenes: the
+/// unit test `the_default_tolerance_follows_noise_relative_to_the_coordinates`.)
+#[test]
+fn membership_gives_each_point_its_own_tolerance_under_relative_noise() {
+    use rand::{Rng, SeedableRng};
+    let dir = tempfile::tempdir().unwrap();
+    let mut t = orthocheck::model::Scene::random(31, 2, 3).tracks();
+    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(3);
+    for p in t.frames.iter_mut().flatten() {
+        p.x *= 1.0 + 5e-3 * rng.random_range(-1.0..1.0);
+        p.y *= 1.0 + 5e-3 * rng.random_range(-1.0..1.0);
+    }
+    let size = t.frames[1].iter().map(|p| p.norm()).fold(0.0f64, f64::max);
+    t.frames[1][30].x += size / 3.0;
+    let file = dir.path().join("thirty.yaml");
+    std::fs::write(&file, orthocheck::input::tracks_to_yaml(&t)).unwrap();
+    let out = orthocheck(&["membership", "--input", file.to_str().unwrap(), "--json"]);
+    assert_eq!(out.status.code(), Some(0));
+    let rows = json(&out);
+    let rows = rows.as_array().unwrap();
+    let member: Vec<bool> = rows.iter().map(|r| r["member"] == true).collect();
+    // each true member is rejected with probability 1 % at most: three or more of 30 with
+    // probability 0.3 % (this scene: 28 kept)
+    assert!(
+        member[..30].iter().filter(|m| **m).count() >= 28,
+        "{member:?}"
+    );
+    assert!(!member[30]);
+    let tol: Vec<f64> = rows
+        .iter()
+        .map(|r| r["tolerance"].as_f64().unwrap())
+        .collect();
+    let (lo, hi) = tol
+        .iter()
+        .fold((f64::INFINITY, 0.0f64), |(a, b), t| (a.min(*t), b.max(*t)));
+    assert!(
+        hi > 2.0 * lo,
+        "tolerances from {lo} to {hi}: one scale, not one per point"
+    );
+    let text = orthocheck(&["membership", "--input", file.to_str().unwrap()]);
+    let text = String::from_utf8_lossy(&text.stdout);
+    assert!(
+        text.contains("noise weight") && text.contains("(at most "),
+        "{text}"
+    );
+}

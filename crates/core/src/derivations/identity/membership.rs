@@ -28,6 +28,105 @@ pub const REWEIGHT: f64 = 2.5;
 /// many drawn with a fixed seed (the same input gives the same tolerance).
 const LMEDS_SUBSETS: usize = 500;
 
+/// The mixes of the two noise scales tried (see [`Tolerance`]): λ = 0, 1/8, …, 1.
+const MIX_STEPS: usize = 8;
+
+/// Members at least, for the mix of the two noise scales to be estimated (it takes a degree
+/// of freedom; below, one scale). Chosen by `membership_calibration` (docs/limits.md): from
+/// 6 members the extra degree costs the far foreign points of the smallest scenes (83 %
+/// found instead of 98 %), from 14 the relative noise of 10–13 members stays unmodelled.
+pub const MIX_MIN_MEMBERS: usize = 10;
+
+/// How far a member's epipolar distance (relative to the image size) may go, point by point.
+///
+/// An image coordinate x is taken to carry noise of variance σ² ((1 − λ) + λ x²/u²): one
+/// scale across the image (λ = 0, a tracker's pixel noise) or growing with the distance from
+/// the image's origin (λ = 1, noise relative to the coordinates), u² the members' mean of
+/// the coordinates' squares as the epipolar line weighs them, so both parts are of one size.
+/// A point's distance then has standard deviation σ w, with w² = (1 − λ) + λ s/u² and s its
+/// coordinates' squares weighed by the line's coefficients; it is a member when its distance
+/// is at most `base` × w.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Tolerance {
+    /// The largest distance of a member of weight 1.
+    pub base: f64,
+    /// λ, the share of the noise that grows with the coordinates.
+    pub relative: f64,
+    /// u², the unit of the coordinates' squares.
+    pub unit: f64,
+}
+
+impl Tolerance {
+    /// One tolerance for every point (λ = 0): what `--tolerance` gives.
+    pub fn uniform(base: f64) -> Tolerance {
+        Tolerance {
+            base,
+            relative: 0.0,
+            unit: 1.0,
+        }
+    }
+
+    /// The weight w of a point whose coordinates' squares, weighed by the line, are `spread`.
+    fn weight(&self, spread: f64) -> f64 {
+        if self.relative == 0.0 {
+            return 1.0;
+        }
+        ((1.0 - self.relative) + self.relative * spread / self.unit).sqrt()
+    }
+
+    /// Every point's own tolerance, for the distances of a fit.
+    fn of(&self, fit: &Distances) -> Vec<f64> {
+        fit.spread
+            .iter()
+            .map(|s| self.base * self.weight(*s))
+            .collect()
+    }
+
+    /// The largest of the points' tolerances (what the rigidity check may take as noise).
+    pub fn largest(&self, f1: &[Vector2<f64>], f2: &[Vector2<f64>], members: &[bool]) -> f64 {
+        let fit = epipolar_distances(f1, f2, members);
+        self.of(&fit).into_iter().fold(self.base, f64::max)
+    }
+}
+
+/// The mix λ of most likelihood for the members' distances (normal errors of standard
+/// deviation σ w_i, σ profiled out: the least Σ ln w_i² + m ln Σ (d_i / w_i)²), and u²;
+/// λ = 0 on a tie.
+fn noise_mix(fit: &Distances, members: &[bool]) -> (f64, f64) {
+    let inside: Vec<(f64, f64)> = fit
+        .d
+        .iter()
+        .zip(&fit.spread)
+        .zip(members)
+        .filter(|(_, m)| **m)
+        .map(|((d, s), _)| (*d, *s))
+        .collect();
+    let m = inside.len() as f64;
+    let unit = inside.iter().map(|p| p.1).sum::<f64>() / m;
+    if !(unit > 0.0 && unit.is_finite()) {
+        return (0.0, 1.0);
+    }
+    let mut best = (f64::INFINITY, 0.0);
+    for step in 0..=MIX_STEPS {
+        let t = Tolerance {
+            base: 1.0,
+            relative: step as f64 / MIX_STEPS as f64,
+            unit,
+        };
+        let (mut logs, mut squares) = (0.0, 0.0);
+        for (d, s) in &inside {
+            let w2 = t.weight(*s).powi(2);
+            logs += w2.ln();
+            squares += d * d / w2;
+        }
+        let score = logs + m * squares.max(f64::MIN_POSITIVE).ln();
+        if score < best.0 {
+            best = (score, t.relative);
+        }
+    }
+    (best.1, unit)
+}
+
 /// The default tolerance of [`membership()`], from the data's own noise, with the degrees
 /// of freedom of the fit accounted for.
 ///
@@ -35,52 +134,69 @@ const LMEDS_SUBSETS: usize = 500;
 ///    (or `LMEDS_SUBSETS` of them) fitted exactly, the subset whose h-th smallest distance
 ///    over all points (h = ⌊(n + 4)/2⌋) is least kept; σ₀ = 1.4826 (1 + 5/(n − 3)) × that
 ///    distance; the points within [`REWEIGHT`] σ₀ are the first members.
-/// 2. The constraint refitted to the members by least squares; σ̂² = Σ d² / (m − 4) over
-///    the m members (the fit takes four parameters from their distances); the tolerance is
-///    t · σ̂ with t the two-sided [`MEMBER_LEVEL`] point of Student's t with m − 4 degrees of
-///    freedom (σ̂ is known only to that factor: few members, a wide tolerance); the points
-///    within it are the members, and step 2 repeats until they no longer change.
+/// 2. The constraint refitted to the members by least squares; with at least
+///    [`MIX_MIN_MEMBERS`] members, the mix λ of the two noise scales ([`Tolerance`]) of most
+///    likelihood for their distances (else λ = 0); σ̂² = Σ (d/w)² / ν over the m members,
+///    ν = m − 4 (the fit takes four parameters from their distances), one fewer when λ was
+///    estimated; the tolerance of weight 1 is t · σ̂ with t the two-sided [`MEMBER_LEVEL`]
+///    point of Student's t with ν degrees of freedom (σ̂ is known only to that factor: few
+///    members, a wide tolerance); the points within their own tolerances are the members,
+///    and step 2 repeats until they no longer change.
 ///
 /// At least 2¹⁰ ε (exact data); with five points or fewer (no residual freedom beyond one)
-/// the floor.
-pub fn robust_tolerance(f1: &[Vector2<f64>], f2: &[Vector2<f64>]) -> f64 {
-    let floor = 1024.0 * f64::EPSILON;
+/// the floor, the same for every point.
+pub fn robust_tolerance(f1: &[Vector2<f64>], f2: &[Vector2<f64>]) -> Tolerance {
+    let floor = Tolerance::uniform(1024.0 * f64::EPSILON);
     let n = f1.len();
     if n <= FIT_PARAMETERS + 1 {
         return floor;
     }
     let h = (n + EPIPOLAR_DOF).div_ceil(2).clamp(EPIPOLAR_DOF + 2, n);
-    let d = epipolar_distances(f1, f2, &least_median_subset(f1, f2));
+    let d = epipolar_distances(f1, f2, &least_median_subset(f1, f2)).d;
     let mut sorted = d.clone();
     sorted.sort_by(f64::total_cmp);
     let sigma0 = MAD_TO_SIGMA * (1.0 + 5.0 / (n - EPIPOLAR_DOF) as f64) * sorted[h - 1];
     let mut members: Vec<bool> = d.iter().map(|x| *x <= REWEIGHT * sigma0).collect();
-    let mut tolerance = f64::NAN;
+    let mut tolerance: Option<Tolerance> = None;
     for _ in 0..n {
         let m = members.iter().filter(|x| **x).count();
         if m <= FIT_PARAMETERS {
             break;
         }
-        let d = epipolar_distances(f1, f2, &members);
-        let nu = m - FIT_PARAMETERS;
-        let squares: f64 = d
-            .iter()
-            .zip(&members)
-            .filter(|(_, m)| **m)
-            .map(|(x, _)| x * x)
+        let fit = epipolar_distances(f1, f2, &members);
+        // a second scale takes one more degree of freedom: only where the fit leaves enough
+        let mixed = m >= MIX_MIN_MEMBERS;
+        let (relative, unit) = if mixed {
+            noise_mix(&fit, &members)
+        } else {
+            (0.0, 1.0)
+        };
+        let mut t = Tolerance {
+            base: 1.0,
+            relative,
+            unit,
+        };
+        let nu = m - FIT_PARAMETERS - usize::from(mixed);
+        let squares: f64 = (0..n)
+            .filter(|&i| members[i])
+            .map(|i| (fit.d[i] / t.weight(fit.spread[i])).powi(2))
             .sum();
-        let t = crate::algebra::student::two_sided_quantile(MEMBER_LEVEL, nu as u32);
-        tolerance = t * (squares / nu as f64).sqrt();
-        let next = within(&d, &members, tolerance);
+        t.base = crate::algebra::student::two_sided_quantile(MEMBER_LEVEL, nu as u32)
+            * (squares / nu as f64).sqrt();
+        let next = within(&fit.d, &members, &t.of(&fit));
+        tolerance = Some(t);
         if next == members {
             break;
         }
         members = next;
     }
-    if tolerance.is_finite() {
-        tolerance.max(floor)
-    } else {
-        floor
+    match tolerance {
+        Some(t) if t.base.is_finite() && t.base >= floor.base => t,
+        Some(t) if t.base.is_finite() => Tolerance {
+            base: floor.base,
+            ..t
+        },
+        _ => floor,
     }
 }
 
@@ -109,9 +225,19 @@ fn four_point_subsets(n: usize) -> Vec<[usize; 4]> {
         .collect()
 }
 
+/// The points' distances from one fitted epipolar geometry.
+struct Distances {
+    /// Every point's epipolar distance, relative to frame 2's size.
+    d: Vec<f64>,
+    /// Every point's coordinates' squares weighed by the line's coefficients,
+    /// (a²x₁² + b²y₁² + c²x₂² + d²y₂²) / (a² + b² + c² + d²): how relative noise reaches its
+    /// distance.
+    spread: Vec<f64>,
+}
+
 /// Every point's epipolar distance (relative to frame 2's size) from the geometry fitted to
 /// the points `inside`.
-fn epipolar_distances(f1: &[Vector2<f64>], f2: &[Vector2<f64>], inside: &[bool]) -> Vec<f64> {
+fn epipolar_distances(f1: &[Vector2<f64>], f2: &[Vector2<f64>], inside: &[bool]) -> Distances {
     let idx: Vec<usize> = (0..f1.len()).filter(|&i| inside[i]).collect();
     let g1: Vec<Vector2<f64>> = idx.iter().map(|&i| f1[i]).collect();
     let g2: Vec<Vector2<f64>> = idx.iter().map(|&i| f2[i]).collect();
@@ -124,7 +250,8 @@ fn epipolar_distances(f1: &[Vector2<f64>], f2: &[Vector2<f64>], inside: &[bool])
         .map(|q| (q - m2).norm())
         .fold(f64::MIN_POSITIVE, f64::max);
     let norm = (c * c + d * d).sqrt().max(f64::MIN_POSITIVE);
-    (0..f1.len())
+    let all = (a * a + b * b + c * c + d * d).max(f64::MIN_POSITIVE);
+    let d_all = (0..f1.len())
         .map(|i| {
             (a * (f1[i].x - m1.x)
                 + b * (f1[i].y - m1.y)
@@ -134,46 +261,78 @@ fn epipolar_distances(f1: &[Vector2<f64>], f2: &[Vector2<f64>], inside: &[bool])
                 / norm
                 / size
         })
-        .collect()
+        .collect();
+    let spread = (0..f1.len())
+        .map(|i| {
+            let (p, q) = (f1[i], f2[i]);
+            (a * a * p.x * p.x + b * b * p.y * p.y + c * c * q.x * q.x + d * d * q.y * q.y) / all
+        })
+        .collect();
+    Distances { d: d_all, spread }
+}
+
+/// One point's membership.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Judged {
+    /// Whether it belongs to the body.
+    pub member: bool,
+    /// Its epipolar distance, relative to the image size.
+    pub distance: f64,
+    /// The largest distance it could have had as a member (its own, see [`Tolerance`]).
+    pub tolerance: f64,
 }
 
 /// Rigid-body membership with known correspondences. The epipolar geometry is fitted to all
-/// points; when some point lies beyond `tolerance` (relative to the image size), the fit
+/// points; when some point lies beyond its tolerance (relative to the image size), the fit
 /// starts instead from the four-point subset of least h-th distance (as in
-/// [`robust_tolerance`]: a foreign point cannot drag it), its points within `tolerance` are
-/// refitted until the members no longer change. Returns each point's membership and its
-/// final distance.
-pub fn membership(f1: &[Vector2<f64>], f2: &[Vector2<f64>], tolerance: f64) -> Vec<(bool, f64)> {
+/// [`robust_tolerance`]: a foreign point cannot drag it), its points within their tolerances
+/// are refitted until the members no longer change. Returns each point's membership, its
+/// final distance and its tolerance.
+pub fn membership(f1: &[Vector2<f64>], f2: &[Vector2<f64>], tolerance: &Tolerance) -> Vec<Judged> {
     let n = f1.len();
     let all = epipolar_distances(f1, f2, &vec![true; n]);
-    if n <= EPIPOLAR_DOF + 1 || all.iter().all(|d| *d <= tolerance) {
-        return all.iter().map(|d| (*d <= tolerance, *d)).collect();
+    let tol = tolerance.of(&all);
+    let judge = |fit: &Distances, inside: &[bool], tol: &[f64]| -> Vec<Judged> {
+        within(&fit.d, inside, tol)
+            .into_iter()
+            .zip(&fit.d)
+            .zip(tol)
+            .map(|((member, d), t)| Judged {
+                member,
+                distance: *d,
+                tolerance: *t,
+            })
+            .collect()
+    };
+    if n <= EPIPOLAR_DOF + 1 || all.d.iter().zip(&tol).all(|(d, t)| d <= t) {
+        return judge(&all, &vec![true; n], &tol);
     }
     let mut inside = least_median_subset(f1, f2);
-    let mut dist = epipolar_distances(f1, f2, &inside);
+    let mut fit = epipolar_distances(f1, f2, &inside);
     // each round refits on the points within the tolerance; the members settle in a few
     for _ in 0..n {
-        let next = within(&dist, &inside, tolerance);
+        let next = within(&fit.d, &inside, &tolerance.of(&fit));
         if next == inside || next.iter().filter(|m| **m).count() <= EPIPOLAR_DOF {
             break;
         }
         inside = next;
-        dist = epipolar_distances(f1, f2, &inside);
+        fit = epipolar_distances(f1, f2, &inside);
     }
-    let judged = within(&dist, &inside, tolerance);
-    judged.into_iter().zip(dist).collect()
+    let tol = tolerance.of(&fit);
+    judge(&fit, &inside, &tol)
 }
 
 /// The points within the tolerance of the fit to `inside`: a point of the fit is judged by
 /// its residual, one outside it by its distance from a line it did not help fit, whose
 /// variance is larger by the fit's mean leverage: (1 + 4/m) for m fitted points (a
 /// prediction interval), so that a member once set apart is judged alike.
-fn within(dist: &[f64], inside: &[bool], tolerance: f64) -> Vec<bool> {
+fn within(dist: &[f64], inside: &[bool], tolerance: &[f64]) -> Vec<bool> {
     let m = inside.iter().filter(|x| **x).count().max(1);
-    let outside = tolerance * (1.0 + FIT_PARAMETERS as f64 / m as f64).sqrt();
+    let outside = (1.0 + FIT_PARAMETERS as f64 / m as f64).sqrt();
     dist.iter()
         .zip(inside)
-        .map(|(d, i)| *d <= if *i { tolerance } else { outside })
+        .zip(tolerance)
+        .map(|((d, i), t)| *d <= if *i { *t } else { t * outside })
         .collect()
 }
 
@@ -186,7 +345,7 @@ fn least_median_subset(f1: &[Vector2<f64>], f2: &[Vector2<f64>]) -> Vec<bool> {
     for q in four_point_subsets(n) {
         let mut inside = vec![false; n];
         q.iter().for_each(|&i| inside[i] = true);
-        let mut d = epipolar_distances(f1, f2, &inside);
+        let mut d = epipolar_distances(f1, f2, &inside).d;
         d.sort_by(f64::total_cmp);
         if d[h - 1] < best.0 {
             best = (d[h - 1], inside);
