@@ -15,7 +15,8 @@
 use nalgebra::{Rotation3, Vector2, Vector3};
 use orthocheck::model::{rng, Body, Motion, NoiseModel, Scene};
 use orthocheck::sfm::{
-    bundle_adjust, reconstruct, BundleOptions, Frame, Observations, Options, Reconstruction,
+    bundle_adjust, reconstruct, BundleOptions, Component, Frame, Observations, Options,
+    Reconstruction,
 };
 use rand::Rng;
 
@@ -110,42 +111,42 @@ fn main() {
     let mut table: [[Cell; 7]; 3] = [[(0, 0, 0, 0, 0); 7]; 3];
     // scenes that reached the optimum and still warned
     let mut alarms = 0usize;
+    let only: Option<u64> = std::env::var("ONLY").ok().and_then(|v| v.parse().ok());
     for s in 0..scenes {
+        if only.is_some_and(|o| o != s) {
+            continue;
+        }
         let m = scene(seed.wrapping_mul(7_919).wrapping_add(s));
         let band = ((m.elevation - 10.0) / 20.0).floor().clamp(0.0, 2.0) as usize;
         let cell = &mut table[band][m.longest - 2];
         cell.0 += 1;
-        let truth = bundle_adjust(&m.obs, &m.truth, &loop_only());
-        let best = truth.ok().and_then(|a| a.report.costs.last().copied());
         match reconstruct(&m.obs, &Options::default()) {
             Ok(o) => {
-                // one group over every frame: its cost against the truth's; a split into
-                // groups or a dropped frame is not the optimum of the whole
-                let whole = o.components.len() == 1 && o.dropped_frames.is_empty();
-                let got = o.components[0]
-                    .bundle
-                    .as_ref()
-                    .and_then(|b| b.costs.last().copied());
-                let reached =
-                    whole && matches!((got, best), (Some(a), Some(b)) if a <= b * (1.0 + 1e-6));
+                // every group against the optimum of its own observations started from the
+                // truth (one group over every frame: the whole scene's)
+                let reached = o.components.iter().all(|c| reaches(&m, c));
+                cell.4 += usize::from(o.components.len() > 1 || !o.dropped_frames.is_empty());
+                let warned = !o.warnings().is_empty();
                 if reached {
                     cell.1 += 1;
-                    alarms += usize::from(!o.warnings().is_empty());
-                    if std::env::var_os("SHOW_ERRORS").is_some() && !o.warnings().is_empty() {
+                    alarms += usize::from(warned);
+                    if std::env::var_os("SHOW_ERRORS").is_some() && warned {
                         eprintln!("scene {s}: reached, warned: {}", o.warnings().join(" | "));
                     }
-                } else if !o.warnings().is_empty() {
+                } else if warned {
                     cell.2 += 1;
                     if std::env::var_os("SHOW_ERRORS").is_some() {
                         eprintln!("scene {s}: missed, warned: {}", o.warnings().join(" | "));
                     }
-                } else if !whole {
-                    cell.4 += 1;
                 } else if std::env::var_os("SHOW_ERRORS").is_some() {
-                    eprintln!(
-                        "scene {s}: silent, cost {got:?} against {best:?}; {}",
-                        o.components[0].reconstruction.method.join("; ")
-                    );
+                    for c in &o.components {
+                        eprintln!(
+                            "scene {s}: silent miss, frames {:?}, cost {:?}; {}",
+                            c.frames,
+                            c.bundle.as_ref().and_then(|b| b.costs.last()),
+                            c.reconstruction.method.join("; ")
+                        );
+                    }
                 }
             }
             Err(e) => {
@@ -160,11 +161,49 @@ fn main() {
     println!("warned although the optimum was reached: {alarms}");
 }
 
-/// Per cell: scenes, reached, misses warned, refused, split or with frames dropped.
+/// Whether a group's adjustment reached the optimum that the adjustment of the same
+/// observations started from the truth reaches (within 10⁻⁶ relative, or lower).
+fn reaches(m: &Made, c: &Component) -> bool {
+    let index: std::collections::HashMap<&str, usize> = m
+        .obs
+        .names
+        .iter()
+        .enumerate()
+        .map(|(j, n)| (n.as_str(), j))
+        .collect();
+    let cols: Vec<usize> = c
+        .reconstruction
+        .names
+        .iter()
+        .map(|n| index[n.as_str()])
+        .collect();
+    let obs = Observations {
+        names: c.reconstruction.names.clone(),
+        frames: c
+            .frames
+            .iter()
+            .map(|&f| cols.iter().map(|&j| m.obs.frames[f - 1][j]).collect())
+            .collect(),
+    };
+    let truth = Reconstruction {
+        names: obs.names.clone(),
+        points: cols.iter().map(|&j| m.truth.points[j]).collect(),
+        frames: c.frames.iter().map(|&f| m.truth.frames[f - 1]).collect(),
+        ..m.truth.clone()
+    };
+    let best = bundle_adjust(&obs, &truth, &loop_only())
+        .ok()
+        .and_then(|a| a.report.costs.last().copied());
+    let got = c.bundle.as_ref().and_then(|b| b.costs.last().copied());
+    matches!((got, best), (Some(a), Some(b)) if a <= b * (1.0 + 1e-6))
+}
+
+/// Per cell: scenes, reached, misses warned, refused, split into groups or with frames
+/// dropped (each group judged on its own).
 type Cell = (usize, usize, usize, usize, usize);
 
 fn print_table(table: &[[Cell; 7]; 3]) {
-    println!("reached the truth-started optimum (of scenes; misses warned; refused; split into groups or frames dropped, unwarned), by elevation and longest track:\n");
+    println!("reached the truth-started optimum (of scenes; misses warned; refused; scenes split into groups or with frames dropped, each group judged on its own), by elevation and longest track:\n");
     println!("| elevation | L = 2 | 3 | 4 | 5 | 6 | 7 | 8 | all |");
     println!("|---|---:|---:|---:|---:|---:|---:|---:|---:|");
     let mut total = (0, 0, 0, 0, 0);
@@ -194,15 +233,15 @@ fn print_table(table: &[[Cell; 7]; 3]) {
             total.4 + sum.4,
         );
     }
-    let silent = total.0 - total.1 - total.2 - total.3 - total.4;
+    let silent = total.0 - total.1 - total.2 - total.3;
     println!(
-        "\nall: {} of {} reached ({:.1} %); of the misses {} warned, {} refused, {} split or with frames dropped, {} silent",
+        "\nall: {} of {} reached ({:.1} %); of the misses {} warned, {} refused, {} silent; {} scenes split into groups or with frames dropped",
         total.1,
         total.0,
         100.0 * total.1 as f64 / total.0.max(1) as f64,
         total.2,
         total.3,
-        total.4,
-        silent
+        silent,
+        total.4
     );
 }

@@ -10,6 +10,8 @@ use super::{
 };
 use crate::numfmt::sig;
 
+mod starts;
+
 /// Options of [`reconstruct`].
 #[derive(Clone, Debug, PartialEq)]
 pub struct Options {
@@ -161,9 +163,8 @@ fn component(obs: &Observations, g: &Group, options: &Options) -> Result<Compone
             (f.reconstruction, f.bundle, Some(f.report), rms)
         }
         None => {
-            let (mut rec, bundle) = fit(used, options, None, &numbers)?;
+            let (rec, bundle) = starts::best_fit(used, options, &numbers)?;
             let rms = rec.rms(used);
-            rec.warnings.extend(uneven_warning(used, &rec, &numbers));
             (rec, bundle, None, rms)
         }
     };
@@ -306,7 +307,11 @@ pub(crate) fn fit(
         None => with_gaps(used, options, numbers)?,
     };
     let report = if options.bundle {
-        adjust(used, &mut rec, options, huber)?
+        let bo = bundle::BundleOptions {
+            huber,
+            ..bundle::BundleOptions::with(options)
+        };
+        adjust(used, &mut rec, &bo)?
     } else {
         None
     };
@@ -323,8 +328,7 @@ pub(crate) fn fit(
 fn adjust(
     used: &Observations,
     rec: &mut Reconstruction,
-    options: &Options,
-    huber: Option<f64>,
+    bo: &bundle::BundleOptions,
 ) -> Result<Option<BundleReport>, Error> {
     let frames = used.frames.len();
     let skipped = if frames > crate::limits::BUNDLE_FRAMES {
@@ -355,11 +359,7 @@ fn adjust(
         ));
         return Ok(None);
     }
-    let bo = bundle::BundleOptions {
-        huber,
-        ..bundle::BundleOptions::with(options)
-    };
-    let adjusted = bundle::bundle_adjust(used, rec, &bo)?;
+    let adjusted = bundle::bundle_adjust(used, rec, bo)?;
     *rec = adjusted.reconstruction;
     Ok(Some(adjusted.report))
 }

@@ -186,3 +186,60 @@ fn a_frame_that_fits_far_worse_than_the_others_is_warned_of() {
         "{w}"
     );
 }
+
+/// Tracks of three frames on a turntable (80 points, 24 frames, 45°, 0.5 % noise): the
+/// chain of frame pairs from frame 1 reaches a local optimum and warns; the pipeline starts
+/// again from other frames, keeps the fit of least cost, and that is the optimum the
+/// adjustment started from the truth reaches. Where no start reaches it, the scenes of the
+/// same kind (other seeds) end warned, never silent (`turntable_family`, docs/limits.md).
+#[test]
+fn a_warned_first_start_is_replaced_by_the_best_of_the_others() {
+    use orthocheck_core::sfm::turntable::Turntable;
+    let t = Turntable {
+        points: 80,
+        frames: 24,
+        window: 3,
+        elevation: 45f64.to_radians(),
+        noise: Some(0.005),
+        seed: 5,
+    };
+    let (scene, obs) = t.generate();
+    let out = reconstruct(&obs, &Options::default()).unwrap();
+    let c = out.into_single().unwrap();
+    let method = c.reconstruction.method.join("; ");
+    assert!(
+        method.contains("the first fit warned or failed: of 9 starts")
+            && method.contains("kept: the chain from frame 13 on"),
+        "{method}"
+    );
+    assert!(
+        c.reconstruction.warnings.is_empty(),
+        "{:?}",
+        c.reconstruction.warnings
+    );
+    let truth = Reconstruction {
+        names: scene.body.names.clone(),
+        points: scene.body.points.clone(),
+        frames: scene
+            .motions
+            .iter()
+            .map(|m| Frame {
+                rotation: *m.rotation.matrix(),
+                translation: m.translation,
+            })
+            .collect(),
+        method: Vec::new(),
+        conditioning: None,
+        warnings: Vec::new(),
+    };
+    let best = bundle_adjust(&obs, &truth, &BundleOptions::default()).unwrap();
+    let (got, best) = (
+        *c.bundle.unwrap().costs.last().unwrap(),
+        *best.report.costs.last().unwrap(),
+    );
+    // distinct optima differ by factors on such scenes, far beyond 10⁻⁶
+    assert!(
+        got <= best * (1.0 + 1e-6),
+        "cost {got} against the truth-started {best}"
+    );
+}

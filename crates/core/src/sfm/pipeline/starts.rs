@@ -1,0 +1,217 @@
+//! Several starts for tracks with gaps, the best kept. Variable projection from the chain
+//! of frame pairs can reach a local optimum, or a metric upgrade that has to be clipped,
+//! when the tracks are short: the chain's error grows along it. Where the first fit warns
+//! (or fails), the chain is started again from other frames, forwards and backwards
+//! ([`CHAIN_STARTS`]), and from the largest complete block; each is adjusted briefly
+//! ([`SCREEN_ITERATIONS`]), the one of least cost is adjusted in full, and the fit of least
+//! cost, it or the first, is kept with its own warnings.
+
+use rayon::prelude::*;
+
+use super::{adjust, fit, uneven_warning, with_gaps};
+use crate::numfmt::sig;
+use crate::sfm::bundle::BundleOptions;
+use crate::sfm::{BundleReport, Error, Observations, Options, Reconstruction};
+
+/// Iterations each other start is adjusted for before the best is chosen; the chosen one
+/// then goes on to the full adjustment (with its standard errors).
+pub const SCREEN_ITERATIONS: usize = 20;
+
+/// A fit and its adjustment's report.
+type Fitted = (Reconstruction, Option<BundleReport>);
+
+/// The first fit ([`fit`], with the uneven-frames check); where it warns or fails on tracks
+/// with gaps, the best of the other starts ([`orders`] and the largest complete block) by
+/// the adjustment's final cost. Errors other than an unreachable part or a numerical failure
+/// (too large, degenerate) are returned as they are.
+pub(super) fn best_fit(
+    used: &Observations,
+    options: &Options,
+    numbers: &[usize],
+) -> Result<Fitted, Error> {
+    let first = fit(used, options, None, numbers).map(|(mut rec, b)| {
+        rec.warnings.extend(uneven_warning(used, &rec, numbers));
+        (rec, b)
+    });
+    let retry = match &first {
+        Ok((rec, b)) => !rec.warnings.is_empty() && b.is_some(),
+        Err(Error::Unreachable(_) | Error::Numerical(_)) => true,
+        Err(_) => false,
+    };
+    if !retry || !options.bundle || used.complete().is_some() {
+        return first;
+    }
+    let screened = screen_starts(used, options, numbers);
+    let tried = 1 + orders(used.frames.len()).len() + 1;
+    // the best few of the others adjusted in full, on every core
+    let full = BundleOptions::with(options);
+    let finished: Vec<(Fitted, String)> = screened
+        .into_par_iter()
+        .take(FINISHED)
+        .filter_map(|((rec, _), name)| adjusted(used, numbers, rec, &full).map(|f| (f, name)))
+        .collect();
+    let mut fits: Vec<(Fitted, String)> = Vec::new();
+    if let Ok(f) = &first {
+        fits.push((f.clone(), "the first".to_string()));
+    }
+    fits.extend(finished);
+    // the least cost, the earlier on a tie (the first before the others)
+    let Some(best) = (0..fits.len()).min_by(|&i, &j| cost(&fits[i].0).total_cmp(&cost(&fits[j].0)))
+    else {
+        return first;
+    };
+    let least = cost(&fits[best].0);
+    let reached = fits
+        .iter()
+        .filter(|f| cost(&f.0) <= least * (1.0 + AGREE))
+        .count();
+    let ((mut rec, b), name) = fits.swap_remove(best);
+    rec.method.push(format!(
+        "the first fit warned or failed: of {tried} starts, the one of least final cost ({}) kept: {name}",
+        sig(least)
+    ));
+    if reached < 2 {
+        rec.warnings.push(format!(
+            "the first start's fit warned or failed, and of the {} fits finished from {tried} starts only one reached the least cost ({}): a lower optimum may exist",
+            fits.len() + 1,
+            sig(least)
+        ));
+    }
+    Ok((rec, b))
+}
+
+/// Fits finished in full from the other starts, the best by their screening's cost.
+pub const FINISHED: usize = 2;
+
+/// Two fits agree on their optimum when their costs are within this, relative: both stop
+/// when a step gains less than the adjustment's convergence test allows, far below the
+/// gaps between distinct optima (which differ by factors on the turntable family).
+const AGREE: f64 = 1e-6;
+
+/// The other starts ([`orders`], the largest complete block), each adjusted for
+/// [`SCREEN_ITERATIONS`] on every core, by cost (the earlier start on a tie); those that
+/// fail are left out.
+fn screen_starts(
+    used: &Observations,
+    options: &Options,
+    numbers: &[usize],
+) -> Vec<(Fitted, String)> {
+    let screen = BundleOptions {
+        max_iterations: SCREEN_ITERATIONS.min(options.max_iterations),
+        standard_errors: false,
+        ..BundleOptions::with(options)
+    };
+    let mut starts: Vec<(String, Option<Vec<usize>>)> = orders(used.frames.len())
+        .into_iter()
+        .map(|(name, order)| (name, Some(order)))
+        .collect();
+    starts.push(("the largest complete block".to_string(), None));
+    let mut screened: Vec<(Fitted, String)> = starts
+        .into_par_iter()
+        .filter_map(|(name, order)| {
+            let f = match &order {
+                Some(order) => from_order(used, options, numbers, order, &screen),
+                None => from_block(used, numbers, &screen),
+            };
+            f.map(|f| (f, name))
+        })
+        .collect();
+    // a stable sort: the earlier start first on a tie
+    screened.sort_by(|a, b| cost(&a.0).total_cmp(&cost(&b.0)));
+    screened
+}
+
+/// The adjustment's final cost (½ Σ ‖r‖²); infinite without one.
+fn cost(f: &Fitted) -> f64 {
+    f.1.as_ref()
+        .and_then(|b| b.costs.last().copied())
+        .filter(|c| c.is_finite())
+        .unwrap_or(f64::INFINITY)
+}
+
+/// Points along the frames the chain is started again from, each forwards and backwards:
+/// 0, ¼, ½ and ¾ of the way (the first forwards is the first start). Measured on the
+/// turntable family (docs/limits.md): two points reached the optimum in 85 % of scenes,
+/// four in 87.5 %, six in 87.8 % at half as much work again.
+pub const CHAIN_STARTS: usize = 4;
+
+/// The other orders of the frames the chain is started in (see [`CHAIN_STARTS`]): from a
+/// frame on, the frames before it appended (as a turntable comes round), and backwards
+/// from the frame before it.
+fn orders(k: usize) -> Vec<(String, Vec<usize>)> {
+    let mut out = Vec::new();
+    for i in 0..CHAIN_STARTS {
+        let shift = i * k / CHAIN_STARTS;
+        if shift > 0 {
+            out.push((
+                format!("the chain from frame {} on", shift + 1),
+                (0..k).map(|f| (f + shift) % k).collect(),
+            ));
+        }
+        out.push((
+            format!("the chain backwards from frame {}", (shift + k - 1) % k + 1),
+            (0..k).map(|f| (shift + 2 * k - 1 - f) % k).collect(),
+        ));
+    }
+    out
+}
+
+/// The fit from the chain over the frames in `order` (`order[i]`: the frame taken i-th),
+/// brought back to the frames' own order and adjusted.
+fn from_order(
+    used: &Observations,
+    options: &Options,
+    numbers: &[usize],
+    order: &[usize],
+    bo: &BundleOptions,
+) -> Option<Fitted> {
+    let permuted = Observations {
+        names: used.names.clone(),
+        frames: order.iter().map(|&f| used.frames[f].clone()).collect(),
+    };
+    let renumbered: Vec<usize> = order.iter().map(|&f| numbers[f]).collect();
+    let mut rec = with_gaps(&permuted, options, &renumbered).ok()?;
+    let mut frames = rec.frames.clone();
+    for (i, &f) in order.iter().enumerate() {
+        frames[f] = rec.frames[i];
+    }
+    rec.frames = frames;
+    rec.align_to_first();
+    rec.centre();
+    screened(used, rec, bo)
+}
+
+/// The fit from the largest complete block, grown.
+fn from_block(used: &Observations, numbers: &[usize], bo: &BundleOptions) -> Option<Fitted> {
+    let rec = crate::sfm::gaps::initial_numbered(used, numbers).ok()?;
+    screened(used, rec, bo)
+}
+
+/// `rec` adjusted for the screening; its warnings and steps stay the start's (the short
+/// adjustment's stop is not the final fit's).
+fn screened(used: &Observations, mut rec: Reconstruction, bo: &BundleOptions) -> Option<Fitted> {
+    let (warnings, method) = (rec.warnings.clone(), rec.method.clone());
+    let report = adjust(used, &mut rec, bo).ok()?;
+    if !rec.is_finite() {
+        return None;
+    }
+    rec.warnings = warnings;
+    rec.method = method;
+    Some((rec, report))
+}
+
+/// `rec` adjusted, with the uneven-frames check; `None` when the adjustment fails or leaves
+/// a non-finite coordinate.
+fn adjusted(
+    used: &Observations,
+    numbers: &[usize],
+    mut rec: Reconstruction,
+    bo: &BundleOptions,
+) -> Option<Fitted> {
+    let report = adjust(used, &mut rec, bo).ok()?;
+    if !rec.is_finite() {
+        return None;
+    }
+    rec.warnings.extend(uneven_warning(used, &rec, numbers));
+    Some((rec, report))
+}
