@@ -114,6 +114,8 @@ fn main() {
     let mut table: [[Cell; 7]; 3] = [[(0, 0, 0, 0, 0); 7]; 3];
     // scenes that reached the optimum and still warned
     let mut alarms = 0usize;
+    // scenes reached as one group over every frame (the whole scene's optimum)
+    let mut whole = 0usize;
     let only: Option<u64> = std::env::var("ONLY").ok().and_then(|v| v.parse().ok());
     for s in 0..scenes {
         if only.is_some_and(|o| o != s) {
@@ -137,6 +139,7 @@ fn main() {
                 if reached {
                     cell.1 += 1;
                     alarms += usize::from(warned);
+                    whole += usize::from(o.components.len() == 1 && o.dropped_frames.is_empty());
                     if std::env::var_os("SHOW_ERRORS").is_some() && warned {
                         eprintln!("scene {s}: reached, warned: {}", o.warnings().join(" | "));
                     }
@@ -165,6 +168,7 @@ fn main() {
     }
     print_table(&table);
     println!("warned although the optimum was reached: {alarms}");
+    println!("reached as one group over every frame (the whole scene's optimum): {whole}");
 }
 
 /// A group's final cost, and the cost the adjustment of the same observations started from

@@ -84,9 +84,10 @@ fn report_html_in_headless_chromium() {
     let r = crate::common::report().expect("the paper runs");
     let page = report_page();
     let dir = tempfile::tempdir().unwrap();
-    let chrome = Browser {
-        path: browser,
-        profile: dir.path().join("profile"),
+    // one profile per launch: the five launches run at once
+    let chrome = |name: &str| Browser {
+        path: browser.clone(),
+        profile: dir.path().join(format!("profile-{name}")),
     };
     let html = dir.path().join("report.html");
     std::fs::write(&html, &page).unwrap();
@@ -102,17 +103,24 @@ fn report_html_in_headless_chromium() {
         ),
     )
     .unwrap();
-    let out = chrome.run(&["--dump-dom"], &html);
-    check_links(&String::from_utf8_lossy(&out.stdout), r.claims.len());
-    for width in [1400, 400] {
-        check_width(&chrome, &probe, width);
-        check_screenshot(
-            &chrome,
-            &html,
-            &dir.path().join(format!("shot-{width}.png")),
-            width,
-        );
-    }
+    std::thread::scope(|s| {
+        s.spawn(|| {
+            let out = chrome("dom").run(&["--dump-dom"], &html);
+            check_links(&String::from_utf8_lossy(&out.stdout), r.claims.len());
+        });
+        for width in [1400, 400] {
+            let (chrome, probe, html, dir) = (&chrome, &probe, &html, dir.path());
+            s.spawn(move || check_width(&chrome(&format!("width-{width}")), probe, width));
+            s.spawn(move || {
+                check_screenshot(
+                    &chrome(&format!("shot-{width}")),
+                    html,
+                    &dir.join(format!("shot-{width}.png")),
+                    width,
+                )
+            });
+        }
+    });
 }
 
 /// axe-core (the rules tagged WCAG 2.0 and 2.1, levels A and AA) finds no violation on the
