@@ -9,7 +9,8 @@
 //! [−ε, ε]: a tracker's pixel noise), ε uniform in 0.1 %–1 %; then 1–3 foreign
 //! points, each with images drawn anew in each frame within the body's image box. σ is the
 //! members' rms distance from the body's true (noise-free) epipolar line; a foreign point
-//! counts as far when its distance from that line exceeds 10 σ.
+//! counts as far when its distance from that line exceeds 10 σ. `SHOW_REFUSED=1` names the
+//! scenes refused as no rigid body.
 
 use nalgebra::Vector2;
 use orthocheck::derivations::identity;
@@ -43,6 +44,77 @@ struct Tally {
     refused: usize,
 }
 
+/// One seeded scene: the m members' clean images and every point's noisy ones (the foreign
+/// points last).
+fn scene(seed: u64, absolute: bool) -> (Vec<[Vector2<f64>; 2]>, Vec<[Vector2<f64>; 2]>) {
+    let mut g = rng(seed);
+    let m = g.random_range(6..=50usize);
+    let foreign = g.random_range(1..=3usize);
+    let eps = g.random_range(0.001..0.01);
+    let clean = Scene::random(m, 2, g.random()).tracks();
+    let noisy = if absolute {
+        let mut t = clean.clone();
+        for y in t.frames.iter_mut().flatten() {
+            *y += Vector2::new(g.random_range(-eps..eps), g.random_range(-eps..eps));
+        }
+        t
+    } else {
+        NoiseModel::RelativeCoordinate { eps }.perturb_tracks(&clean, &mut g)
+    };
+    let pair = |t: &orthocheck::model::Tracks, j: usize| [t.frames[0][j], t.frames[1][j]];
+    let clean_pts: Vec<[Vector2<f64>; 2]> = (0..m).map(|j| pair(&clean, j)).collect();
+    let mut pts: Vec<[Vector2<f64>; 2]> = (0..m).map(|j| pair(&noisy, j)).collect();
+    // each frame's image box, the foreign points drawn in it
+    let boxes: Vec<(Vector2<f64>, Vector2<f64>)> = (0..2)
+        .map(|f| {
+            let lo = pts
+                .iter()
+                .fold(Vector2::repeat(f64::INFINITY), |a, p| a.inf(&p[f]));
+            let hi = pts
+                .iter()
+                .fold(Vector2::repeat(f64::NEG_INFINITY), |a, p| a.sup(&p[f]));
+            (lo, hi)
+        })
+        .collect();
+    for _ in 0..foreign {
+        let mut img = |(lo, hi): (Vector2<f64>, Vector2<f64>)| {
+            Vector2::new(g.random_range(lo.x..hi.x), g.random_range(lo.y..hi.y))
+        };
+        let p = [img(boxes[0]), img(boxes[1])];
+        pts.push(p);
+    }
+    (clean_pts, pts)
+}
+
+/// One scene judged by the default tolerance, into its band's tally.
+fn tally(s: u64, clean: &[[Vector2<f64>; 2]], pts: &[[Vector2<f64>; 2]], band: &mut Tally) {
+    let m = clean.len();
+    let d = distances(clean, pts);
+    let sigma = (d[..m].iter().map(|x| x * x).sum::<f64>() / m as f64).sqrt();
+    let f1: Vec<Vector2<f64>> = pts.iter().map(|p| p[0]).collect();
+    let f2: Vec<Vector2<f64>> = pts.iter().map(|p| p[1]).collect();
+    let tolerance = identity::robust_tolerance(&f1, &f2);
+    let judged = identity::membership(&f1, &f2, &tolerance);
+    let inside: Vec<bool> = judged.iter().map(|j| j.member).collect();
+    band.scenes += 1;
+    band.members += m;
+    band.rejected += judged[..m].iter().filter(|j| !j.member).count();
+    for j in m..pts.len() {
+        if d[j] > 10.0 * sigma {
+            band.far += 1;
+            band.found += usize::from(!judged[j].member);
+        }
+    }
+    let refused = identity::members_rigid(&f1, &f2, &inside, tolerance.largest(&judged)).is_some();
+    if refused && std::env::var_os("SHOW_REFUSED").is_some() {
+        eprintln!(
+            "scene {s}: {m} members, {} kept, tolerance {tolerance:?}",
+            inside.iter().filter(|x| **x).count()
+        );
+    }
+    band.refused += usize::from(refused);
+}
+
 fn main() {
     let args: Vec<u64> = std::env::args()
         .skip(1)
@@ -54,79 +126,14 @@ fn main() {
     // bands of member counts: 6–9, 10–19, 20–50
     let mut bands: [Tally; 3] = Default::default();
     for s in 0..scenes {
-        let mut g = rng(seed.wrapping_mul(1_000_003).wrapping_add(s));
-        let m = g.random_range(6..=50usize);
-        let foreign = g.random_range(1..=3usize);
-        let eps = g.random_range(0.001..0.01);
-        let scene = Scene::random(m, 2, g.random());
-        let clean = scene.tracks();
-        let noisy = if absolute {
-            let mut t = clean.clone();
-            for y in t.frames.iter_mut().flatten() {
-                *y += Vector2::new(g.random_range(-eps..eps), g.random_range(-eps..eps));
-            }
-            t
-        } else {
-            NoiseModel::RelativeCoordinate { eps }.perturb_tracks(&clean, &mut g)
+        let (clean, pts) = scene(seed.wrapping_mul(1_000_003).wrapping_add(s), absolute);
+        let m = clean.len();
+        let band = match m {
+            ..10 => 0,
+            10..20 => 1,
+            _ => 2,
         };
-        let pair = |t: &orthocheck::model::Tracks, j: usize| [t.frames[0][j], t.frames[1][j]];
-        let clean_pts: Vec<[Vector2<f64>; 2]> = (0..m).map(|j| pair(&clean, j)).collect();
-        let mut pts: Vec<[Vector2<f64>; 2]> = (0..m).map(|j| pair(&noisy, j)).collect();
-        let lo = |f: usize, c: usize| pts.iter().map(|p| p[f][c]).fold(f64::INFINITY, f64::min);
-        let hi = |f: usize, c: usize| {
-            pts.iter()
-                .map(|p| p[f][c])
-                .fold(f64::NEG_INFINITY, f64::max)
-        };
-        let boxes: Vec<[(f64, f64); 2]> = (0..2)
-            .map(|f| [(lo(f, 0), hi(f, 0)), (lo(f, 1), hi(f, 1))])
-            .collect();
-        for _ in 0..foreign {
-            let img = |b: &[(f64, f64); 2], g: &mut dyn rand::RngCore| {
-                Vector2::new(
-                    g.random_range(b[0].0..b[0].1),
-                    g.random_range(b[1].0..b[1].1),
-                )
-            };
-            let p = [img(&boxes[0], &mut g), img(&boxes[1], &mut g)];
-            pts.push(p);
-        }
-        let d = distances(&clean_pts, &pts);
-        let sigma = (d[..m].iter().map(|x| x * x).sum::<f64>() / m as f64).sqrt();
-        let f1: Vec<Vector2<f64>> = pts.iter().map(|p| p[0]).collect();
-        let f2: Vec<Vector2<f64>> = pts.iter().map(|p| p[1]).collect();
-        let tolerance = identity::robust_tolerance(&f1, &f2);
-        let judged = identity::membership(&f1, &f2, &tolerance);
-        let inside: Vec<bool> = judged.iter().map(|j| j.member).collect();
-        let band = &mut bands[if m < 10 {
-            0
-        } else if m < 20 {
-            1
-        } else {
-            2
-        }];
-        band.scenes += 1;
-        band.members += m;
-        band.rejected += judged[..m].iter().filter(|j| !j.member).count();
-        for j in m..pts.len() {
-            if d[j] > 10.0 * sigma {
-                band.far += 1;
-                band.found += usize::from(!judged[j].member);
-            }
-        }
-        if std::env::var_os("SHOW_REFUSED").is_some()
-            && identity::members_rigid(&f1, &f2, &inside, tolerance.largest(&f1, &f2, &inside))
-                .is_some()
-        {
-            eprintln!(
-                "scene {s}: m {m} eps {eps} foreign {foreign} tol {tolerance:?} members {}",
-                inside.iter().filter(|x| **x).count()
-            );
-        }
-        band.refused += usize::from(
-            identity::members_rigid(&f1, &f2, &inside, tolerance.largest(&f1, &f2, &inside))
-                .is_some(),
-        );
+        tally(s, &clean, &pts, &mut bands[band]);
     }
     println!("| members | scenes | true members rejected | foreign > 10 σ found | refused as no rigid body |");
     println!("|---|---:|---:|---:|---:|");

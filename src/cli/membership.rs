@@ -23,7 +23,8 @@ pub struct Args {
     /// is refitted to its points, the noise's mix of one scale and a scale growing with the
     /// coordinates is estimated (from 10 members), and each point's tolerance is its own
     /// standard deviation times Student's t at 99 % two-sided, so that about 1 % of true
-    /// members are rejected at most (docs/limits.md, "Membership's tolerance").
+    /// members are rejected at most from 10 members (2–3 % below; docs/limits.md,
+    /// "Membership's tolerance").
     #[arg(long, allow_negative_numbers = true)]
     tolerance: Option<f64>,
     /// JSON output.
@@ -55,7 +56,7 @@ pub fn run(a: Args) -> Result<(), Error> {
     );
     let m = identity::membership(&t.frames[0], &t.frames[1], &tolerance);
     let inside: Vec<bool> = m.iter().map(|j| j.member).collect();
-    let largest = tolerance.largest(&t.frames[0], &t.frames[1], &inside);
+    let largest = tolerance.largest(&m);
     if let Some(d) = identity::members_rigid(&t.frames[0], &t.frames[1], &inside, largest) {
         let hint = if from_data {
             "; the tolerance came from the data's own noise: a larger --tolerance admits more points, a smaller one fewer"

@@ -66,9 +66,15 @@ impl Tolerance {
         }
     }
 
-    /// The weight w of a point whose coordinates' squares, weighed by the line, are `spread`.
+    /// The weight w of a point whose coordinates' squares, weighed by the line, are `spread`;
+    /// 1 (one scale) when λ is not in (0, 1] or u² is not a positive number.
     fn weight(&self, spread: f64) -> f64 {
-        if self.relative == 0.0 {
+        let usable = self.relative > 0.0
+            && self.relative <= 1.0
+            && self.unit > 0.0
+            && self.unit.is_finite()
+            && spread.is_finite();
+        if !usable {
             return 1.0;
         }
         ((1.0 - self.relative) + self.relative * spread / self.unit).sqrt()
@@ -82,10 +88,15 @@ impl Tolerance {
             .collect()
     }
 
-    /// The largest of the points' tolerances (what the rigidity check may take as noise).
-    pub fn largest(&self, f1: &[Vector2<f64>], f2: &[Vector2<f64>], members: &[bool]) -> f64 {
-        let fit = epipolar_distances(f1, f2, members);
-        self.of(&fit).into_iter().fold(self.base, f64::max)
+    /// The largest of the members' tolerances (what the rigidity check may take as their
+    /// noise); `base` when there are none.
+    pub fn largest(&self, judged: &[Judged]) -> f64 {
+        judged
+            .iter()
+            .filter(|j| j.member)
+            .map(|j| j.tolerance)
+            .reduce(f64::max)
+            .unwrap_or(self.base)
     }
 }
 
@@ -183,7 +194,7 @@ pub fn robust_tolerance(f1: &[Vector2<f64>], f2: &[Vector2<f64>]) -> Tolerance {
             .sum();
         t.base = crate::algebra::student::two_sided_quantile(MEMBER_LEVEL, nu as u32)
             * (squares / nu as f64).sqrt();
-        let next = within(&fit.d, &members, &t.of(&fit));
+        let next = within(&fit.d, &members, &t.of(&fit), t.base);
         tolerance = Some(t);
         if next == members {
             break;
@@ -278,7 +289,8 @@ pub struct Judged {
     pub member: bool,
     /// Its epipolar distance, relative to the image size.
     pub distance: f64,
-    /// The largest distance it could have had as a member (its own, see [`Tolerance`]).
+    /// The largest distance it could have had as a member: its own tolerance (see
+    /// [`Tolerance`]), wider by the fit's own error for a point outside the fit.
     pub tolerance: f64,
 }
 
@@ -293,14 +305,13 @@ pub fn membership(f1: &[Vector2<f64>], f2: &[Vector2<f64>], tolerance: &Toleranc
     let all = epipolar_distances(f1, f2, &vec![true; n]);
     let tol = tolerance.of(&all);
     let judge = |fit: &Distances, inside: &[bool], tol: &[f64]| -> Vec<Judged> {
-        within(&fit.d, inside, tol)
-            .into_iter()
-            .zip(&fit.d)
-            .zip(tol)
-            .map(|((member, d), t)| Judged {
-                member,
+        fit.d
+            .iter()
+            .zip(thresholds(inside, tol, tolerance.base))
+            .map(|(d, t)| Judged {
+                member: *d <= t,
                 distance: *d,
-                tolerance: *t,
+                tolerance: t,
             })
             .collect()
     };
@@ -311,7 +322,7 @@ pub fn membership(f1: &[Vector2<f64>], f2: &[Vector2<f64>], tolerance: &Toleranc
     let mut fit = epipolar_distances(f1, f2, &inside);
     // each round refits on the points within the tolerance; the members settle in a few
     for _ in 0..n {
-        let next = within(&fit.d, &inside, &tolerance.of(&fit));
+        let next = within(&fit.d, &inside, &tolerance.of(&fit), tolerance.base);
         if next == inside || next.iter().filter(|m| **m).count() <= EPIPOLAR_DOF {
             break;
         }
@@ -322,17 +333,27 @@ pub fn membership(f1: &[Vector2<f64>], f2: &[Vector2<f64>], tolerance: &Toleranc
     judge(&fit, &inside, &tol)
 }
 
-/// The points within the tolerance of the fit to `inside`: a point of the fit is judged by
-/// its residual, one outside it by its distance from a line it did not help fit, whose
-/// variance is larger by the fit's mean leverage: (1 + 4/m) for m fitted points (a
-/// prediction interval), so that a member once set apart is judged alike.
-fn within(dist: &[f64], inside: &[bool], tolerance: &[f64]) -> Vec<bool> {
+/// Each point's threshold under the fit to `inside`, from its own tolerance t_i = base ×
+/// w_i: a point of the fit is judged by its residual (t_i), one outside it by its distance
+/// from a line it did not help fit, whose variance is larger by the fit's own error: the
+/// mean leverage 4/m of m fitted points at the members' mean weight (1), so
+/// √(t_i² + base² · 4/m) (a prediction interval; with one scale, t √(1 + 4/m)), and a
+/// member once set apart is judged alike.
+fn thresholds(inside: &[bool], tolerance: &[f64], base: f64) -> Vec<f64> {
     let m = inside.iter().filter(|x| **x).count().max(1);
-    let outside = (1.0 + FIT_PARAMETERS as f64 / m as f64).sqrt();
-    dist.iter()
-        .zip(inside)
+    let fit = base * base * FIT_PARAMETERS as f64 / m as f64;
+    inside
+        .iter()
         .zip(tolerance)
-        .map(|((d, i), t)| *d <= if *i { *t } else { t * outside })
+        .map(|(i, t)| if *i { *t } else { (t * t + fit).sqrt() })
+        .collect()
+}
+
+/// The points within their thresholds ([`thresholds`]) of the fit to `inside`.
+fn within(dist: &[f64], inside: &[bool], tolerance: &[f64], base: f64) -> Vec<bool> {
+    dist.iter()
+        .zip(thresholds(inside, tolerance, base))
+        .map(|(d, t)| *d <= t)
         .collect()
 }
 
