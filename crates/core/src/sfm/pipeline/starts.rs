@@ -2,13 +2,15 @@
 //! of frame pairs can reach a local optimum, or a metric upgrade that has to be clipped,
 //! when the tracks are short: the chain's error grows along it. Where the first fit warns
 //! (or fails), the chain is started again from other frames, forwards and backwards
-//! ([`CHAIN_STARTS`]), and from the largest complete block; each is adjusted briefly
-//! ([`SCREEN_ITERATIONS`]), the one of least cost is adjusted in full, and the fit of least
-//! cost, it or the first, is kept with its own warnings.
+//! ([`CHAIN_STARTS`]; where most entries are missing, as variable projection needs; a chain
+//! that fails falls back on the largest complete block grown in its order), and from the
+//! largest complete block; each is adjusted briefly ([`SCREEN_ITERATIONS`]), the best
+//! [`FINISHED`] are adjusted in full, and the fit of least cost, theirs or the first's, is
+//! kept with its own warnings; a warning when only one of those fits reached that cost.
 
 use rayon::prelude::*;
 
-use super::{adjust, fit, uneven_warning};
+use super::{adjust, fit, uneven_warning, with_gaps};
 use crate::numfmt::sig;
 use crate::sfm::bundle::BundleOptions;
 use crate::sfm::{BundleReport, Error, Observations, Options, Reconstruction};
@@ -138,12 +140,9 @@ fn screen_starts(
     let tried = 1 + starts.len();
     let mut screened: Vec<(Fitted, String)> = starts
         .into_par_iter()
-        .filter_map(|(name, order)| {
-            let f = match &order {
-                Some(order) => from_order(used, options, order, &screen),
-                None => from_block(used, numbers, &screen),
-            };
-            f.map(|f| (f, name))
+        .filter_map(|(name, order)| match &order {
+            Some(order) => from_order(used, options, numbers, (&name, order), &screen),
+            None => from_block(used, numbers, &screen).map(|f| (f, name)),
         })
         .collect();
     // a stable sort: the earlier start first on a tie
@@ -191,19 +190,35 @@ fn orders(k: usize) -> Vec<(String, Vec<usize>)> {
     out
 }
 
-/// The fit from the chain over the frames in `order` (`order[i]`: the frame taken i-th),
-/// brought back to the frames' own order and adjusted.
+/// The fit from the frames in `order` (`order[i]`: the frame taken i-th) by the paths for
+/// gaps ([`with_gaps`]: the chain of frame pairs, or where its variable projection fails
+/// the largest complete block grown in that order, which the name then says), brought back
+/// to the frames' own order and adjusted.
 fn from_order(
     used: &Observations,
     options: &Options,
-    order: &[usize],
+    numbers: &[usize],
+    (name, order): (&str, &[usize]),
     bo: &BundleOptions,
-) -> Option<Fitted> {
+) -> Option<(Fitted, String)> {
     let permuted = Observations {
         names: used.names.clone(),
         frames: order.iter().map(|&f| used.frames[f].clone()).collect(),
     };
-    let mut rec = crate::sfm::missing::reconstruct(&permuted, options.seed).ok()?;
+    let renumbered: Vec<usize> = order.iter().map(|&f| numbers[f]).collect();
+    let mut rec = with_gaps(&permuted, options, &renumbered).ok()?;
+    let grown = rec
+        .method
+        .iter()
+        .any(|m| m.contains("largest complete block"));
+    let name = if grown {
+        format!(
+            "the largest complete block grown in the order from frame {} (its chain failed)",
+            order[0] + 1
+        )
+    } else {
+        name.to_string()
+    };
     let mut frames = rec.frames.clone();
     for (i, &f) in order.iter().enumerate() {
         frames[f] = rec.frames[i];
@@ -211,7 +226,7 @@ fn from_order(
     rec.frames = frames;
     rec.align_to_first();
     rec.centre();
-    screened(used, rec, bo)
+    screened(used, rec, bo).map(|f| (f, name))
 }
 
 /// The fit from the largest complete block, grown.
