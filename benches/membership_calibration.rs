@@ -44,9 +44,12 @@ struct Tally {
     refused: usize,
 }
 
+/// Each point's images in the two frames.
+type Pairs = Vec<[Vector2<f64>; 2]>;
+
 /// One seeded scene: the m members' clean images and every point's noisy ones (the foreign
 /// points last).
-fn scene(seed: u64, absolute: bool) -> (Vec<[Vector2<f64>; 2]>, Vec<[Vector2<f64>; 2]>) {
+fn scene(seed: u64, absolute: bool) -> (Pairs, Pairs) {
     let mut g = rng(seed);
     let m = g.random_range(6..=50usize);
     let foreign = g.random_range(1..=3usize);
