@@ -16,6 +16,7 @@ use nalgebra::Vector2;
 use orthocheck::derivations::identity;
 use orthocheck::derivations::two_frames::epipolar;
 use orthocheck::model::{rng, NoiseModel, Scene};
+use orthocheck_benches::{band, print_bands, Tally};
 use rand::Rng;
 
 /// Distances from the epipolar geometry fitted (exactly, noise-free) to `clean`, in the same
@@ -32,16 +33,6 @@ fn distances(clean: &[[Vector2<f64>; 2]], all: &[[Vector2<f64>; 2]]) -> Vec<f64>
                 .abs()
         })
         .collect()
-}
-
-#[derive(Default)]
-struct Tally {
-    scenes: usize,
-    members: usize,
-    rejected: usize,
-    far: usize,
-    found: usize,
-    refused: usize,
 }
 
 /// Each point's images in the two frames.
@@ -100,8 +91,8 @@ fn tally(s: u64, clean: &[[Vector2<f64>; 2]], pts: &[[Vector2<f64>; 2]], band: &
     let judged = identity::membership(&f1, &f2, &tolerance);
     let inside: Vec<bool> = judged.iter().map(|j| j.member).collect();
     band.scenes += 1;
-    band.members += m;
-    band.rejected += judged[..m].iter().filter(|j| !j.member).count();
+    band.good += m;
+    band.lost += judged[..m].iter().filter(|j| !j.member).count();
     for j in m..pts.len() {
         if d[j] > 10.0 * sigma {
             band.far += 1;
@@ -131,39 +122,10 @@ fn main() {
     for s in 0..scenes {
         let (clean, pts) = scene(seed.wrapping_mul(1_000_003).wrapping_add(s), absolute);
         let m = clean.len();
-        let band = match m {
-            ..10 => 0,
-            10..20 => 1,
-            _ => 2,
-        };
-        tally(s, &clean, &pts, &mut bands[band]);
+        tally(s, &clean, &pts, &mut bands[band(m)]);
     }
-    println!("| members | scenes | true members rejected | foreign > 10 σ found | refused as no rigid body |");
-    println!("|---|---:|---:|---:|---:|");
-    let mut all = Tally::default();
-    for (name, b) in ["6–9", "10–19", "20–50"].iter().zip(&bands) {
-        row(name, b);
-        all.scenes += b.scenes;
-        all.members += b.members;
-        all.rejected += b.rejected;
-        all.far += b.far;
-        all.found += b.found;
-        all.refused += b.refused;
-    }
-    row("all", &all);
-}
-
-fn row(name: &str, b: &Tally) {
-    let pct = |a: usize, n: usize| 100.0 * a as f64 / n.max(1) as f64;
-    println!(
-        "| {name} | {} | {} of {} ({:.2} %) | {} of {} ({:.2} %) | {} |",
-        b.scenes,
-        b.rejected,
-        b.members,
-        pct(b.rejected, b.members),
-        b.found,
-        b.far,
-        pct(b.found, b.far),
-        b.refused
+    print_bands(
+        "| members | scenes | true members rejected | foreign > 10 σ found | refused as no rigid body |",
+        &bands,
     );
 }

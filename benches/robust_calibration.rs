@@ -18,17 +18,8 @@ use nalgebra::Vector2;
 use orthocheck::model::{rng, NoiseModel, Scene, Tracks};
 use orthocheck::sfm::robust::RansacOptions;
 use orthocheck::sfm::{reconstruct, Observations, Options};
+use orthocheck_benches::{band, print_bands, Tally};
 use rand::Rng;
-
-#[derive(Default)]
-struct Tally {
-    scenes: usize,
-    good: usize,
-    dropped: usize,
-    far: usize,
-    found: usize,
-    refused: usize,
-}
 
 /// The scene's noisy tracks, the corrupted (frame, point) pairs and σ.
 fn scene(seed: u64, absolute: bool) -> (Tracks, Tracks, HashSet<(usize, usize)>, usize) {
@@ -81,13 +72,7 @@ fn main() {
         let err = |&(f, j): &(usize, usize)| (noisy.frames[f][j] - clean.frames[f][j]).norm();
         let sigma =
             (good.iter().map(|p| err(p).powi(2)).sum::<f64>() / (2 * good.len()) as f64).sqrt();
-        let band = &mut bands[if m < 10 {
-            0
-        } else if m < 20 {
-            1
-        } else {
-            2
-        }];
+        let band = &mut bands[band(m)];
         band.scenes += 1;
         band.good += good.len();
         let options = Options {
@@ -118,7 +103,7 @@ fn main() {
             .iter()
             .map(|d| (d.frame - 1, index(&d.point)))
             .collect();
-        band.dropped += good.iter().filter(|p| dropped.contains(p)).count();
+        band.lost += good.iter().filter(|p| dropped.contains(p)).count();
         for p in &bad {
             if err(p) > 10.0 * sigma {
                 band.far += 1;
@@ -126,32 +111,8 @@ fn main() {
             }
         }
     }
-    println!("| points | scenes | good observations dropped | bad > 10 σ dropped | refused |");
-    println!("|---|---:|---:|---:|---:|");
-    let mut all = Tally::default();
-    for (name, b) in ["6–9", "10–19", "20–50"].iter().zip(&bands) {
-        row(name, b);
-        all.scenes += b.scenes;
-        all.good += b.good;
-        all.dropped += b.dropped;
-        all.far += b.far;
-        all.found += b.found;
-        all.refused += b.refused;
-    }
-    row("all", &all);
-}
-
-fn row(name: &str, b: &Tally) {
-    let pc = |a: usize, n: usize| 100.0 * a as f64 / n.max(1) as f64;
-    println!(
-        "| {name} | {} | {} of {} ({:.2} %) | {} of {} ({:.2} %) | {} |",
-        b.scenes,
-        b.dropped,
-        b.good,
-        pc(b.dropped, b.good),
-        b.found,
-        b.far,
-        pc(b.found, b.far),
-        b.refused
+    print_bands(
+        "| points | scenes | good observations dropped | bad > 10 σ dropped | refused |",
+        &bands,
     );
 }

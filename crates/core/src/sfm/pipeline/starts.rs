@@ -107,9 +107,10 @@ fn finish(
     out
 }
 
-/// Two fits agree on their optimum when their costs are within this, relative: both stop
-/// when a step gains less than the adjustment's convergence test allows, far below the
-/// gaps between distinct optima (which differ by factors on the turntable family).
+/// Two fits agree on their optimum when their costs are within this, relative: a chosen
+/// margin, not derived from the adjustment's stopping rule (a step gaining at most 4ε of
+/// the cost), which a slow final descent can leave far above; distinct optima on the
+/// turntable family differ by factors, far beyond it.
 const AGREE: f64 = 1e-6;
 
 /// The other starts ([`orders`], the largest complete block), each adjusted for
