@@ -30,8 +30,10 @@ pub struct Args {
     robust: bool,
     /// Inlier threshold of --robust: the largest distance, in image units, from an image
     /// point to its reprojection. Default: from the data, 3.035 σ (the 99 % point of the
-    /// norm of a 2-D normal error) with σ = median residual norm / 1.1774 (the Rayleigh
-    /// median), corrected for the fit's parameters, never below rounding.
+    /// norm of a 2-D normal error; wider when σ is known to few degrees of freedom) with σ =
+    /// median residual norm / 1.1774 (the Rayleigh median), corrected for the fit's
+    /// parameters, never below rounding; where the noise grows with the coordinates, each
+    /// residual coordinate is weighed by its own scale.
     #[arg(long, allow_negative_numbers = true, requires = "robust")]
     threshold: Option<f64>,
     /// Seed of --robust's sample generator, and of the random starts of variable projection

@@ -8,6 +8,7 @@ pub mod float_roots;
 mod gram;
 pub mod interval;
 mod lanczos;
+pub mod mix;
 pub mod modp;
 pub mod mpoly;
 mod multiquad;

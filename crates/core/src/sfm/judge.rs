@@ -7,10 +7,13 @@
 //! intersect again. Elimination never leaves fewer than [`MIN_IMAGES`] images: a
 //! point that would need it is rejected, all its images dropped. A point seen in two frames
 //! only is kept when both images are inliers (one check, and no choice made among images).
+//! Residuals are compared with the threshold as their coordinates' weights under the
+//! threshold's mix of noise scales give them ([`scaled`]).
 
 use nalgebra::{Vector2, Vector3};
 
 use super::gaps::intersect;
+use super::threshold::{scaled, Mix};
 use super::{Frame, Observations};
 
 /// The fewest images elimination may leave. Two images of a point give four coordinates for
@@ -94,6 +97,16 @@ fn residual(cams: &[Option<Frame>], view: &(usize, Vector2<f64>), x: &Vector3<f6
     cams[view.0].map(|c| (c.project(x) - view.1).norm())
 }
 
+/// An image's residual against the threshold: its coordinates divided by their weights.
+fn scaled_residual(
+    cams: &[Option<Frame>],
+    view: &(usize, Vector2<f64>),
+    x: &Vector3<f64>,
+    mix: &Mix,
+) -> Option<f64> {
+    cams[view.0].map(|c| scaled(c.project(x) - view.1, view.1, mix))
+}
+
 /// The residuals of every image of the point at `x` (`None` without a camera or a point).
 fn residuals_at(
     cams: &[Option<Frame>],
@@ -109,7 +122,11 @@ fn residuals_at(
 /// The verdict on one point's images (see the module's rule). Images in frames without a
 /// camera cannot be judged: while fewer than two can, the point is kept as it is; otherwise
 /// the unjudged images follow the point's verdict.
-fn judge_point(cams: &[Option<Frame>], views: &[(usize, Vector2<f64>)], t: f64) -> Verdict {
+fn judge_point(
+    cams: &[Option<Frame>],
+    views: &[(usize, Vector2<f64>)],
+    (t, mix): (f64, &Mix),
+) -> Verdict {
     let reject = |x: Option<Vector3<f64>>| Verdict {
         inlier: vec![false; views.len()],
         residual: residuals_at(cams, views, x),
@@ -137,7 +154,7 @@ fn judge_point(cams: &[Option<Frame>], views: &[(usize, Vector2<f64>)], t: f64) 
         }
         let mut beyond: Vec<(f64, usize)> = active
             .iter()
-            .filter_map(|&i| residual(cams, &views[i], &x).map(|r| (r, i)))
+            .filter_map(|&i| scaled_residual(cams, &views[i], &x, mix).map(|r| (r, i)))
             .filter(|(r, _)| r.is_nan() || *r > t)
             .collect();
         if beyond.is_empty() {
@@ -168,13 +185,19 @@ fn judge_point(cams: &[Option<Frame>], views: &[(usize, Vector2<f64>)], t: f64) 
 }
 
 /// The verdict on every observation of the points `views` (of observations with `frames`
-/// frames) under the cameras `cams` (one per frame, `None` where unknown) at threshold `t`.
-pub fn judge(views: &[Images], frames: usize, cams: &[Option<Frame>], t: f64) -> Judgement {
+/// frames) under the cameras `cams` (one per frame, `None` where unknown) at threshold `t`,
+/// residuals weighed by `mix`.
+pub fn judge(
+    views: &[Images],
+    frames: usize,
+    cams: &[Option<Frame>],
+    (t, mix): (f64, Mix),
+) -> Judgement {
     let mut inlier = vec![vec![false; views.len()]; frames];
     let mut kept = Vec::new();
     let mut dropped = Vec::new();
     for (j, v) in views.iter().enumerate() {
-        let verdict = judge_point(cams, v, t);
+        let verdict = judge_point(cams, v, (t, &mix));
         let mut any = false;
         for (((f, _), ok), r) in v.iter().zip(&verdict.inlier).zip(&verdict.residual) {
             if *ok {

@@ -4,7 +4,9 @@
 //! `frame`, the input's number from 1, `rotation` and `translation`), `rms`, `mirror`,
 //! `method`; in robust mode `inliers` and `rejected` (point names), `threshold` (`value`,
 //! `from`: `"data"` or `"--threshold"`, and for the data its `median`, `sigma`, `shrink`,
-//! `floor`, `observations`) and `dropped` (`point`, `frame` counted from 1, `residual`);
+//! `floor`, `observations`, `freedom` (σ's residual degrees of freedom, null for a RANSAC
+//! sample's), `multiple` (the threshold in σ), and `relative` and `unit` (the mix of noise
+//! scales residuals were weighed by, λ and u²)) and `dropped` (`point`, `frame` counted from 1, `residual`);
 //! after a bundle adjustment `points_std` (each point's standard errors by name).
 //! The document: with one group of frames, its reconstruction's fields; with several,
 //! `components`, one reconstruction each (its own frame of reference); and always
@@ -20,7 +22,7 @@ use super::groups::LINK;
 use super::judge::MIN_IMAGES;
 use super::pipeline::{group_label, Component};
 use super::robust::{Dropped, RobustReport};
-use super::threshold::{Source, Threshold, RAYLEIGH_INLIER, RAYLEIGH_MEDIAN};
+use super::threshold::{Mix, Source, Threshold, RAYLEIGH_MEDIAN};
 use super::{Frame, Outcome, Reconstruction};
 use crate::numfmt::sig;
 
@@ -95,6 +97,10 @@ impl Serialize for ThresholdJson<'_> {
                 m.serialize_entry("sigma", &d.sigma)?;
                 m.serialize_entry("floor", &d.floor)?;
                 m.serialize_entry("floored", &t.floored())?;
+                m.serialize_entry("freedom", &d.freedom)?;
+                m.serialize_entry("multiple", &d.multiple)?;
+                m.serialize_entry("relative", &d.mix.relative)?;
+                m.serialize_entry("unit", &d.mix.unit)?;
             }
         }
         m.end()
@@ -245,8 +251,11 @@ fn threshold_line(t: &Threshold) -> String {
             d.observations
         ),
         Source::Data(d) => format!(
-            "from the data: {} σ, the 99 % point of a 2-D normal error's norm; σ = median residual {} of {} observations / {}{}; --threshold sets it",
-            sig(RAYLEIGH_INLIER),
+            "from the data: {} σ, the 99 % point of a 2-D normal error's norm{}; σ = median residual {} of {} observations / {}{}{}; --threshold sets it",
+            sig(d.multiple),
+            d.freedom.map_or(String::new(), |nu| format!(
+                " with σ known to {nu} degrees of freedom"
+            )),
             sig(d.median),
             d.observations,
             sig(RAYLEIGH_MEDIAN),
@@ -254,10 +263,23 @@ fn threshold_line(t: &Threshold) -> String {
                 format!(" / {} (the fit's parameters)", sig(d.shrink))
             } else {
                 String::new()
-            }
+            },
+            mix_clause(&d.mix)
         ),
     };
     format!("threshold {} image units ({why})", sig(t.value))
+}
+
+/// How residuals were weighed, when the noise grows with the coordinates.
+fn mix_clause(mix: &Mix) -> String {
+    if mix.relative == 0.0 {
+        return String::new();
+    }
+    format!(
+        "; each residual coordinate x divided by √((1 − λ) + λ x²/u²), λ = {} (noise growing with the coordinates), u = {}",
+        sig(mix.relative),
+        sig(mix.unit.sqrt())
+    )
 }
 
 /// The text lines of robust mode: the threshold, the dropped observations, the rejected

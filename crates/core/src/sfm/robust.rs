@@ -24,7 +24,7 @@ use rand::Rng;
 
 use super::gaps::{intersect, resect};
 use super::judge::{self, Images, Judgement};
-use super::threshold::{self, Threshold};
+use super::threshold::{self, Mix, Threshold};
 use super::{BundleReport, Error, Frame, Observations, Reconstruction, Units, MIN_POINTS};
 use crate::derivations::p3f3;
 use crate::derivations::p4f3::{realize, solve_core};
@@ -467,7 +467,7 @@ fn fit_judged(
         )));
     }
     let used = judged.observations(obs);
-    let corner = t.value * HUBER_CORNER / threshold::RAYLEIGH_INLIER;
+    let corner = t.value * HUBER_CORNER / t.multiple();
     let (rec, bundle) = super::fit(&used, options, Some(corner), numbers)?;
     Ok((used, rec, bundle))
 }
@@ -477,15 +477,15 @@ fn cameras_of(rec: &Reconstruction, frames: usize) -> Vec<Option<Frame>> {
     (0..frames).map(|f| rec.frames.get(f).copied()).collect()
 }
 
-/// The residual norm of every observation (in [`judge::views`]' order) under a fit of the
-/// points `kept`: a kept point at its fitted position, any other intersected from all its
-/// images; infinite where its images do not fix it.
-fn fit_residuals(
+/// The residual of every observation (in [`judge::views`]' order) under a fit of the points
+/// `kept`: a kept point at its fitted position, any other intersected from all its images;
+/// `None` where its images do not fix it.
+fn fit_errors(
     views: &[Images],
     frames: usize,
     rec: &Reconstruction,
     kept: &[usize],
-) -> Vec<f64> {
+) -> Vec<Option<Vector2<f64>>> {
     let cams = cameras_of(rec, frames);
     let mut fitted: Vec<Option<Vector3<f64>>> = vec![None; views.len()];
     for (&j, x) in kept.iter().zip(&rec.points) {
@@ -497,23 +497,58 @@ fn fit_residuals(
     for (v, x) in views.iter().zip(fitted) {
         let x = x.or_else(|| intersect(&cams, v));
         out.extend(v.iter().map(|(f, y)| match (x, cams[*f]) {
-            (Some(x), Some(c)) => (c.project(&x) - y).norm(),
-            _ => f64::INFINITY,
+            (Some(x), Some(c)) => Some(c.project(&x) - y),
+            _ => None,
         }));
     }
     out
 }
 
+/// The mix of noise scales of most likelihood for the kept observations' residuals,
+/// coordinate by coordinate (each with its coordinate's square); one scale when the fit
+/// leaves fewer than [`threshold::MIX_MIN_FREEDOM`] residual degrees of freedom.
+fn fit_mix(views: &[Images], errors: &[Option<Vector2<f64>>], judged: &Judgement) -> Mix {
+    let mut items = Vec::new();
+    let mut at = 0;
+    for (j, v) in views.iter().enumerate() {
+        for ((f, y), e) in v.iter().zip(&errors[at..at + v.len()]) {
+            if let (true, Some(e)) = (judged.inlier[*f][j], e) {
+                items.push((e.x, y.x * y.x));
+                items.push((e.y, y.y * y.y));
+            }
+        }
+        at += v.len();
+    }
+    let parameters = threshold::parameters(judged.kept.len(), judged.inlier.len());
+    if items.len() < parameters + threshold::MIX_MIN_FREEDOM {
+        return Mix::UNIFORM;
+    }
+    Mix::most_likely(&items)
+}
+
 /// The threshold from a fit's residuals (σ corrected for the fit's 3p + 5k − 6 parameters,
-/// the floor for its conditioning); `None` when more than half the observations have no
-/// residual.
-fn fit_threshold(views: &[Images], fit: &Fit, kept: &[usize], size: f64) -> Option<Threshold> {
+/// the floor for its conditioning; each residual weighed by the mix of noise scales the
+/// kept ones give); `None` when more than half the observations have no residual.
+fn fit_threshold(views: &[Images], fit: &Fit, judged: &Judgement, size: f64) -> Option<Threshold> {
     let (used, rec, _) = fit;
-    let frames = used.frames.len();
-    let mut res = fit_residuals(views, frames, rec, kept);
-    let shrink = threshold::shrink(2 * used.count(), threshold::parameters(kept.len(), frames));
+    let (frames, kept) = (used.frames.len(), &judged.kept);
+    let errors = fit_errors(views, frames, rec, kept);
+    let mix = fit_mix(views, &errors, judged);
+    let mut res: Vec<f64> = views
+        .iter()
+        .flatten()
+        .zip(&errors)
+        .map(|((_, y), e)| e.map_or(f64::INFINITY, |e| threshold::scaled(e, *y, &mix)))
+        .collect();
+    let (coordinates, parameters) = (2 * used.count(), threshold::parameters(kept.len(), frames));
+    let shrink = threshold::shrink(coordinates, parameters);
     let rounding = threshold::rounding(rec.conditioning, kept.len(), frames);
-    Threshold::from_residuals(&mut res, shrink, threshold::floor(size, rounding))
+    // one degree more is spent on the mix where it was estimated
+    let spent = parameters + usize::from(mix != Mix::UNIFORM);
+    Threshold::from_residuals(&mut res, shrink, threshold::floor(size, rounding)).map(|t| {
+        t.with_mix(mix)
+            .with_freedom(coordinates.saturating_sub(spent))
+    })
 }
 
 /// RANSAC, the judgement of every observation, the fit of the kept ones, and the judgement
@@ -531,14 +566,19 @@ pub fn run(
     let sample = best_sample(obs, &views, o)?;
     let (k, size) = (obs.frames.len(), Units::of(obs)?.scale);
     let mut threshold = sample.threshold;
-    let mut judged = judge::judge(&views, k, &sample.cameras, threshold.value);
+    let mut judged = judge::judge(
+        &views,
+        k,
+        &sample.cameras,
+        (threshold.value, threshold.mix()),
+    );
     let mut fit = fit_judged(obs, &judged, &threshold, (options, numbers))?;
     let (mut rounds, mut note) = (0, None);
     while rounds < REJUDGE_ROUNDS {
         rounds += 1;
         let t = match o.threshold {
             Some(t) => Threshold::given(t),
-            None => match fit_threshold(&views, &fit, &judged.kept, size) {
+            None => match fit_threshold(&views, &fit, &judged, size) {
                 Some(t) => t,
                 None => {
                     note = Some("the fit reprojects fewer than half the observations: the earlier judgement kept".to_string());
@@ -546,7 +586,7 @@ pub fn run(
                 }
             },
         };
-        let next = judge::judge(&views, k, &cameras_of(&fit.1, k), t.value);
+        let next = judge::judge(&views, k, &cameras_of(&fit.1, k), (t.value, t.mix()));
         if next.inlier == judged.inlier {
             judged = next;
             threshold = t;

@@ -12,9 +12,23 @@
 //! The residuals of a least-squares fit are smaller than the errors: a fit of P parameters
 //! to N coordinates leaves, on average, a share 1 − P/N of each coordinate's variance (the
 //! mean leverage is P/N). σ from a fit's residuals is divided by [`shrink`] = √(1 − P/N).
+//! And σ so estimated is known only to ν = N − P degrees of freedom: a residual's squared
+//! norm over 2σ̂² is then F(2, ν) distributed, and the threshold is its 99 % point
+//! ([`inlier_multiple`]), wider than the Rayleigh one for a fit of few residual degrees.
+//!
+//! Noise that grows with the coordinates (relative noise, as `synth --noise` adds it) makes
+//! one scale wrong for all of them: a fit's threshold estimates the mix of the two scales
+//! ([`Mix`]) from the kept observations' residuals, coordinate by coordinate, and judges the
+//! norm of each residual with its coordinates divided by their own weights ([`scaled`]); the
+//! threshold is then that of a residual of weight 1. With one scale (λ = 0) this is the
+//! plain norm.
 //!
 //! Exact data have residuals at rounding level, and their median may even be zero; the
 //! threshold never falls below a floor ([`floor`]) that rounding cannot reach.
+
+use nalgebra::Vector2;
+
+pub use crate::algebra::mix::Mix;
 
 use super::Conditioning;
 
@@ -32,6 +46,13 @@ pub const RAYLEIGH_INLIER: f64 = 3.0348542587702925;
 /// thousandfold margin over the rounding of a well-conditioned reconstruction (a few ε).
 pub const FLOOR_ULPS: f64 = 1024.0;
 
+/// The residual freedom (coordinates less parameters) a fit needs for the mix of the two
+/// noise scales to be estimated from it (below, one scale): as for membership, λ is only
+/// estimated where ten residual degrees of freedom remain for it. `robust_calibration` is
+/// insensitive to the count (0, 10 or 40 all drop 0.98 % of good observations under
+/// relative noise, seed 1): every scene but the smallest leaves far more.
+pub const MIX_MIN_FREEDOM: usize = 10;
+
 /// The robust scale behind a threshold taken from the data.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Scale {
@@ -46,6 +67,14 @@ pub struct Scale {
     pub sigma: f64,
     /// The rounding floor (image units), [`floor`].
     pub floor: f64,
+    /// The residual degrees of freedom σ is known to (`None`: taken as exact, the Rayleigh
+    /// point).
+    pub freedom: Option<usize>,
+    /// The threshold in units of σ, [`inlier_multiple`] of `freedom`.
+    pub multiple: f64,
+    /// The mix of the two noise scales the residuals were weighed by ([`Mix::UNIFORM`]: one
+    /// scale, the plain norm).
+    pub mix: Mix,
 }
 
 /// Where a threshold came from.
@@ -97,8 +126,47 @@ impl Threshold {
                 shrink,
                 sigma,
                 floor,
+                freedom: None,
+                multiple: RAYLEIGH_INLIER,
+                mix: Mix::UNIFORM,
             }),
         })
+    }
+
+    /// The threshold with σ known to `freedom` residual degrees of freedom (a given one
+    /// stays as it is): [`inlier_multiple`] σ, at least the floor.
+    pub fn with_freedom(mut self, freedom: usize) -> Threshold {
+        if let Source::Data(s) = &mut self.source {
+            s.freedom = Some(freedom);
+            s.multiple = inlier_multiple(Some(freedom));
+            self.value = (s.multiple * s.sigma).max(s.floor);
+        }
+        self
+    }
+
+    /// The threshold in units of σ: [`RAYLEIGH_INLIER`] for a given one.
+    pub fn multiple(&self) -> f64 {
+        match self.source {
+            Source::Given => RAYLEIGH_INLIER,
+            Source::Data(s) => s.multiple,
+        }
+    }
+
+    /// The threshold with the residuals it was taken from weighed by `mix` (a given one
+    /// stays as it is).
+    pub fn with_mix(mut self, mix: Mix) -> Threshold {
+        if let Source::Data(s) = &mut self.source {
+            s.mix = mix;
+        }
+        self
+    }
+
+    /// The mix its residuals are weighed by: one scale for a given threshold.
+    pub fn mix(&self) -> Mix {
+        match self.source {
+            Source::Given => Mix::UNIFORM,
+            Source::Data(s) => s.mix,
+        }
     }
 
     /// The threshold of residual norms (infinite where an observation has none; the slice
@@ -112,8 +180,31 @@ impl Threshold {
     pub fn floored(&self) -> bool {
         match self.source {
             Source::Given => false,
-            Source::Data(s) => RAYLEIGH_INLIER * s.sigma < s.floor,
+            Source::Data(s) => s.multiple * s.sigma < s.floor,
         }
+    }
+}
+
+/// The norm of the residual `e` of the image `y` with each coordinate divided by its weight
+/// under `mix` ([`Mix::weight`] of its square): the plain norm under one scale.
+pub fn scaled(e: Vector2<f64>, y: Vector2<f64>, mix: &Mix) -> f64 {
+    if *mix == Mix::UNIFORM || mix.relative == 0.0 {
+        return e.norm();
+    }
+    Vector2::new(e.x / mix.weight(y.x * y.x), e.y / mix.weight(y.y * y.y)).norm()
+}
+
+/// The [`INLIER_QUANTILE`] point of a residual's norm in units of σ̂ when σ̂ is known to ν
+/// = `freedom` residual degrees of freedom: ‖e‖²/(2σ̂²) is F(2, ν), whose upper tail is
+/// (1 + 2f/ν)^(−ν/2), so the point is √(ν ((1 − q)^(−2/ν) − 1)); [`RAYLEIGH_INLIER`] (ν → ∞)
+/// for `None` or ν = 0.
+pub fn inlier_multiple(freedom: Option<usize>) -> f64 {
+    match freedom {
+        Some(nu) if nu > 0 => {
+            let nu = nu as f64;
+            (nu * (-2.0 / nu * (1.0 - INLIER_QUANTILE).ln()).exp_m1()).sqrt()
+        }
+        _ => RAYLEIGH_INLIER,
     }
 }
 

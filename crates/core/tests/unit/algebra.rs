@@ -3,6 +3,7 @@
 mod cholesky;
 mod float_roots;
 mod interval;
+mod mix;
 mod modp;
 mod mpoly;
 mod multiquad;

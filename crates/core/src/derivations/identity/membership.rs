@@ -3,6 +3,7 @@
 //! the data's own noise.
 
 use super::*;
+use crate::algebra::mix::Mix;
 
 /// The share of true members the default tolerance may reject: each member is judged at
 /// the two-sided 99 % point of its distance's distribution.
@@ -27,9 +28,6 @@ pub const REWEIGHT: f64 = 2.5;
 /// Four-point subsets tried by [`robust_tolerance`]: all of them up to this many, else this
 /// many drawn with a fixed seed (the same input gives the same tolerance).
 const LMEDS_SUBSETS: usize = 500;
-
-/// The mixes of the two noise scales tried (see [`Tolerance`]): λ = 0, 1/8, …, 1.
-const MIX_STEPS: usize = 8;
 
 /// Members at least, for the mix of the two noise scales to be estimated (it takes a degree
 /// of freedom; below, one scale). Chosen by `membership_calibration` (docs/limits.md): from
@@ -66,18 +64,14 @@ impl Tolerance {
         }
     }
 
-    /// The weight w of a point whose coordinates' squares, weighed by the line, are `spread`;
-    /// 1 (one scale) when λ is not in (0, 1] or u² is not a positive number.
+    /// The weight w of a point whose coordinates' squares, weighed by the line, are `spread`
+    /// ([`Mix::weight`]).
     fn weight(&self, spread: f64) -> f64 {
-        let usable = self.relative > 0.0
-            && self.relative <= 1.0
-            && self.unit > 0.0
-            && self.unit.is_finite()
-            && spread.is_finite();
-        if !usable {
-            return 1.0;
+        Mix {
+            relative: self.relative,
+            unit: self.unit,
         }
-        ((1.0 - self.relative) + self.relative * spread / self.unit).sqrt()
+        .weight(spread)
     }
 
     /// Every point's own tolerance, for the distances of a fit.
@@ -100,9 +94,7 @@ impl Tolerance {
     }
 }
 
-/// The mix λ of most likelihood for the members' distances (normal errors of standard
-/// deviation σ w_i, σ profiled out: the least Σ ln w_i² + m ln Σ (d_i / w_i)²), and u²;
-/// λ = 0 on a tie.
+/// The mix of most likelihood for the members' distances ([`Mix::most_likely`]), as (λ, u²).
 fn noise_mix(fit: &Distances, members: &[bool]) -> (f64, f64) {
     let inside: Vec<(f64, f64)> = fit
         .d
@@ -112,30 +104,8 @@ fn noise_mix(fit: &Distances, members: &[bool]) -> (f64, f64) {
         .filter(|(_, m)| **m)
         .map(|((d, s), _)| (*d, *s))
         .collect();
-    let m = inside.len() as f64;
-    let unit = inside.iter().map(|p| p.1).sum::<f64>() / m;
-    if !(unit > 0.0 && unit.is_finite()) {
-        return (0.0, 1.0);
-    }
-    let mut best = (f64::INFINITY, 0.0);
-    for step in 0..=MIX_STEPS {
-        let t = Tolerance {
-            base: 1.0,
-            relative: step as f64 / MIX_STEPS as f64,
-            unit,
-        };
-        let (mut logs, mut squares) = (0.0, 0.0);
-        for (d, s) in &inside {
-            let w2 = t.weight(*s).powi(2);
-            logs += w2.ln();
-            squares += d * d / w2;
-        }
-        let score = logs + m * squares.max(f64::MIN_POSITIVE).ln();
-        if score < best.0 {
-            best = (score, t.relative);
-        }
-    }
-    (best.1, unit)
+    let mix = Mix::most_likely(&inside);
+    (mix.relative, mix.unit)
 }
 
 /// The default tolerance of [`membership()`], from the data's own noise, with the degrees
