@@ -12,8 +12,8 @@
 //! same observations (the group's frames and points), relative (distinct optima differ by
 //! far more); lower counts as reached too. One group over every frame is the whole scene;
 //! scenes split into groups, or with frames dropped, are counted apart as well. The table:
-//! elevation band × L. `SHOW_ERRORS=1` prints each miss's warnings or error; `ONLY=N` runs
-//! scene N alone.
+//! elevation band × L. `SHOW_ERRORS=1` prints each miss's warnings or error, and each of
+//! its groups' cost against the truth-started one; `ONLY=N` runs scene N alone.
 
 use nalgebra::{Rotation3, Vector2, Vector3};
 use orthocheck::model::{rng, Body, Motion, NoiseModel, Scene};
@@ -147,6 +147,13 @@ fn main() {
                     cell.2 += 1;
                     if std::env::var_os("SHOW_ERRORS").is_some() {
                         eprintln!("scene {s}: missed, warned: {}", o.warnings().join(" | "));
+                        for (c, (got, best)) in o.components.iter().zip(&costs) {
+                            eprintln!(
+                                "  group of frames {:?} ({} points): cost {got:?} against the truth-started {best:?}",
+                                c.frames,
+                                c.reconstruction.points.len()
+                            );
+                        }
                     }
                 } else if std::env::var_os("SHOW_ERRORS").is_some() {
                     for (c, (got, best)) in o.components.iter().zip(&costs) {
