@@ -102,8 +102,9 @@ fn tally(s: u64, clean: &[[Vector2<f64>; 2]], pts: &[[Vector2<f64>; 2]], band: &
     let refused = identity::members_rigid(&f1, &f2, &inside, tolerance.largest(&judged)).is_some();
     if refused && std::env::var_os("SHOW_REFUSED").is_some() {
         eprintln!(
-            "scene {s}: {m} members, {} kept, tolerance {tolerance:?}",
-            inside.iter().filter(|x| **x).count()
+            "scene {s}: {m} members, {} of them kept and {} foreign, tolerance {tolerance:?}",
+            inside[..m].iter().filter(|x| **x).count(),
+            inside[m..].iter().filter(|x| **x).count()
         );
     }
     band.refused += usize::from(refused);
