@@ -14,3 +14,20 @@ fn the_tetrahedron_has_its_edges() {
     }
     assert!(tetrahedron(&[1.0, 1.0, 9.0, 1.0, 1.0, 1.0]).is_none());
 }
+
+#[test]
+fn the_lp_stages_approach_the_minimax_point() {
+    // r = x − aᵢ for a = 0, 1, 5: least squares stops at the mean 2 (largest |r| 3), the
+    // minimax point is 2.5 (largest |r| 2.5). The L⁶⁴ optimum's largest |r| is at most
+    // 3^(1/64) times the minimax one (‖r‖∞ ≤ ‖r‖₆₄ ≤ 3^(1/64) ‖r‖∞ for three residuals).
+    let f = |x: &[f64]| Some(vec![x[0], x[0] - 1.0, x[0] - 5.0]);
+    let x = lp_minimax(&f, &[0.0]).expect("defined at the start");
+    let largest = f(&x).unwrap().iter().fold(0.0f64, |m, r| m.max(r.abs()));
+    assert!(
+        largest >= 2.5 && largest <= 2.5 * 3f64.powf(1.0 / 64.0),
+        "{x:?}: {largest}"
+    );
+    // undefined at the start: none
+    let nowhere = |_: &[f64]| None;
+    assert!(lp_minimax(&nowhere, &[0.0]).is_none());
+}
