@@ -120,6 +120,97 @@ fn frames_and_points(text: &mut String, tag: &str, rec: &Reconstruction) {
     }
 }
 
+/// Longer adjustments: `limit` iterations (timed over `repeat` runs, or once when `reach`
+/// is given), and for each cost in `reach` the iterations that reach it, timed.
+fn longer_runs(
+    obs: &Observations,
+    start: &Reconstruction,
+    (repeat, limit): (usize, usize),
+    reach: &[f64],
+) {
+    let options = BundleOptions {
+        max_iterations: limit,
+        ..loop_only()
+    };
+    let (secs, long) = timed(if reach.is_empty() { repeat } else { 1 }, || {
+        bundle_adjust(obs, start, &options).expect("an adjustment")
+    });
+    println!(
+        "  the same with max_iterations {limit}: {secs:.4} s ({}), {} iterations{}, cost {:.12e}",
+        if reach.is_empty() {
+            format!("median of {repeat}")
+        } else {
+            "one run".into()
+        },
+        long.report.iterations,
+        if long.report.converged {
+            ""
+        } else {
+            " (limit)"
+        },
+        cost(obs, &long.reconstruction)
+    );
+    for &target in reach {
+        let Some(m) = long.report.costs.iter().position(|&c| c <= target) else {
+            println!("  cost ≤ {target:.12e}: not reached in {limit} iterations");
+            continue;
+        };
+        let options = BundleOptions {
+            max_iterations: m,
+            ..loop_only()
+        };
+        let (secs, at) = timed(repeat, || {
+            bundle_adjust(obs, start, &options).expect("an adjustment")
+        });
+        println!(
+            "  cost ≤ {target:.12e}: after {m} iterations, median {secs:.4} s of {repeat} (the adjustment stopped there), cost {:.12e}",
+            cost(obs, &at.reconstruction)
+        );
+    }
+}
+
+/// The problem file: units, sizes, orthocheck's figures, the start, the observations and
+/// orthocheck's result, in the units `sfm::Units` works in.
+fn problem_text(
+    name: &str,
+    obs: &Observations,
+    (start, result): (&Reconstruction, &Reconstruction),
+    (iterations, final_cost, start_cost): (usize, f64, f64),
+    (secs, overhead): (f64, f64),
+) -> String {
+    let units = Units::of(obs).expect("finite coordinates");
+    let mut unit_start = start.clone();
+    units.forward(&mut unit_start);
+    let mut unit_result = result.clone();
+    units.forward(&mut unit_result);
+    let unit_obs = units.to_unit(obs);
+    let mut text = String::new();
+    let _ = writeln!(text, "name {name}");
+    let _ = writeln!(
+        text,
+        "units {:.16e} {:.16e} {:.16e}",
+        units.centre.x, units.centre.y, units.scale
+    );
+    let _ = writeln!(
+        text,
+        "sizes {} {} {}",
+        obs.frames.len(),
+        obs.names.len(),
+        obs.count()
+    );
+    let _ = writeln!(
+        text,
+        "rust {} {final_cost:.16e} {start_cost:.16e} {secs:.6e} {overhead:.6e}",
+        iterations
+    );
+    frames_and_points(&mut text, "", &unit_start);
+    for (f, j, y) in unit_obs.seen() {
+        let _ = writeln!(text, "obs {f} {j} {:.16e} {:.16e}", y.x, y.y);
+    }
+    frames_and_points(&mut text, "rust_", &unit_result);
+    text
+}
+
 /// Adjust `start` with orthocheck (timed), print the figures, write the problem file.
 fn export(
     dir: &Path,
@@ -130,7 +221,6 @@ fn export(
     longer: Option<usize>,
     reach: &[f64],
 ) {
-    let units = Units::of(obs).expect("finite coordinates");
     let start_cost = cost(obs, start);
     let (secs, adjusted) = timed(repeat, || {
         bundle_adjust(obs, start, &loop_only()).expect("an adjustment")
@@ -161,67 +251,15 @@ fn export(
         report.costs.last().copied().unwrap_or(f64::NAN),
     );
     if let Some(limit) = longer {
-        let options = BundleOptions {
-            max_iterations: limit,
-            ..loop_only()
-        };
-        let (secs, long) = timed(if reach.is_empty() { repeat } else { 1 }, || {
-            bundle_adjust(obs, start, &options).expect("an adjustment")
-        });
-        println!(
-            "  the same with max_iterations {limit}: {secs:.4} s ({}), {} iterations{}, cost {:.12e}",
-            if reach.is_empty() { format!("median of {repeat}") } else { "one run".into() },
-            long.report.iterations,
-            if long.report.converged { "" } else { " (limit)" },
-            cost(obs, &long.reconstruction)
-        );
-        for &target in reach {
-            let Some(m) = long.report.costs.iter().position(|&c| c <= target) else {
-                println!("  cost ≤ {target:.12e}: not reached in {limit} iterations");
-                continue;
-            };
-            let options = BundleOptions {
-                max_iterations: m,
-                ..loop_only()
-            };
-            let (secs, at) = timed(repeat, || {
-                bundle_adjust(obs, start, &options).expect("an adjustment")
-            });
-            println!(
-                "  cost ≤ {target:.12e}: after {m} iterations, median {secs:.4} s of {repeat} (the adjustment stopped there), cost {:.12e}",
-                cost(obs, &at.reconstruction)
-            );
-        }
+        longer_runs(obs, start, (repeat, limit), reach);
     }
-    let mut unit_start = start.clone();
-    units.forward(&mut unit_start);
-    let mut unit_result = adjusted.reconstruction.clone();
-    units.forward(&mut unit_result);
-    let unit_obs = units.to_unit(obs);
-    let mut text = String::new();
-    let _ = writeln!(text, "name {name}");
-    let _ = writeln!(
-        text,
-        "units {:.16e} {:.16e} {:.16e}",
-        units.centre.x, units.centre.y, units.scale
+    let text = problem_text(
+        name,
+        obs,
+        (start, &adjusted.reconstruction),
+        (report.iterations, final_cost, start_cost),
+        (secs, overhead),
     );
-    let _ = writeln!(
-        text,
-        "sizes {} {} {}",
-        obs.frames.len(),
-        obs.names.len(),
-        obs.count()
-    );
-    let _ = writeln!(
-        text,
-        "rust {} {final_cost:.16e} {start_cost:.16e} {secs:.6e} {overhead:.6e}",
-        report.iterations
-    );
-    frames_and_points(&mut text, "", &unit_start);
-    for (f, j, y) in unit_obs.seen() {
-        let _ = writeln!(text, "obs {f} {j} {:.16e} {:.16e}", y.x, y.y);
-    }
-    frames_and_points(&mut text, "rust_", &unit_result);
     let path = dir.join(format!("{name}.txt"));
     std::fs::write(&path, text).expect("the problem file is written");
     println!("  written to {}", path.display());
