@@ -87,7 +87,8 @@ fn tally(s: u64, clean: &[[Vector2<f64>; 2]], pts: &[[Vector2<f64>; 2]], band: &
     let sigma = (d[..m].iter().map(|x| x * x).sum::<f64>() / m as f64).sqrt();
     let f1: Vec<Vector2<f64>> = pts.iter().map(|p| p[0]).collect();
     let f2: Vec<Vector2<f64>> = pts.iter().map(|p| p[1]).collect();
-    let (tolerance, judged) = identity::rigid_membership(&f1, &f2);
+    let tolerance = identity::robust_tolerance(&f1, &f2);
+    let judged = identity::membership(&f1, &f2, &tolerance);
     let inside: Vec<bool> = judged.iter().map(|j| j.member).collect();
     band.scenes += 1;
     band.good += m;

@@ -50,14 +50,11 @@ pub fn run(a: Args) -> Result<(), Error> {
         return Err(in_file(&a.input, Error::InvalidInput(d.to_string())));
     }
     let from_data = a.tolerance.is_none();
-    let (tolerance, m) = match a.tolerance {
-        None => identity::rigid_membership(&t.frames[0], &t.frames[1]),
-        Some(given) => {
-            let tolerance = identity::Tolerance::uniform(given);
-            let m = identity::membership(&t.frames[0], &t.frames[1], &tolerance);
-            (tolerance, m)
-        }
-    };
+    let tolerance = a.tolerance.map_or_else(
+        || identity::robust_tolerance(&t.frames[0], &t.frames[1]),
+        identity::Tolerance::uniform,
+    );
+    let m = identity::membership(&t.frames[0], &t.frames[1], &tolerance);
     let inside: Vec<bool> = m.iter().map(|j| j.member).collect();
     let largest = tolerance.largest(&m);
     if let Some(d) = identity::members_rigid(&t.frames[0], &t.frames[1], &inside, largest) {

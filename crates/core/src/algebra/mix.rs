@@ -44,9 +44,9 @@ impl Mix {
     /// The mix of most likelihood for `residuals`, pairs (d, s) of a residual and its
     /// coordinates' squares: normal errors of standard deviation σ w, σ profiled out, the
     /// least Σ ln w² + n ln Σ (d/w)² over λ on the grid of [`STEPS`]; u² the mean of s.
-    /// λ = 0 on a tie and where every score is infinite (a weight of zero: a coordinate at
-    /// the origin under λ = 1 would claim exactness); [`Mix::UNIFORM`] when u² is not a
-    /// positive number.
+    /// λ = 0 on a tie, where the residuals are all zero or not finite, and where every score
+    /// is infinite (a weight of zero: a coordinate at the origin under λ = 1 would claim
+    /// exactness); [`Mix::UNIFORM`] when u² is not a positive number.
     pub fn most_likely(residuals: &[(f64, f64)]) -> Mix {
         let n = residuals.len() as f64;
         let unit = residuals.iter().map(|p| p.1).sum::<f64>() / n;
@@ -71,7 +71,11 @@ impl Mix {
                 logs += w2.ln();
                 squares += d * d / w2;
             }
-            let score = logs + n * squares.max(f64::MIN_POSITIVE).ln();
+            // residuals all zero (exact data) or not finite tell nothing of the mix
+            if !(squares > 0.0 && squares.is_finite()) {
+                continue;
+            }
+            let score = logs + n * squares.ln();
             if score.is_finite() && score < best.0 {
                 best = (score, mix);
             }

@@ -17,9 +17,7 @@ pub mod hungarian;
 pub mod membership;
 pub mod wellposed;
 pub use hungarian::hungarian;
-pub use membership::{
-    membership, rigid_membership, robust_tolerance, Judged, Tolerance, MEMBER_LEVEL,
-};
+pub use membership::{membership, robust_tolerance, Judged, Tolerance, MEMBER_LEVEL};
 pub use wellposed::*;
 
 /// The paper's test for one value of c and one choice of signs.

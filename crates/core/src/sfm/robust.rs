@@ -46,7 +46,8 @@ pub const REJUDGE_ROUNDS: usize = 3;
 
 /// Huber's corner in σ of the residual, 1.345 (95 % of least squares' efficiency on normal
 /// errors): the kept observations are adjusted with that loss, so an outlier the judgement
-/// missed pulls with a bounded force; σ is the threshold's (the threshold / 3.035).
+/// missed pulls with a bounded force; σ is the threshold's (the threshold over its multiple of
+/// σ, 3.035 for a given one).
 pub const HUBER_CORNER: f64 = 1.345;
 
 /// Options of [`ransac`] and [`run`].
@@ -404,7 +405,10 @@ pub struct Dropped {
     pub frame: usize,
     /// Its distance (image units) from the reprojection of the point intersected from the
     /// final cameras: from its kept images, or from all its images for a rejected point;
-    /// `None` when they do not fix it.
+    /// `None` when they do not fix it. The plain distance: the judgement weighed each
+    /// coordinate by the threshold's mix of noise scales ([`threshold::scaled`]), so where
+    /// the noise grows with the coordinates a dropped image far from the origin may lie
+    /// nearer than the threshold's value.
     pub residual: Option<f64>,
 }
 
@@ -505,9 +509,10 @@ fn fit_errors(
 }
 
 /// The mix of noise scales of most likelihood for the kept observations' residuals,
-/// coordinate by coordinate (each with its coordinate's square); one scale when the fit
-/// leaves fewer than [`threshold::MIX_MIN_FREEDOM`] residual degrees of freedom.
-fn fit_mix(views: &[Images], errors: &[Option<Vector2<f64>>], judged: &Judgement) -> Mix {
+/// coordinate by coordinate (each with its coordinate's square), and whether it was
+/// estimated: one scale when the fit leaves fewer than [`threshold::MIX_MIN_FREEDOM`]
+/// residual degrees of freedom.
+fn fit_mix(views: &[Images], errors: &[Option<Vector2<f64>>], judged: &Judgement) -> (Mix, bool) {
     let mut items = Vec::new();
     let mut at = 0;
     for (j, v) in views.iter().enumerate() {
@@ -521,9 +526,9 @@ fn fit_mix(views: &[Images], errors: &[Option<Vector2<f64>>], judged: &Judgement
     }
     let parameters = threshold::parameters(judged.kept.len(), judged.inlier.len());
     if items.len() < parameters + threshold::MIX_MIN_FREEDOM {
-        return Mix::UNIFORM;
+        return (Mix::UNIFORM, false);
     }
-    Mix::most_likely(&items)
+    (Mix::most_likely(&items), true)
 }
 
 /// The threshold from a fit's residuals (σ corrected for the fit's 3p + 5k − 6 parameters,
@@ -533,7 +538,7 @@ fn fit_threshold(views: &[Images], fit: &Fit, judged: &Judgement, size: f64) -> 
     let (used, rec, _) = fit;
     let (frames, kept) = (used.frames.len(), &judged.kept);
     let errors = fit_errors(views, frames, rec, kept);
-    let mix = fit_mix(views, &errors, judged);
+    let (mix, estimated) = fit_mix(views, &errors, judged);
     let mut res: Vec<f64> = views
         .iter()
         .flatten()
@@ -543,11 +548,16 @@ fn fit_threshold(views: &[Images], fit: &Fit, judged: &Judgement, size: f64) -> 
     let (coordinates, parameters) = (2 * used.count(), threshold::parameters(kept.len(), frames));
     let shrink = threshold::shrink(coordinates, parameters);
     let rounding = threshold::rounding(rec.conditioning, kept.len(), frames);
-    // one degree more is spent on the mix where it was estimated
-    let spent = parameters + usize::from(mix != Mix::UNIFORM);
+    // one degree more is spent on the mix where it was estimated; without residual freedom
+    // σ is rounding, and the floor decides
+    let freedom = coordinates.saturating_sub(parameters + usize::from(estimated));
     Threshold::from_residuals(&mut res, shrink, threshold::floor(size, rounding)).map(|t| {
-        t.with_mix(mix)
-            .with_freedom(coordinates.saturating_sub(spent))
+        let t = t.with_mix(mix);
+        if freedom > 0 {
+            t.with_freedom(freedom)
+        } else {
+            t
+        }
     })
 }
 

@@ -13,7 +13,8 @@
 //! to N coordinates leaves, on average, a share 1 − P/N of each coordinate's variance (the
 //! mean leverage is P/N). σ from a fit's residuals is divided by [`shrink`] = √(1 − P/N).
 //! And σ so estimated is known only to ν = N − P degrees of freedom: a residual's squared
-//! norm over 2σ̂² is then F(2, ν) distributed, and the threshold is its 99 % point
+//! norm over 2σ̂² is then about F(2, ν) distributed (exactly so for an rms σ̂ independent of
+//! the residual; a median's is known to fewer), and the threshold is its 99 % point
 //! ([`inlier_multiple`]), wider than the Rayleigh one for a fit of few residual degrees.
 //!
 //! Noise that grows with the coordinates (relative noise, as `synth --noise` adds it) makes
@@ -28,7 +29,7 @@
 
 use nalgebra::Vector2;
 
-pub use crate::algebra::mix::Mix;
+pub use crate::algebra::mix::{Mix, STEPS};
 
 use super::Conditioning;
 
@@ -47,8 +48,7 @@ pub const RAYLEIGH_INLIER: f64 = 3.0348542587702925;
 pub const FLOOR_ULPS: f64 = 1024.0;
 
 /// The residual freedom (coordinates less parameters) a fit needs for the mix of the two
-/// noise scales to be estimated from it (below, one scale): as for membership, λ is only
-/// estimated where ten residual degrees of freedom remain for it. `robust_calibration` is
+/// noise scales to be estimated from it (below, one scale): a chosen count. `robust_calibration` is
 /// insensitive to the count (0, 10 or 40 all drop 0.98 % of good observations under
 /// relative noise, seed 1): every scene but the smallest leaves far more.
 pub const MIX_MIN_FREEDOM: usize = 10;
@@ -56,7 +56,7 @@ pub const MIX_MIN_FREEDOM: usize = 10;
 /// The robust scale behind a threshold taken from the data.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Scale {
-    /// The median residual norm (image units), over every observation.
+    /// The median residual norm (image units; weighed by `mix`), over every observation.
     pub median: f64,
     /// The number of observations it is the median of.
     pub observations: usize,
@@ -82,7 +82,7 @@ pub struct Scale {
 pub enum Source {
     /// Given (`--threshold`).
     Given,
-    /// From the residuals: max([`RAYLEIGH_INLIER`] σ, floor).
+    /// From the residuals: max(`multiple` σ, floor) ([`Scale`]).
     Data(Scale),
 }
 
@@ -185,13 +185,20 @@ impl Threshold {
     }
 }
 
+/// The smallest weight a residual coordinate is divided by, √(1/[`STEPS`]): the fit is not
+/// weighted, so a coordinate near the origin takes in the errors of others through the fit,
+/// and under λ = 1 its own weight would tend to zero.
+pub const MIN_WEIGHT_SQUARED: f64 = 1.0 / STEPS as f64;
+
 /// The norm of the residual `e` of the image `y` with each coordinate divided by its weight
-/// under `mix` ([`Mix::weight`] of its square): the plain norm under one scale.
+/// under `mix` ([`Mix::weight`] of its square, at least √[`MIN_WEIGHT_SQUARED`]): the plain
+/// norm under one scale.
 pub fn scaled(e: Vector2<f64>, y: Vector2<f64>, mix: &Mix) -> f64 {
-    if *mix == Mix::UNIFORM || mix.relative == 0.0 {
+    if mix.relative == 0.0 {
         return e.norm();
     }
-    Vector2::new(e.x / mix.weight(y.x * y.x), e.y / mix.weight(y.y * y.y)).norm()
+    let w = |c: f64| mix.weight(c * c).max(MIN_WEIGHT_SQUARED.sqrt());
+    Vector2::new(e.x / w(y.x), e.y / w(y.y)).norm()
 }
 
 /// The [`INLIER_QUANTILE`] point of a residual's norm in units of σ̂ when σ̂ is known to ν

@@ -159,6 +159,16 @@ pub fn predict(rule: Rule, f1: &[Vector2<f64>; 4], f2: &[Vector2<f64>; 4]) -> Op
 /// Grid points of d² = lo (1 + t), t from 10⁻⁶ to 100 geometrically.
 const GRID: usize = 4000;
 
+/// The grid's t = 10⁻⁶ e^(i ln 10⁸ / (GRID − 1)), i = 0 … GRID − 1, computed once (the
+/// rules' fit evaluates it for every assignment and each of its rounding probes).
+fn grid() -> &'static [f64] {
+    static GRID_T: std::sync::OnceLock<Vec<f64>> = std::sync::OnceLock::new();
+    GRID_T.get_or_init(|| {
+        let step = (1e8_f64).ln() / (GRID - 1) as f64;
+        (0..GRID).map(|i| 1e-6 * (step * i as f64).exp()).collect()
+    })
+}
+
 /// The d² on the grid where b² (or g², `g`) of root `root` (0: −, 1: +) is smallest.
 fn minimum(
     f1: &[Vector2<f64>; 4],
@@ -169,11 +179,11 @@ fn minimum(
 ) -> Option<f64> {
     let a = |f: &[Vector2<f64>; 4]| [f[3], f[1], f[2], f[0]];
     let (a1, a2) = (a(f1), a(f2));
-    let step = (1e8_f64).ln() / (GRID - 1) as f64;
     let at = crate::derivations::identity::b_squared_in(&a1, &a2)?;
-    (0..GRID)
-        .filter_map(|i| {
-            let x = lo * (1.0 + 1e-6 * (step * i as f64).exp());
+    grid()
+        .iter()
+        .filter_map(|t| {
+            let x = lo * (1.0 + t);
             let (b2, g2) = at(x)?[root];
             Some((x, if g { g2 } else { b2 }))
         })
@@ -200,22 +210,15 @@ pub struct RuleFit {
 /// d² and its rounding.
 pub type PrintedD = ([Vector2<f64>; 4], [Vector2<f64>; 4], f64, f64);
 
-/// A rule's prediction with its first-order bound over the frames' rounding (±`half` on
-/// every coordinate).
-fn predict_bounded(
-    rule: Rule,
-    f1: &[Vector2<f64>; 4],
-    f2: &[Vector2<f64>; 4],
-    half: f64,
-) -> Option<(f64, f64)> {
-    let y = predict(rule, f1, f2)?;
+/// A rule's first-order bound over the frames' rounding (±`half` on every coordinate): 0
+/// where a probe is undefined.
+fn rounding_bound(rule: Rule, f1: &[Vector2<f64>; 4], f2: &[Vector2<f64>; 4], half: f64) -> f64 {
     let x: Vec<f64> = f1.iter().chain(f2).flat_map(|p| [p.x, p.y]).collect();
     let f = |v: &[f64]| {
         let g = |o: usize| std::array::from_fn(|i| Vector2::new(v[o + 2 * i], v[o + 2 * i + 1]));
         predict(rule, &g(0), &g(8)).map(|y| vec![y])
     };
-    let b = first_order_bound(&f, &x, &[half; 16]).map_or(0.0, |b| b[0]);
-    Some((y, b))
+    first_order_bound(&f, &x, &[half; 16]).map_or(0.0, |b| b[0])
 }
 
 /// Every rule against `printed`, the frames' coordinates rounded to ±`half`: a hit is a
@@ -227,8 +230,13 @@ pub fn fit_rules(printed: &[PrintedD], half: f64) -> Vec<RuleFit> {
             let mut rel = Vec::new();
             let mut hits = 0;
             for (f1, f2, d2, tol) in printed {
-                if let Some((y, b)) = predict_bounded(rule, f1, f2, half) {
-                    hits += usize::from((y - d2).abs() <= *tol + b);
+                if let Some(y) = predict(rule, f1, f2) {
+                    // the bound is finite and at least 0: only a miss by the printed
+                    // rounding alone needs it
+                    let off = (y - d2).abs();
+                    hits += usize::from(
+                        off <= *tol || off <= *tol + rounding_bound(rule, f1, f2, half),
+                    );
                     rel.push((y - d2).abs() / d2);
                 }
             }

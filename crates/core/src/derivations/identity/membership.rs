@@ -127,22 +127,13 @@ fn noise_mix(fit: &Distances, members: &[bool]) -> (f64, f64) {
 /// At least 2¹⁰ ε (exact data); with five points or fewer (no residual freedom beyond one)
 /// the floor, the same for every point.
 pub fn robust_tolerance(f1: &[Vector2<f64>], f2: &[Vector2<f64>]) -> Tolerance {
-    if f1.len() <= FIT_PARAMETERS + 1 {
-        return Tolerance::uniform(1024.0 * f64::EPSILON);
-    }
-    tolerance_from(f1, f2, &least_median_subset(f1, f2))
-}
-
-/// [`robust_tolerance`] from the four-point subset `start` (a membership mask) in place of
-/// the least-median one.
-fn tolerance_from(f1: &[Vector2<f64>], f2: &[Vector2<f64>], start: &[bool]) -> Tolerance {
     let floor = Tolerance::uniform(1024.0 * f64::EPSILON);
     let n = f1.len();
     if n <= FIT_PARAMETERS + 1 {
         return floor;
     }
     let h = (n + EPIPOLAR_DOF).div_ceil(2).clamp(EPIPOLAR_DOF + 2, n);
-    let d = epipolar_distances(f1, f2, start).d;
+    let d = epipolar_distances(f1, f2, &least_median_subset(f1, f2)).d;
     let mut sorted = d.clone();
     sorted.sort_by(f64::total_cmp);
     let sigma0 = MAD_TO_SIGMA * (1.0 + 5.0 / (n - EPIPOLAR_DOF) as f64) * sorted[h - 1];
@@ -280,17 +271,6 @@ pub struct Judged {
 /// are refitted until the members no longer change. Returns each point's membership, its
 /// final distance and its tolerance.
 pub fn membership(f1: &[Vector2<f64>], f2: &[Vector2<f64>], tolerance: &Tolerance) -> Vec<Judged> {
-    membership_from(f1, f2, tolerance, None)
-}
-
-/// [`membership`], started from the four-point subset `start` (a membership mask) when one
-/// is given, without the fit to all points first.
-fn membership_from(
-    f1: &[Vector2<f64>],
-    f2: &[Vector2<f64>],
-    tolerance: &Tolerance,
-    start: Option<&[bool]>,
-) -> Vec<Judged> {
     let n = f1.len();
     let all = epipolar_distances(f1, f2, &vec![true; n]);
     let tol = tolerance.of(&all);
@@ -305,10 +285,10 @@ fn membership_from(
             })
             .collect()
     };
-    if n <= EPIPOLAR_DOF + 1 || (start.is_none() && all.d.iter().zip(&tol).all(|(d, t)| d <= t)) {
+    if n <= EPIPOLAR_DOF + 1 || all.d.iter().zip(&tol).all(|(d, t)| d <= t) {
         return judge(&all, &vec![true; n], &tol);
     }
-    let mut inside = start.map_or_else(|| least_median_subset(f1, f2), <[bool]>::to_vec);
+    let mut inside = least_median_subset(f1, f2);
     let mut fit = epipolar_distances(f1, f2, &inside);
     // each round refits on the points within the tolerance; the members settle in a few
     for _ in 0..n {
@@ -350,55 +330,17 @@ fn within(dist: &[f64], inside: &[bool], tolerance: &[f64], base: f64) -> Vec<bo
 /// The four-point subset whose exact epipolar fit has the least h-th smallest distance over
 /// all points (h = ⌊(n + 4)/2⌋), as a membership mask.
 fn least_median_subset(f1: &[Vector2<f64>], f2: &[Vector2<f64>]) -> Vec<bool> {
-    ranked_subsets(f1, f2)
-        .into_iter()
-        .next()
-        .unwrap_or_else(|| vec![true; f1.len()])
-}
-
-/// The four-point subsets of [`four_point_subsets`] as membership masks, by the h-th
-/// smallest distance of their exact epipolar fits over all points (the earlier first on a
-/// tie; a fit without a finite h-th distance left out).
-fn ranked_subsets(f1: &[Vector2<f64>], f2: &[Vector2<f64>]) -> Vec<Vec<bool>> {
     let n = f1.len();
     let h = (n + EPIPOLAR_DOF).div_ceil(2).clamp(EPIPOLAR_DOF + 2, n);
-    let mut scored: Vec<(f64, Vec<bool>)> = four_point_subsets(n)
-        .into_iter()
-        .filter_map(|q| {
-            let mut inside = vec![false; n];
-            q.iter().for_each(|&i| inside[i] = true);
-            let mut d = epipolar_distances(f1, f2, &inside).d;
-            d.sort_by(f64::total_cmp);
-            d[h - 1].is_finite().then_some((d[h - 1], inside))
-        })
-        .collect();
-    // a stable sort: the earlier subset first on a tie, as the least-median search kept it
-    scored.sort_by(|a, b| a.0.total_cmp(&b.0));
-    scored.into_iter().map(|s| s.1).collect()
-}
-
-/// The default decision, from the data alone: [`robust_tolerance`] and [`membership`]; where
-/// the members they choose are not one rigid body ([`members_rigid`]: a foreign point taken
-/// in, a member set apart), the same from each next four-point subset in the least-median
-/// order, the first whose members are one rigid body kept; the first decision when none is.
-/// A decision the rigidity check would refuse is not an answer while another subset gives
-/// one.
-pub fn rigid_membership(f1: &[Vector2<f64>], f2: &[Vector2<f64>]) -> (Tolerance, Vec<Judged>) {
-    let rigid = |t: &Tolerance, j: &[Judged]| {
-        let inside: Vec<bool> = j.iter().map(|x| x.member).collect();
-        members_rigid(f1, f2, &inside, t.largest(j)).is_none()
-    };
-    let tolerance = robust_tolerance(f1, f2);
-    let judged = membership(f1, f2, &tolerance);
-    if rigid(&tolerance, &judged) || f1.len() <= FIT_PARAMETERS + 1 {
-        return (tolerance, judged);
-    }
-    for start in ranked_subsets(f1, f2).iter().skip(1) {
-        let t = tolerance_from(f1, f2, start);
-        let j = membership_from(f1, f2, &t, Some(start));
-        if rigid(&t, &j) {
-            return (t, j);
+    let mut best = (f64::INFINITY, vec![true; n]);
+    for q in four_point_subsets(n) {
+        let mut inside = vec![false; n];
+        q.iter().for_each(|&i| inside[i] = true);
+        let mut d = epipolar_distances(f1, f2, &inside).d;
+        d.sort_by(f64::total_cmp);
+        if d[h - 1] < best.0 {
+            best = (d[h - 1], inside);
         }
     }
-    (tolerance, judged)
+    best.1
 }

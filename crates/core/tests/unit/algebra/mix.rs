@@ -5,7 +5,8 @@ use orthocheck_core::model::rng;
 use rand::Rng;
 
 /// Seeded residuals (d, x²) of coordinates x uniform in [−2, 2] with normal-like noise
-/// (a sum of three uniforms) of scale `(1 − λ) + λ x²/u²` for the given λ.
+/// (a sum of three uniforms) of standard deviation proportional to √((1 − λ) + λ x²/u²)
+/// for the given λ.
 fn residuals(relative: f64, seed: u64) -> Vec<(f64, f64)> {
     let mut g = rng(seed);
     let xs: Vec<f64> = (0..400).map(|_| g.random_range(-2.0..2.0)).collect();
@@ -46,4 +47,10 @@ fn a_coordinate_at_the_origin_never_makes_the_noise_purely_relative() {
     };
     assert_eq!(m.weight(16.0), 2.0);
     assert_eq!(m.weight(f64::NAN), 1.0);
+    // residuals all zero (exact data) or not finite say nothing of the mix: one scale
+    assert_eq!(Mix::most_likely(&[(0.0, 1.0), (0.0, 4.0)]).relative, 0.0);
+    assert_eq!(
+        Mix::most_likely(&[(f64::NAN, 1.0), (1.0, 4.0)]).relative,
+        0.0
+    );
 }

@@ -68,4 +68,20 @@ fn the_grouped_search_takes_the_gauged_search_s_steps() {
     // targets out of the box's reach (x₀ + x₁ = 2 needs a shift of 2 half-widths) give none
     let far = |x: &[f64]| Some(vec![(x[0] + x[1] - 2.0) / 1e-3, (x[1] + x[2]) / 1e-3]);
     assert!(reproduce_gauged(&b, &far).is_none());
+    struct Far;
+    impl GroupedResiduals for Far {
+        fn groups(&self) -> usize {
+            2
+        }
+        fn group(&self, g: usize, x: &[f64], out: &mut Vec<f64>) {
+            out.push(match g {
+                0 => (x[0] + x[1] - 2.0) / 1e-3,
+                _ => (x[1] + x[2]) / 1e-3,
+            });
+        }
+        fn moves(&self, i: usize, g: usize) -> bool {
+            TwoRows.moves(i, g)
+        }
+    }
+    assert!(reproduce_grouped(&b, &Far).is_none());
 }
