@@ -2,7 +2,7 @@
 # Build the Ceres benchmark (scripts/ceres_bench/bench.cc) into target/ceres_bench/bench.
 # Needs Debian's libceres-dev (apt-get install -y libceres-dev: Ceres 2.1 with SuiteSparse,
 # glog, gflags, Eigen 3). A development tool: no crate depends on it.
-# The compiler runs under flock /tmp/cargo.lock, as every build on the shared machine does.
+# The compiler runs under flock /tmp/cargo.lock, so that it never runs beside a cargo build.
 set -eu
 here=$(cd "$(dirname "$0")" && pwd)
 out="$here/../../target/ceres_bench"

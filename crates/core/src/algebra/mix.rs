@@ -44,7 +44,7 @@ impl Mix {
     /// The mix of most likelihood for `residuals`, pairs (d, s) of a residual and its
     /// coordinates' squares: normal errors of standard deviation σ w, σ profiled out, the
     /// least Σ ln w² + n ln Σ (d/w)² over λ on the grid of [`STEPS`]; u² the mean of s.
-    /// λ = 0 on a tie, where the residuals are all zero or not finite, and where every score
+    /// λ = 0 on a tie, where the residuals are all zero or any is not finite, and where every score
     /// is infinite (a weight of zero: a coordinate at the origin under λ = 1 would claim
     /// exactness); [`Mix::UNIFORM`] when u² is not a positive number.
     pub fn most_likely(residuals: &[(f64, f64)]) -> Mix {

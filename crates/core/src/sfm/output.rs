@@ -5,7 +5,7 @@
 //! `method`; in robust mode `inliers` and `rejected` (point names), `threshold` (`value`,
 //! `from`: `"data"` or `"--threshold"`, and for the data its `median`, `sigma`, `shrink`,
 //! `floor`, `observations`, `freedom` (σ's residual degrees of freedom, null for a RANSAC
-//! sample's), `multiple` (the threshold in σ), and `relative` and `unit` (the mix of noise
+//! sample's and for a fit without residual freedom), `multiple` (the threshold in σ), and `relative` and `unit` (the mix of noise
 //! scales residuals were weighed by, λ and u²)) and `dropped` (`point`, `frame` counted from 1, `residual`);
 //! after a bundle adjustment `points_std` (each point's standard errors by name).
 //! The document: with one group of frames, its reconstruction's fields; with several,
@@ -276,7 +276,7 @@ fn mix_clause(mix: &Mix) -> String {
         return String::new();
     }
     format!(
-        "; each residual coordinate x divided by √((1 − λ) + λ x²/u²), λ = {} (noise growing with the coordinates), u = {}",
+        "; each residual coordinate x divided by √((1 − λ) + λ x²/u²), at least √(1/8), λ = {} (noise growing with the coordinates), u = {}",
         sig(mix.relative),
         sig(mix.unit.sqrt())
     )

@@ -407,8 +407,8 @@ pub struct Dropped {
     /// final cameras: from its kept images, or from all its images for a rejected point;
     /// `None` when they do not fix it. The plain distance: the judgement weighed each
     /// coordinate by the threshold's mix of noise scales ([`threshold::scaled`]), so where
-    /// the noise grows with the coordinates a dropped image far from the origin may lie
-    /// nearer than the threshold's value.
+    /// the noise grows with the coordinates a dropped image near the image's origin may lie
+    /// nearer than the threshold's value (and one far from it farther).
     pub residual: Option<f64>,
 }
 

@@ -72,8 +72,8 @@ pub struct Scale {
     pub freedom: Option<usize>,
     /// The threshold in units of σ, [`inlier_multiple`] of `freedom`.
     pub multiple: f64,
-    /// The mix of the two noise scales the residuals were weighed by ([`Mix::UNIFORM`]: one
-    /// scale, the plain norm).
+    /// The mix of the two noise scales the residuals were weighed by (λ = 0: one scale, the
+    /// plain norm).
     pub mix: Mix,
 }
 
@@ -185,7 +185,7 @@ impl Threshold {
     }
 }
 
-/// The smallest weight a residual coordinate is divided by, √(1/[`STEPS`]): the fit is not
+/// The square of the smallest weight a residual coordinate is divided by, 1/[`STEPS`]: the fit is not
 /// weighted, so a coordinate near the origin takes in the errors of others through the fit,
 /// and under λ = 1 its own weight would tend to zero.
 pub const MIN_WEIGHT_SQUARED: f64 = 1.0 / STEPS as f64;

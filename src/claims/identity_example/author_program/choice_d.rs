@@ -231,7 +231,7 @@ pub fn fit_rules(printed: &[PrintedD], half: f64) -> Vec<RuleFit> {
             let mut hits = 0;
             for (f1, f2, d2, tol) in printed {
                 if let Some(y) = predict(rule, f1, f2) {
-                    // the bound is finite and at least 0: only a miss by the printed
+                    // the bound is never NaN and at least 0: only a miss by the printed
                     // rounding alone needs it
                     let off = (y - d2).abs();
                     hits += usize::from(

@@ -96,4 +96,15 @@ fn a_threshold_with_its_freedom_and_mix_says_so() {
     let expected = (1.0f64 / 1.0 + 1.0 / 0.5).sqrt();
     assert!((scaled(e, y, &mix) - expected).abs() < 1e-15);
     assert_eq!(scaled(e, y, &Mix::UNIFORM), e.norm());
+    // under λ = 1 a coordinate at the origin would have weight 0: it is divided by √(1/8)
+    let relative = Mix {
+        relative: 1.0,
+        unit: 1.0,
+    };
+    let at_origin = scaled(
+        nalgebra::Vector2::new(1.0, 0.0),
+        nalgebra::Vector2::new(0.0, 5.0),
+        &relative,
+    );
+    assert!((at_origin - 8f64.sqrt()).abs() < 1e-15, "{at_origin}");
 }
