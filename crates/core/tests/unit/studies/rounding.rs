@@ -27,22 +27,31 @@ fn a_witness_is_found_only_inside_the_box() {
     assert!(reproduce(&b, &far).is_none());
 }
 
-/// Two printed rows, each moved by two of three rounded coordinates: fewer targets than
-/// coordinates, one direction (x₀ − x₁ + x₂) neither sees.
-struct TwoRows;
+/// Two printed rows, x₀ + x₁ and x₁ + x₂ against their targets, each moved by two of three
+/// rounded coordinates: fewer targets than coordinates, one direction (x₀ − x₁ + x₂) neither
+/// sees.
+struct TwoRows([f64; 2]);
+
+impl TwoRows {
+    /// Both rows' scaled residuals at `x`.
+    fn all(&self, x: &[f64]) -> Option<Vec<f64>> {
+        let mut out = Vec::new();
+        for g in 0..self.groups() {
+            self.group(g, x, &mut out);
+        }
+        Some(out)
+    }
+}
 
 impl GroupedResiduals for TwoRows {
     fn groups(&self) -> usize {
         2
     }
     fn group(&self, g: usize, x: &[f64], out: &mut Vec<f64>) {
-        out.push(match g {
-            0 => (x[0] + x[1] - 0.2) / 1e-3,
-            _ => (x[1] + x[2] - 0.1) / 1e-3,
-        });
+        out.push((x[g] + x[g + 1] - self.0[g]) / 1e-3);
     }
     fn moves(&self, i: usize, g: usize) -> bool {
-        (g == 0 && i < 2) || (g == 1 && i > 0)
+        i == g || i == g + 1
     }
 }
 
@@ -52,36 +61,15 @@ fn the_grouped_search_takes_the_gauged_search_s_steps() {
         center: vec![0.0; 3],
         half: vec![0.5; 3],
     };
-    let all = |x: &[f64]| {
-        let mut out = Vec::new();
-        for g in 0..TwoRows.groups() {
-            TwoRows.group(g, x, &mut out);
-        }
-        Some(out)
-    };
     // the grouped Jacobian is the central differences entry for entry: the same steps, the
     // same witness to the bit
-    let gauged = reproduce_gauged(&b, &all).expect("a witness inside the box");
-    let grouped = reproduce_grouped(&b, &TwoRows).expect("a witness inside the box");
+    let near = TwoRows([0.2, 0.1]);
+    let gauged = reproduce_gauged(&b, &|x| near.all(x)).expect("a witness inside the box");
+    let grouped = reproduce_grouped(&b, &near).expect("a witness inside the box");
     assert_eq!(gauged.point, grouped.point);
     assert!(gauged.residual <= 1.0 && gauged.shift_ratio <= 1.0);
     // targets out of the box's reach (x₀ + x₁ = 2 needs a shift of 2 half-widths) give none
-    let far = |x: &[f64]| Some(vec![(x[0] + x[1] - 2.0) / 1e-3, (x[1] + x[2]) / 1e-3]);
-    assert!(reproduce_gauged(&b, &far).is_none());
-    struct Far;
-    impl GroupedResiduals for Far {
-        fn groups(&self) -> usize {
-            2
-        }
-        fn group(&self, g: usize, x: &[f64], out: &mut Vec<f64>) {
-            out.push(match g {
-                0 => (x[0] + x[1] - 2.0) / 1e-3,
-                _ => (x[1] + x[2]) / 1e-3,
-            });
-        }
-        fn moves(&self, i: usize, g: usize) -> bool {
-            TwoRows.moves(i, g)
-        }
-    }
-    assert!(reproduce_grouped(&b, &Far).is_none());
+    let far = TwoRows([2.0, 0.0]);
+    assert!(reproduce_gauged(&b, &|x| far.all(x)).is_none());
+    assert!(reproduce_grouped(&b, &far).is_none());
 }
