@@ -42,16 +42,15 @@
 //!
 //! Frames and points are numbered from 0 in the file.
 
-use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use orthocheck::model::{rng, NoiseModel, Scene};
 use orthocheck::sfm::turntable::Turntable;
 use orthocheck::sfm::{
-    bundle_adjust, reconstruct, tomasi_kanade, BundleOptions, Observations, Options,
-    Reconstruction, Units,
+    bundle_adjust, reconstruct, tomasi_kanade, BundleOptions, Observations, Options, Reconstruction,
 };
+use orthocheck_benches::problem_text;
 
 /// The adjustment alone: Ceres computes no standard errors.
 fn loop_only() -> BundleOptions {
@@ -98,26 +97,6 @@ fn pipeline_start(obs: &Observations) -> Reconstruction {
         .into_single()
         .expect("one group of frames")
         .reconstruction
-}
-
-fn frames_and_points(text: &mut String, tag: &str, rec: &Reconstruction) {
-    for (f, fr) in rec.frames.iter().enumerate() {
-        let r = &fr.rotation;
-        let _ = write!(text, "{tag}frame {f}");
-        for i in 0..3 {
-            for j in 0..3 {
-                let _ = write!(text, " {:.16e}", r[(i, j)]);
-            }
-        }
-        let _ = writeln!(text, " {:.16e} {:.16e}", fr.translation.x, fr.translation.y);
-    }
-    for (j, x) in rec.points.iter().enumerate() {
-        let _ = writeln!(
-            text,
-            "{tag}point {j} {:.16e} {:.16e} {:.16e}",
-            x.x, x.y, x.z
-        );
-    }
 }
 
 /// Longer adjustments: `limit` iterations (timed over `repeat` runs, or once when `reach`
@@ -167,48 +146,6 @@ fn longer_runs(
             cost(obs, &at.reconstruction)
         );
     }
-}
-
-/// The problem file: units, sizes, orthocheck's figures, the start, the observations and
-/// orthocheck's result, in the units `sfm::Units` works in.
-fn problem_text(
-    name: &str,
-    obs: &Observations,
-    (start, result): (&Reconstruction, &Reconstruction),
-    (iterations, final_cost, start_cost): (usize, f64, f64),
-    (secs, overhead): (f64, f64),
-) -> String {
-    let units = Units::of(obs).expect("finite coordinates");
-    let mut unit_start = start.clone();
-    units.forward(&mut unit_start);
-    let mut unit_result = result.clone();
-    units.forward(&mut unit_result);
-    let unit_obs = units.to_unit(obs);
-    let mut text = String::new();
-    let _ = writeln!(text, "name {name}");
-    let _ = writeln!(
-        text,
-        "units {:.16e} {:.16e} {:.16e}",
-        units.centre.x, units.centre.y, units.scale
-    );
-    let _ = writeln!(
-        text,
-        "sizes {} {} {}",
-        obs.frames.len(),
-        obs.names.len(),
-        obs.count()
-    );
-    let _ = writeln!(
-        text,
-        "rust {} {final_cost:.16e} {start_cost:.16e} {secs:.6e} {overhead:.6e}",
-        iterations
-    );
-    frames_and_points(&mut text, "", &unit_start);
-    for (f, j, y) in unit_obs.seen() {
-        let _ = writeln!(text, "obs {f} {j} {:.16e} {:.16e}", y.x, y.y);
-    }
-    frames_and_points(&mut text, "rust_", &unit_result);
-    text
 }
 
 /// Adjust `start` with orthocheck (timed), print the figures, write the problem file.

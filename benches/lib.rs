@@ -1,6 +1,9 @@
 //! What the benchmarks share: where the paper's cases are.
 
+use std::fmt::Write as _;
 use std::path::PathBuf;
+
+use orthocheck::sfm::{Observations, Reconstruction, Units};
 
 /// The folder of the paper's cases, `paper_cases/` of the repository.
 pub fn paper_cases() -> PathBuf {
@@ -68,4 +71,67 @@ fn print_row(name: &str, b: &Tally) {
         pct(b.found, b.far),
         b.refused
     );
+}
+
+/// A reconstruction's frames and points as lines of a problem file, each tag prefixed by `tag`.
+fn frames_and_points(text: &mut String, tag: &str, rec: &Reconstruction) {
+    for (f, fr) in rec.frames.iter().enumerate() {
+        let r = &fr.rotation;
+        let _ = write!(text, "{tag}frame {f}");
+        for i in 0..3 {
+            for j in 0..3 {
+                let _ = write!(text, " {:.16e}", r[(i, j)]);
+            }
+        }
+        let _ = writeln!(text, " {:.16e} {:.16e}", fr.translation.x, fr.translation.y);
+    }
+    for (j, x) in rec.points.iter().enumerate() {
+        let _ = writeln!(
+            text,
+            "{tag}point {j} {:.16e} {:.16e} {:.16e}",
+            x.x, x.y, x.z
+        );
+    }
+}
+
+/// A bundle-adjustment problem file (`scripts/ceres_bench/`, format in `ceres_export`): units, sizes, orthocheck's figures, the start, the observations and
+/// orthocheck's result, in the units `sfm::Units` works in.
+pub fn problem_text(
+    name: &str,
+    obs: &Observations,
+    (start, result): (&Reconstruction, &Reconstruction),
+    (iterations, final_cost, start_cost): (usize, f64, f64),
+    (secs, overhead): (f64, f64),
+) -> String {
+    let units = Units::of(obs).expect("finite coordinates");
+    let mut unit_start = start.clone();
+    units.forward(&mut unit_start);
+    let mut unit_result = result.clone();
+    units.forward(&mut unit_result);
+    let unit_obs = units.to_unit(obs);
+    let mut text = String::new();
+    let _ = writeln!(text, "name {name}");
+    let _ = writeln!(
+        text,
+        "units {:.16e} {:.16e} {:.16e}",
+        units.centre.x, units.centre.y, units.scale
+    );
+    let _ = writeln!(
+        text,
+        "sizes {} {} {}",
+        obs.frames.len(),
+        obs.names.len(),
+        obs.count()
+    );
+    let _ = writeln!(
+        text,
+        "rust {} {final_cost:.16e} {start_cost:.16e} {secs:.6e} {overhead:.6e}",
+        iterations
+    );
+    frames_and_points(&mut text, "", &unit_start);
+    for (f, j, y) in unit_obs.seen() {
+        let _ = writeln!(text, "obs {f} {j} {:.16e} {:.16e}", y.x, y.y);
+    }
+    frames_and_points(&mut text, "rust_", &unit_result);
+    text
 }

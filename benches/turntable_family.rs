@@ -13,7 +13,9 @@
 //! far more); lower counts as reached too. One group over every frame is the whole scene;
 //! scenes split into groups, or with frames dropped, are counted apart as well. The table:
 //! elevation band × L. `SHOW_ERRORS=1` prints each miss's warnings or error, and each of
-//! its groups' cost against the truth-started one; `ONLY=N` runs scene N alone.
+//! its groups' cost against the truth-started one; `ONLY=N` runs scene N alone; `EXPORT=DIR`
+//! writes each group's problem for `scripts/ceres_bench` (from the truth and from the
+//! pipeline's fit).
 
 use nalgebra::{Rotation3, Vector2, Vector3};
 use orthocheck::model::{rng, Body, Motion, NoiseModel, Scene};
@@ -129,8 +131,12 @@ fn main() {
             Ok(o) => {
                 // every group against the optimum of its own observations started from the
                 // truth (one group over every frame: the whole scene's)
-                let costs: Vec<(Option<f64>, Option<f64>)> =
-                    o.components.iter().map(|c| costs(&m, c)).collect();
+                let costs: Vec<(Option<f64>, Option<f64>)> = o
+                    .components
+                    .iter()
+                    .enumerate()
+                    .map(|(g, c)| costs(&m, c, (s, g)))
+                    .collect();
                 let reached = costs
                     .iter()
                     .all(|c| matches!(c, (Some(a), Some(b)) if *a <= b * (1.0 + 1e-6)));
@@ -180,7 +186,11 @@ fn main() {
 
 /// A group's final cost, and the cost the adjustment of the same observations started from
 /// the truth reaches.
-fn costs(m: &Made, c: &Component) -> (Option<f64>, Option<f64>) {
+/// With `EXPORT=DIR`, each group's problem is written for `scripts/ceres_bench`'s solver
+/// (`orthocheck_benches::problem_text`): `DIR/family_S_G_truth.txt` from the truth, with the
+/// truth-started adjustment as orthocheck's result, and `DIR/family_S_G_pipeline.txt` from
+/// the pipeline's fit (S the scene, G the group).
+fn costs(m: &Made, c: &Component, (s, g): (u64, usize)) -> (Option<f64>, Option<f64>) {
     let index: std::collections::HashMap<&str, usize> = m
         .obs
         .names
@@ -208,13 +218,32 @@ fn costs(m: &Made, c: &Component) -> (Option<f64>, Option<f64>) {
         frames: c.frames.iter().map(|&f| m.truth.frames[f - 1]).collect(),
         ..m.truth.clone()
     };
-    let best = bundle_adjust(&obs, &truth, &loop_only())
-        .ok()
+    let adjusted = bundle_adjust(&obs, &truth, &loop_only()).ok();
+    let best = adjusted
+        .as_ref()
         .and_then(|a| a.report.costs.last().copied());
-    (
-        c.bundle.as_ref().and_then(|b| b.costs.last().copied()),
-        best,
-    )
+    let got = c.bundle.as_ref().and_then(|b| b.costs.last().copied());
+    if let (Some(dir), Some(a)) = (std::env::var_os("EXPORT"), &adjusted) {
+        let dir = std::path::PathBuf::from(dir);
+        std::fs::create_dir_all(&dir).expect("the export folder");
+        let end = best.unwrap_or(f64::NAN);
+        let starts = [
+            ("truth", &truth, a.report.costs[0]),
+            ("pipeline", &c.reconstruction, got.unwrap_or(f64::NAN)),
+        ];
+        for (kind, start, start_cost) in starts {
+            let name = format!("family_{s}_{g}_{kind}");
+            let text = orthocheck_benches::problem_text(
+                &name,
+                &obs,
+                (start, &a.reconstruction),
+                (a.report.iterations, end, start_cost),
+                (0.0, 0.0),
+            );
+            std::fs::write(dir.join(format!("{name}.txt")), text).expect("the problem file");
+        }
+    }
+    (got, best)
 }
 
 /// Per cell: scenes, reached, misses warned, refused, split into groups or with frames
