@@ -10,6 +10,37 @@ pub fn paper_cases() -> PathBuf {
     PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/../paper_cases"))
 }
 
+/// The command line of a calibration run: `[SCENES] [SEED] [absolute]`.
+#[derive(Clone, Copy, Debug)]
+pub struct Calibration {
+    /// Scenes to run.
+    pub scenes: u64,
+    /// The run's seed (default 1).
+    pub seed: u64,
+    /// Noise of one scale across the image instead of relative noise.
+    pub absolute: bool,
+}
+
+impl Calibration {
+    /// The arguments, `scenes` scenes by default.
+    pub fn from_args(scenes: u64) -> Calibration {
+        let numbers: Vec<u64> = std::env::args()
+            .skip(1)
+            .filter_map(|a| a.parse().ok())
+            .collect();
+        Calibration {
+            scenes: numbers.first().copied().unwrap_or(scenes),
+            seed: numbers.get(1).copied().unwrap_or(1),
+            absolute: std::env::args().any(|a| a == "absolute"),
+        }
+    }
+
+    /// The seed of scene `s` of a run of seed `seed`.
+    pub fn scene_seed(seed: u64, s: u64) -> u64 {
+        seed.wrapping_mul(1_000_003).wrapping_add(s)
+    }
+}
+
 /// One band's counts in a calibration run (`membership_calibration`, `robust_calibration`):
 /// the scenes, the good items judged and those set apart, the far bad items and those found,
 /// the scenes refused.

@@ -16,7 +16,7 @@ use nalgebra::Vector2;
 use orthocheck::derivations::identity;
 use orthocheck::derivations::two_frames::epipolar;
 use orthocheck::model::{rng, NoiseModel, Scene};
-use orthocheck_benches::{band, print_bands, Tally};
+use orthocheck_benches::{band, print_bands, Calibration, Tally};
 use rand::Rng;
 
 /// Distances from the epipolar geometry fitted (exactly, noise-free) to `clean`, in the same
@@ -111,17 +111,15 @@ fn tally(s: u64, clean: &[[Vector2<f64>; 2]], pts: &[[Vector2<f64>; 2]], band: &
 }
 
 fn main() {
-    let args: Vec<u64> = std::env::args()
-        .skip(1)
-        .filter_map(|a| a.parse().ok())
-        .collect();
-    let scenes = args.first().copied().unwrap_or(2000);
-    let seed = args.get(1).copied().unwrap_or(1);
-    let absolute = std::env::args().any(|a| a == "absolute");
+    let Calibration {
+        scenes,
+        seed,
+        absolute,
+    } = Calibration::from_args(2000);
     // bands of member counts: 6–9, 10–19, 20–50
     let mut bands: [Tally; 3] = Default::default();
     for s in 0..scenes {
-        let (clean, pts) = scene(seed.wrapping_mul(1_000_003).wrapping_add(s), absolute);
+        let (clean, pts) = scene(Calibration::scene_seed(seed, s), absolute);
         let m = clean.len();
         tally(s, &clean, &pts, &mut bands[band(m)]);
     }

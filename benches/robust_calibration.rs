@@ -18,7 +18,7 @@ use nalgebra::Vector2;
 use orthocheck::model::{rng, NoiseModel, Scene, Tracks};
 use orthocheck::sfm::robust::RansacOptions;
 use orthocheck::sfm::{reconstruct, Observations, Options};
-use orthocheck_benches::{band, print_bands, Tally};
+use orthocheck_benches::{band, print_bands, Calibration, Tally};
 use rand::Rng;
 
 /// The scene's noisy tracks, the corrupted (frame, point) pairs and σ.
@@ -54,16 +54,14 @@ fn scene(seed: u64, absolute: bool) -> (Tracks, Tracks, HashSet<(usize, usize)>,
 }
 
 fn main() {
-    let args: Vec<u64> = std::env::args()
-        .skip(1)
-        .filter_map(|a| a.parse().ok())
-        .collect();
-    let scenes = args.first().copied().unwrap_or(1000);
-    let seed = args.get(1).copied().unwrap_or(1);
-    let absolute = std::env::args().any(|a| a == "absolute");
+    let Calibration {
+        scenes,
+        seed,
+        absolute,
+    } = Calibration::from_args(1000);
     let mut bands: [Tally; 3] = Default::default();
     for s in 0..scenes {
-        let (clean, noisy, bad, m) = scene(seed.wrapping_mul(1_000_003).wrapping_add(s), absolute);
+        let (clean, noisy, bad, m) = scene(Calibration::scene_seed(seed, s), absolute);
         let k = clean.frames.len();
         let good: Vec<(usize, usize)> = (0..k)
             .flat_map(|f| (0..m).map(move |j| (f, j)))

@@ -224,26 +224,37 @@ fn costs(m: &Made, c: &Component, (s, g): (u64, usize)) -> (Option<f64>, Option<
         .and_then(|a| a.report.costs.last().copied());
     let got = c.bundle.as_ref().and_then(|b| b.costs.last().copied());
     if let (Some(dir), Some(a)) = (std::env::var_os("EXPORT"), &adjusted) {
-        let dir = std::path::PathBuf::from(dir);
-        std::fs::create_dir_all(&dir).expect("the export folder");
-        let end = best.unwrap_or(f64::NAN);
         let starts = [
             ("truth", &truth, a.report.costs[0]),
             ("pipeline", &c.reconstruction, got.unwrap_or(f64::NAN)),
         ];
-        for (kind, start, start_cost) in starts {
-            let name = format!("family_{s}_{g}_{kind}");
-            let text = orthocheck_benches::problem_text(
-                &name,
-                &obs,
-                (start, &a.reconstruction),
-                (a.report.iterations, end, start_cost),
-                (0.0, 0.0),
-            );
-            std::fs::write(dir.join(format!("{name}.txt")), text).expect("the problem file");
-        }
+        export(std::path::Path::new(&dir), (s, g), &obs, a, &starts);
     }
     (got, best)
+}
+
+/// Writes one problem file per start for the Ceres solver: `DIR/family_S_G_KIND.txt`, each
+/// with the truth-started adjustment `a` as orthocheck's result.
+fn export(
+    dir: &std::path::Path,
+    (s, g): (u64, usize),
+    obs: &Observations,
+    a: &orthocheck::sfm::Adjusted,
+    starts: &[(&str, &Reconstruction, f64)],
+) {
+    std::fs::create_dir_all(dir).expect("the export folder");
+    let end = a.report.costs.last().copied().unwrap_or(f64::NAN);
+    for (kind, start, start_cost) in starts {
+        let name = format!("family_{s}_{g}_{kind}");
+        let text = orthocheck_benches::problem_text(
+            &name,
+            obs,
+            (start, &a.reconstruction),
+            (a.report.iterations, end, *start_cost),
+            (0.0, 0.0),
+        );
+        std::fs::write(dir.join(format!("{name}.txt")), text).expect("the problem file");
+    }
 }
 
 /// Per cell: scenes, reached, misses warned, refused, split into groups or with frames
