@@ -13,7 +13,7 @@
 //! far more); lower counts as reached too. One group over every frame is the whole scene;
 //! scenes split into groups, or with frames dropped, are counted apart as well. The table:
 //! elevation band × L. `SHOW_ERRORS=1` prints each miss's warnings or error, and each of
-//! its groups' cost against the truth-started one; `ONLY=N` runs scene N alone; `EXPORT=DIR`
+//! its groups' cost against the truth-started one; `ONLY=N` (or `N,M,…`) runs those scenes alone; `EXPORT=DIR`
 //! writes each group's problem for `scripts/ceres_bench` (from the truth and from the
 //! pipeline's fit).
 
@@ -118,9 +118,12 @@ fn main() {
     let mut alarms = 0usize;
     // scenes reached as one group over every frame (the whole scene's optimum)
     let mut whole = 0usize;
-    let only: Option<u64> = std::env::var("ONLY").ok().and_then(|v| v.parse().ok());
+    // ONLY=N or ONLY=N,M,…: those scenes alone
+    let only: Option<Vec<u64>> = std::env::var("ONLY")
+        .ok()
+        .map(|v| v.split(',').filter_map(|n| n.trim().parse().ok()).collect());
     for s in 0..scenes {
-        if only.is_some_and(|o| o != s) {
+        if only.as_ref().is_some_and(|o| !o.contains(&s)) {
             continue;
         }
         let m = scene(seed.wrapping_mul(7_919).wrapping_add(s));
