@@ -108,8 +108,8 @@ pub const BUNDLE_WORK: usize = 10_000_000;
 /// adjustment and says so in `method`.
 pub const BUNDLE_FRAMES: usize = 200;
 /// Observations of a bundle adjustment: each iteration costs about 150 multiply-adds per
-/// observation beside the Schur complement, so 100 iterations over 200,000 observations (two
-/// each of 100,000 points) take about 6 s (docs/limits.md); beyond it `reconstruct` skips the
+/// observation beside the Schur complement, so the 200 iterations of the default limit over
+/// 200,000 observations (two each of 100,000 points) take about 10 s (docs/limits.md); beyond it `reconstruct` skips the
 /// adjustment and says so in `method`.
 pub const BUNDLE_OBSERVATIONS: usize = 200_000;
 /// Frames of a variable-projection factorisation (tracks with most entries missing): its

@@ -21,6 +21,12 @@ impl Damping {
         }
     }
 
+    /// Damping λ with the growth factor's start, ν = 2 (for a scaled damping, where λ is
+    /// relative to each parameter's own curvature).
+    pub fn with_lambda(lambda: f64) -> Damping {
+        Damping { lambda, nu: 2.0 }
+    }
+
     /// After a step accepted with gain ratio `rho`.
     pub fn accepted(&mut self, rho: f64) {
         self.lambda *= (1.0 - (2.0 * rho - 1.0).powi(3)).max(1.0 / 3.0);

@@ -61,6 +61,44 @@ fn bundle_adjustment_stopped_at_its_iteration_limit_warns() {
 }
 
 #[test]
+fn the_scaled_damping_moves_points_seen_in_few_frames() {
+    // every point in 2 of 30 frames, 12° apart, from variable projection's start: a point's
+    // depth is fixed far more weakly than a camera (seen by about 70 points), and λI, sized
+    // by the largest curvature, holds the depths almost still
+    let (_, obs) = orthocheck_core::sfm::turntable::Turntable {
+        points: 1000,
+        frames: 30,
+        window: 2,
+        elevation: 0.5,
+        noise: Some(0.002),
+        seed: 3,
+    }
+    .generate();
+    let start = orthocheck_core::sfm::missing::reconstruct(&obs, 1).unwrap();
+    let both = BundleOptions {
+        standard_errors: false,
+        ..BundleOptions::default()
+    };
+    let plain = BundleOptions {
+        plain_iterations: both.max_iterations,
+        ..both
+    };
+    let a = bundle_adjust(&obs, &start, &plain).unwrap().report;
+    let b = bundle_adjust(&obs, &start, &both).unwrap().report;
+    assert_eq!(
+        (a.iterations, a.converged, a.scaled_after),
+        (200, false, None)
+    );
+    let plain_first = orthocheck_core::sfm::bundle::PLAIN_ITERATIONS;
+    assert_eq!(b.scaled_after, Some(plain_first));
+    assert_eq!(a.costs[..=plain_first], b.costs[..=plain_first]);
+    // 200 iterations of λI end at 0.624, 20 of λI and 180 scaled at 0.00105 (600 times
+    // lower): at least 100 times is asked
+    let (ca, cb) = (a.costs[a.iterations], b.costs[b.iterations]);
+    assert!(cb * 100.0 < ca, "{cb} against {ca}");
+}
+
+#[test]
 fn a_clipped_metric_upgrade_warns() {
     // three frames close to one view under heavy noise: L is now and then indefinite
     let mut clipped = 0;
