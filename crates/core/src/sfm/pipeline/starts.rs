@@ -1,7 +1,8 @@
 //! Several starts for tracks with gaps, the best kept. Variable projection from the chain
 //! of frame pairs can reach a local optimum, or a metric upgrade that has to be clipped,
-//! when the tracks are short: the chain's error grows along it. Where the first fit warns
-//! (or fails), the chain is started again from other frames, forwards and backwards
+//! when the tracks are short: the chain's error grows along it, and a fit can converge in
+//! a wrong basin with nothing in it to warn of (docs/limits.md). So for every fit of tracks
+//! with gaps, the chain is started again from other frames, forwards and backwards
 //! ([`CHAIN_STARTS`]; where most entries are missing, as variable projection needs; a chain
 //! that fails falls back on the largest complete block grown in its order), and from the
 //! largest complete block; each is adjusted briefly ([`SCREEN_ITERATIONS`]), the best
@@ -22,10 +23,10 @@ pub const SCREEN_ITERATIONS: usize = 20;
 /// A fit and its adjustment's report.
 type Fitted = (Reconstruction, Option<BundleReport>);
 
-/// The first fit ([`fit`], with the uneven-frames check); where it warns or fails on tracks
-/// with gaps, the best of the other starts ([`orders`] and the largest complete block) by
-/// the adjustment's final cost. Errors other than an unreachable part or a numerical failure
-/// (too large, degenerate) are returned as they are.
+/// The first fit ([`fit`], with the uneven-frames check); on tracks with gaps, the best of
+/// it and the other starts ([`orders`] and the largest complete block) by the adjustment's
+/// final cost. Errors other than an unreachable part or a numerical failure (too large,
+/// degenerate) are returned as they are.
 pub(super) fn best_fit(
     used: &Observations,
     options: &Options,
@@ -36,7 +37,8 @@ pub(super) fn best_fit(
         (rec, b)
     });
     let retry = match &first {
-        Ok((rec, b)) => !rec.warnings.is_empty() && b.is_some(),
+        // not only where it warns: a fit in a wrong basin can look clean (docs/limits.md)
+        Ok((_, b)) => b.is_some(),
         Err(Error::Unreachable(_) | Error::Numerical(_)) => true,
         Err(_) => false,
     };
@@ -50,27 +52,33 @@ pub(super) fn best_fit(
         fits.push((f.clone(), "the first".to_string()));
     }
     fits.extend(finished);
-    // the least cost, the earlier on a tie (the first before the others)
-    let Some(best) = (0..fits.len()).min_by(|&i, &j| cost(&fits[i].0).total_cmp(&cost(&fits[j].0)))
-    else {
-        return first;
-    };
-    let least = cost(&fits[best].0);
+    let least = fits
+        .iter()
+        .map(|f| cost(&f.0))
+        .fold(f64::INFINITY, f64::min);
     if !least.is_finite() {
         return first;
     }
+    // the earliest fit at the least cost within AGREE (the first before the others): the
+    // same optimum reached again by another start does not replace the first fit
+    let Some(best) = fits
+        .iter()
+        .position(|f| cost(&f.0) <= least * (1.0 + AGREE))
+    else {
+        return first;
+    };
     let reached = fits
         .iter()
         .filter(|f| cost(&f.0) <= least * (1.0 + AGREE))
         .count();
     let ((mut rec, b), name) = fits.swap_remove(best);
     rec.method.push(format!(
-        "the first fit warned or failed: of {tried} starts, the one of least final cost ({}) kept: {name}",
+        "tracks with gaps: of {tried} starts, the one of least final cost ({}) kept: {name}",
         sig(least)
     ));
     if reached < 2 {
         rec.warnings.push(format!(
-            "the first start's fit warned or failed, and of the {} fits finished from {tried} starts only one reached the least cost ({}): a lower optimum may exist",
+            "of the {} fits finished from {tried} starts only one reached the least cost ({}): a lower optimum may exist",
             fits.len() + 1,
             sig(least)
         ));

@@ -246,8 +246,8 @@ fn a_warned_first_start_is_replaced_by_the_best_of_the_others() {
     let c = out.into_single().unwrap();
     let method = c.reconstruction.method.join("; ");
     assert!(
-        method.contains("the first fit warned or failed: of 9 starts")
-            && method.contains("kept: the chain from frame 13 on"),
+        method.contains("tracks with gaps: of 9 starts")
+            && method.contains("kept: the chain backwards from frame 24"),
         "{method}"
     );
     assert!(
