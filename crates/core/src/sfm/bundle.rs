@@ -28,7 +28,7 @@ pub const MAX_ITERATIONS: usize = 200;
 /// Iterations damped by λI (every parameter alike, λ from the largest curvature) before the
 /// damping is scaled by each parameter's own curvature, λ·diag(JᵀJ) (Marquardt's scaling,
 /// Ceres' default); as many as the pipeline's screening of other starts
-/// (`pipeline::starts::SCREEN_ITERATIONS`), so a screened fit goes on scaled. Where points are
+/// (`pipeline::starts::SCREEN_ITERATIONS`). Where points are
 /// seen in few frames their curvature is far below the cameras', and λI holds them almost
 /// still: 100,000 points each in 2 of 100 frames end at a cost of 34.9 after 100 iterations
 /// of λI, at 0.171 after 20 of λI and 180 scaled. On the turntable family λI alone reaches
@@ -264,15 +264,13 @@ const PANEL: usize = 128;
 /// measured one (it only moves time, never the result beyond rounding).
 pub(super) const DENSE_GAIN: usize = 4;
 
-/// One point's share of the damped step: M = L⁻¹ for L Lᵀ = V + λI, and per image the
-/// camera–point block Z = W Mᵀ (so that W (V + λI)⁻¹ Wᵀ = Z Zᵀ).
+/// One point's share of the damped step: M = L⁻¹ for L Lᵀ = V + λD (D its damping's shape),
+/// and per image the camera–point block Z = W Mᵀ (so that W (V + λD)⁻¹ Wᵀ = Z Zᵀ).
 struct PointTerms {
     m: Matrix3<f64>,
     z: Vec<Mat5x3>,
 }
 
-/// The damped step: (JᵀJ + λI) δ = −Jᵀr by the Schur complement on the point blocks; the
-/// camera system's lower triangle is accumulated and factored by a blocked Cholesky.
 /// The damping's shape on a camera block `u` of JᵀJ: I, or its diagonal within
 /// [`SCALED_DIAGONAL`] when `scaled`.
 fn shape5(u: &Mat5, scaled: bool) -> Mat5 {
@@ -409,7 +407,7 @@ fn subtract_chunk(
     }
 }
 
-/// The reduction the damped model predicts: ½ δᵀ(λδ − g).
+/// The reduction the damped model predicts: ½ δᵀ(λDδ − g), D the damping's shape.
 fn predicted(n: &Normal, dc: &[Vec5], dp: &[Vector3<f64>], lambda: f64, scaled: bool) -> f64 {
     let c: f64 = dc
         .iter()
@@ -585,7 +583,8 @@ fn levenberg_marquardt(
     if plain > 0 {
         state = descend(by_point, state, &mut report, plain, huber, false);
     }
-    if !report.converged && report.iterations < max_iterations {
+    let left = report.costs.last().is_some_and(|&c| c > 0.0);
+    if !report.converged && left && report.iterations < max_iterations {
         report.scaled_after = Some(report.iterations);
         state = descend(by_point, state, &mut report, max_iterations, huber, true);
     }
