@@ -271,31 +271,22 @@ struct PointTerms {
     z: Vec<Mat5x3>,
 }
 
-/// The damping's shape on a camera block `u` of JᵀJ: I, or its diagonal within
-/// [`SCALED_DIAGONAL`] when `scaled`.
-fn shape5(u: &Mat5, scaled: bool) -> Mat5 {
+/// The damping's shape on a block `m` of JᵀJ (a camera's 5 × 5 or a point's 3 × 3): I, or
+/// its diagonal within [`SCALED_DIAGONAL`] when `scaled`.
+fn shape<const N: usize>(m: &SMatrix<f64, N, N>, scaled: bool) -> SMatrix<f64, N, N> {
     if scaled {
-        Mat5::from_diagonal(
-            &u.diagonal()
+        SMatrix::from_diagonal(
+            &m.diagonal()
                 .map(|d| d.clamp(SCALED_DIAGONAL.0, SCALED_DIAGONAL.1)),
         )
     } else {
-        Mat5::identity()
+        SMatrix::identity()
     }
 }
 
-/// [`shape5`] of a point block.
-fn shape3(v: &Matrix3<f64>, scaled: bool) -> Matrix3<f64> {
-    if scaled {
-        Matrix3::from_diagonal(
-            &v.diagonal()
-                .map(|d| d.clamp(SCALED_DIAGONAL.0, SCALED_DIAGONAL.1)),
-        )
-    } else {
-        Matrix3::identity()
-    }
-}
-
+/// The damped step: (JᵀJ + λD) δ = −Jᵀr (D = I, or diag(JᵀJ) when `scaled`) by the Schur
+/// complement on the point blocks; the camera system's lower triangle is accumulated and
+/// factored by a blocked Cholesky.
 fn solve(
     n: &Normal,
     by_point: &ByPoint,
@@ -307,12 +298,12 @@ fn solve(
     let mut rhs = DVector::<f64>::zeros(5 * k);
     for (f, (u, g)) in n.u.iter().zip(&n.gc).enumerate() {
         s.fixed_view_mut::<5, 5>(5 * f, 5 * f)
-            .copy_from(&(u + shape5(u, scaled) * lambda));
+            .copy_from(&(u + shape(u, scaled) * lambda));
         rhs.fixed_rows_mut::<5>(5 * f).copy_from(&-g);
     }
     let mut terms = Vec::with_capacity(by_point.len());
     for (j, list) in by_point.iter().enumerate() {
-        let l = (n.v[j] + shape3(&n.v[j], scaled) * lambda)
+        let l = (n.v[j] + shape(&n.v[j], scaled) * lambda)
             .cholesky()?
             .unpack();
         let m = l.try_inverse()?;
@@ -413,13 +404,13 @@ fn predicted(n: &Normal, dc: &[Vec5], dp: &[Vector3<f64>], lambda: f64, scaled: 
         .iter()
         .zip(&n.gc)
         .zip(&n.u)
-        .map(|((d, g), u)| d.dot(&(shape5(u, scaled) * d * lambda - g)))
+        .map(|((d, g), u)| d.dot(&(shape(u, scaled) * d * lambda - g)))
         .sum();
     let p: f64 = dp
         .iter()
         .zip(&n.gp)
         .zip(&n.v)
-        .map(|((d, g), v)| d.dot(&(shape3(v, scaled) * d * lambda - g)))
+        .map(|((d, g), v)| d.dot(&(shape(v, scaled) * d * lambda - g)))
         .sum();
     (c + p) / 2.0
 }
