@@ -18,7 +18,7 @@ use num_traits::{One, Signed, Zero};
 use rand::Rng;
 
 use crate::algebra::{Poly, UPoly};
-use crate::derivations::p3f3::{exact_elimination, exact_linear_part};
+use crate::derivations::p3f3::{exact_elimination, exact_elimination_parts};
 
 mod lines;
 mod p4;
@@ -277,8 +277,7 @@ fn positive_at(w: &Poly, root: &crate::algebra::RealRoot, q: &UPoly) -> Option<b
 /// Count one three-point instance exactly.
 pub fn p3f3_instance(scene: &RationalScene, seed: u64) -> Option<P3f3Instance> {
     let l = scene.triangle_squares();
-    let q = exact_elimination(&l)?;
-    let (xz, yz) = exact_linear_part(&l)?;
+    let (q, xz, yz) = exact_elimination_parts(&l)?;
     let zz = Poly::var("z");
     let depths: Vec<Vec<Poly>> = (0..3)
         .map(|i| {

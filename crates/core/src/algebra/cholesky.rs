@@ -17,6 +17,12 @@ pub fn cholesky_lower(mut a: DMatrix<f64>) -> Option<DMatrix<f64>> {
     if a.ncols() != n {
         return None;
     }
+    if n <= BLOCK {
+        // one block: the loop below would factor a copy and copy it back; this is the same
+        // factor (nalgebra's, its upper triangle zero) without the copies
+        let l = nalgebra::Cholesky::new(a)?.unpack();
+        return l.iter().all(|v| v.is_finite()).then_some(l);
+    }
     for j0 in (0..n).step_by(BLOCK) {
         let jb = BLOCK.min(n - j0);
         let m = n - j0;

@@ -6,6 +6,7 @@ mod diff;
 pub mod enclosure;
 pub mod float_roots;
 mod gram;
+pub mod integer;
 pub mod interval;
 mod lanczos;
 pub mod mix;

@@ -11,7 +11,6 @@ use std::ops::{Add, Mul, Neg, Sub};
 use std::rc::Rc;
 
 use num_bigint::BigInt;
-use num_integer::Integer;
 use num_rational::BigRational;
 use num_traits::{One, Signed, Zero};
 
@@ -114,7 +113,7 @@ impl Multiquad {
             if g.is_one() {
                 break;
             }
-            g = g.gcd(x);
+            g = super::integer::gcd(&g, x);
         }
         if num.iter().all(Zero::is_zero) {
             g = den.clone();
@@ -188,7 +187,7 @@ impl Add for &Multiquad {
         debug_assert!(Rc::ptr_eq(&self.field, &o.field));
         // over the least common denominator: one gcd of the denominators, none of the sum's
         // content (rarely more than one; the coefficient growth is what a product reduces)
-        let g = self.den.gcd(&o.den);
+        let g = super::integer::gcd(&self.den, &o.den);
         let (fa, fb) = (&o.den / &g, &self.den / &g);
         let num = self
             .num

@@ -379,13 +379,14 @@ fn integer_coeffs(p: &UPoly) -> Vec<BigInt> {
     let lcm = p
         .coeffs
         .iter()
-        .fold(BigInt::one(), |acc, c| acc.lcm(c.denom()));
+        .fold(BigInt::one(), |acc, c| super::integer::lcm(&acc, c.denom()));
+    // c·lcm in ℤ without a rational product (whose reduction is a gcd of long integers)
     let ints: Vec<BigInt> = p
         .coeffs
         .iter()
-        .map(|c| (c * BigRational::from_integer(lcm.clone())).to_integer())
+        .map(|c| c.numer() * (&lcm / c.denom()))
         .collect();
-    let g = ints.iter().fold(BigInt::zero(), |acc, c| acc.gcd(c));
+    let g = super::integer::content(&ints);
     if g.is_zero() {
         ints
     } else {
@@ -450,7 +451,7 @@ fn primitive(p: &[BigInt]) -> Vec<BigInt> {
     while v.last().is_some_and(Zero::is_zero) {
         v.pop();
     }
-    let g = v.iter().fold(BigInt::zero(), |acc, c| acc.gcd(c));
+    let g = super::integer::content(&v);
     if g.is_zero() || g.is_one() {
         v
     } else {

@@ -11,7 +11,7 @@ use rayon::prelude::*;
 use super::solver::edges;
 use super::solver::SquaredLengths;
 use super::{p3f3, p3f4, p4f3};
-use crate::model::{random_rotation, Body, Motion, NoiseModel, Scene};
+use crate::model::{random_rotation, Body, Motion, NoiseModel};
 
 pub use crate::model::StudySolver;
 
@@ -356,40 +356,39 @@ fn trial(
     g: &mut ChaCha8Rng,
     out: &mut Vec<f64>,
 ) {
-    let scene = Scene {
-        body: body.clone(),
-        motions: match fixed {
-            Some(m) => m.to_vec(),
-            None => (0..frames)
+    let drawn;
+    let motions = match fixed {
+        Some(m) => m,
+        None => {
+            drawn = (0..frames)
                 .map(|_| Motion {
                     rotation: random_rotation(g),
                     translation: nalgebra::Vector2::zeros(),
                 })
-                .collect(),
-        },
-    };
-    // P shifted to the origin in every frame, as in the paper's figures
-    let mut tracks = scene.tracks();
-    for f in &mut tracks.frames {
-        let o = f[0];
-        for p in f.iter_mut() {
-            *p -= o;
+                .collect::<Vec<_>>();
+            &drawn[..]
         }
-    }
-    let tracks = model.perturb_tracks(&tracks, g);
-    let mut lengths = SquaredLengths::from_tracks(&tracks);
-    for f in &mut lengths.frames {
-        for v in f.iter_mut() {
-            *v = model.perturb_length(v.sqrt(), g).powi(2);
-        }
-    }
-    let first3 = |i: usize| {
-        [
-            lengths.frames[i][0],
-            lengths.frames[i][1],
-            lengths.frames[i][2],
-        ]
     };
+    // the body's images, P shifted to the origin in every frame as in the paper's figures,
+    // then the noise: no names copied (this loop runs 10⁶ times)
+    let mut images: Vec<Vec<nalgebra::Vector2<f64>>> = motions
+        .iter()
+        .map(|m| {
+            let f: Vec<_> = body.points.iter().map(|x| m.project(x)).collect();
+            f.iter().map(|p| p - f[0]).collect()
+        })
+        .collect();
+    model.perturb_points(&mut images, g);
+    let edge_list = edges(body.points.len());
+    let mut lengths: Vec<Vec<f64>> = images
+        .iter()
+        .map(|f| {
+            let l = edge_list.iter().map(|&(i, j)| (f[i] - f[j]).norm_squared());
+            l.map(|v| model.perturb_length(v.sqrt(), g).powi(2))
+                .collect()
+        })
+        .collect();
+    let first3 = |i: usize| [lengths[i][0], lengths[i][1], lengths[i][2]];
     // the allocation-free cores where the frame count allows (this loop runs 10⁶ times)
     let candidates: Vec<Vec<f64>> = match (solver, frames) {
         (StudySolver::P3f3, _) => {
@@ -403,12 +402,15 @@ fn trial(
             .map(|(x, _)| x.to_vec())
             .into_iter()
             .collect(),
-        (StudySolver::P3f4, _) => p3f4::solve(&lengths)
-            .map(|o| o.solutions.into_iter().map(|s| s.squared_edges).collect())
-            .unwrap_or_default(),
+        (StudySolver::P3f4, _) => p3f4::solve(&SquaredLengths {
+            names: body.names.clone(),
+            frames: std::mem::take(&mut lengths),
+            edges: edge_list,
+        })
+        .map(|o| o.solutions.into_iter().map(|s| s.squared_edges).collect())
+        .unwrap_or_default(),
         (StudySolver::P4f3, _) => {
-            let l: [[f64; 6]; 3] =
-                std::array::from_fn(|i| std::array::from_fn(|e| lengths.frames[i][e]));
+            let l: [[f64; 6]; 3] = std::array::from_fn(|i| std::array::from_fn(|e| lengths[i][e]));
             p4f3::solve_core(&l)
                 .squares
                 .map(|x| x.to_vec())

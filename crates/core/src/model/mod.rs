@@ -348,25 +348,23 @@ impl NoiseModel {
     /// Perturb tracks (coordinate model) — the length model leaves tracks unchanged and acts
     /// on lengths through [`NoiseModel::perturb_length`].
     pub fn perturb_tracks<R: Rng>(&self, tracks: &Tracks, g: &mut R) -> Tracks {
-        match *self {
-            NoiseModel::RelativeCoordinate { eps } => Tracks {
-                names: tracks.names.clone(),
-                frames: tracks
-                    .frames
-                    .iter()
-                    .map(|f| {
-                        f.iter()
-                            .map(|p| {
-                                Vector2::new(
-                                    p.x * (1.0 + g.random_range(-eps..=eps)),
-                                    p.y * (1.0 + g.random_range(-eps..=eps)),
-                                )
-                            })
-                            .collect()
-                    })
-                    .collect(),
-            },
-            NoiseModel::RelativeLength { .. } => tracks.clone(),
+        let mut frames = tracks.frames.clone();
+        self.perturb_points(&mut frames, g);
+        Tracks {
+            names: tracks.names.clone(),
+            frames,
+        }
+    }
+
+    /// [`NoiseModel::perturb_tracks`] in place, on image points `frames[i][j]`: the same
+    /// draws in the same order (frame by frame, point by point, x before y).
+    pub fn perturb_points<R: Rng>(&self, frames: &mut [Vec<Vector2<f64>>], g: &mut R) {
+        if let NoiseModel::RelativeCoordinate { eps } = *self {
+            for p in frames.iter_mut().flatten() {
+                let x = p.x * (1.0 + g.random_range(-eps..=eps));
+                let y = p.y * (1.0 + g.random_range(-eps..=eps));
+                *p = Vector2::new(x, y);
+            }
         }
     }
 

@@ -2,6 +2,7 @@
 
 mod cholesky;
 mod float_roots;
+mod integer;
 mod interval;
 mod mix;
 mod modp;

@@ -367,8 +367,7 @@ pub fn lines_first_count(instances: usize, seed: u64) -> Vec<LinesFirst> {
             let seed = seed.wrapping_add(t);
             let s = RationalScene::random(3, 3, seed);
             let l = s.triangle_squares();
-            let poly = crate::derivations::p3f3::exact_elimination(&l)?;
-            let (xz, yz) = crate::derivations::p3f3::exact_linear_part(&l)?;
+            let (poly, xz, yz) = crate::derivations::p3f3::exact_elimination_parts(&l)?;
             lines_first(&s, seed, &xz, &yz, &poly)
         })
         .collect()

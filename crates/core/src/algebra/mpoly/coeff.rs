@@ -113,7 +113,10 @@ impl Coef {
             (Coef::Small(a), Coef::Small(b)) => {
                 Coef::from_i128(i128::from(a.unsigned_abs().gcd(&b.unsigned_abs())))
             }
-            _ => Coef::from_big(self.to_big().gcd(&other.to_big())),
+            _ => Coef::from_big(crate::algebra::integer::gcd(
+                &self.to_big(),
+                &other.to_big(),
+            )),
         }
     }
 

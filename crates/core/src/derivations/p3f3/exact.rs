@@ -27,11 +27,17 @@ pub fn exact_equations(l: &[[num_rational::BigRational; 3]; 3]) -> [crate::algeb
 pub fn exact_linear_part(
     l: &[[num_rational::BigRational; 3]; 3],
 ) -> Option<(crate::algebra::Poly, crate::algebra::Poly)> {
+    linear_part_of(&exact_equations(l))
+}
+
+/// [`exact_linear_part`] of the equations [`exact_equations`] gives.
+fn linear_part_of(
+    [f1, f2, f3]: &[crate::algebra::Poly; 3],
+) -> Option<(crate::algebra::Poly, crate::algebra::Poly)> {
     use crate::algebra::Poly;
     use num_traits::Zero;
-    let [f1, f2, f3] = exact_equations(l);
-    let l1 = &f1 - &f3;
-    let l2 = &f2 - &f3;
+    let l1 = f1 - f3;
+    let l2 = f2 - f3;
     // coefficient of a variable in a linear polynomial, and its z-and-constant rest
     let coef = |p: &Poly, v: &str| {
         p.coefficients_in(v)
@@ -57,11 +63,23 @@ pub fn exact_linear_part(
 /// substitute into F₃, and return the resulting polynomial in z (exact), or `None` when the
 /// differences do not determine x and y.
 pub fn exact_elimination(l: &[[num_rational::BigRational; 3]; 3]) -> Option<crate::algebra::UPoly> {
+    exact_elimination_parts(l).map(|(q, _, _)| q)
+}
+
+/// [`exact_elimination`] with the linear part it substituted, x and y as polynomials in z
+/// ([`exact_linear_part`]), the equations expanded once for both.
+pub fn exact_elimination_parts(
+    l: &[[num_rational::BigRational; 3]; 3],
+) -> Option<(
+    crate::algebra::UPoly,
+    crate::algebra::Poly,
+    crate::algebra::Poly,
+)> {
     use crate::algebra::UPoly;
     use num_traits::Zero;
-    let (xz, yz) = exact_linear_part(l)?;
-    let [_, _, f3] = exact_equations(l);
-    let q = f3.substitute("x", &xz).substitute("y", &yz);
+    let equations = exact_equations(l);
+    let (xz, yz) = linear_part_of(&equations)?;
+    let q = equations[2].substitute("x", &xz).substitute("y", &yz);
     let coeffs = q.coefficients_in("z");
     let c: Vec<num_rational::BigRational> = coeffs
         .iter()
@@ -72,7 +90,7 @@ pub fn exact_elimination(l: &[[num_rational::BigRational; 3]; 3]) -> Option<crat
                 .unwrap_or_else(Zero::zero)
         })
         .collect();
-    Some(UPoly::new(c))
+    Some((UPoly::new(c), xz, yz))
 }
 
 /// Independent routes to the same c² roots, and their largest disagreement with the solver.

@@ -29,7 +29,21 @@ pub trait LpProblem {
 /// gᵢ = sign(rᵢ)|rᵢ|^(p/2) of one residual.
 #[inline]
 pub fn lp_value(v: f64, power: f64) -> f64 {
-    v.signum() * v.abs().powf(power / 2.0)
+    v.signum() * abs_pow(v, power / 2.0)
+}
+
+/// |v|^e; the exponents 0 and 1 without `powf`, whose result there is exact (1 and |v|:
+/// within its error bound of under one unit, an exactly representable power is returned
+/// exactly), so the value is the same and the least-squares stage costs no power.
+#[inline]
+fn abs_pow(v: f64, e: f64) -> f64 {
+    if e == 1.0 {
+        v.abs()
+    } else if e == 0.0 {
+        1.0
+    } else {
+        v.abs().powf(e)
+    }
 }
 
 /// gᵢ of every residual of `raw` into `out`.
@@ -51,7 +65,7 @@ pub fn chain_rule(jt: &mut DMatrix<f64>, raw: &[f64], power: f64) -> bool {
         return true;
     }
     for (col, r) in jt.as_mut_slice().chunks_exact_mut(n).zip(raw) {
-        let s = power / 2.0 * r.abs().powf(power / 2.0 - 1.0);
+        let s = power / 2.0 * abs_pow(*r, power / 2.0 - 1.0);
         col.iter_mut().for_each(|v| *v *= s);
     }
     jt.as_slice().iter().all(|v| v.is_finite())
