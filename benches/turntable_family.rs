@@ -15,7 +15,10 @@
 //! elevation band × L. `SHOW_ERRORS=1` prints each miss's warnings or error, and each of
 //! its groups' cost against the truth-started one; `ONLY=N` (or `N,M,…`) runs those scenes alone; `EXPORT=DIR`
 //! writes each group's problem for `scripts/ceres_bench` (from the truth and from the
-//! pipeline's fit).
+//! pipeline's fit). `NECKER=1` prints, for each missed group, whether each pair of
+//! consecutive frames has the optimum's relative rotation (S), its depth-reflected twin's
+//! (T) or neither (?), within 1°; `CUTS=1` with it tries reflecting the fit after each frame
+//! (docs/limits.md).
 
 use nalgebra::{Rotation3, Vector2, Vector3};
 use orthocheck::model::{rng, Body, Motion, NoiseModel, Scene};
@@ -226,6 +229,18 @@ fn costs(m: &Made, c: &Component, (s, g): (u64, usize)) -> (Option<f64>, Option<
         .as_ref()
         .and_then(|a| a.report.costs.last().copied());
     let got = c.bundle.as_ref().and_then(|b| b.costs.last().copied());
+    if let (Some(_), Some(a), Some(gc), Some(bc)) =
+        (std::env::var_os("NECKER"), &adjusted, got, best)
+    {
+        if gc > bc * (1.0 + 1e-6) {
+            necker(
+                &obs,
+                (&c.reconstruction, gc),
+                (&a.reconstruction, bc),
+                (s, g),
+            );
+        }
+    }
     if let (Some(dir), Some(a)) = (std::env::var_os("EXPORT"), &adjusted) {
         let starts = [
             ("truth", &truth, a.report.costs[0]),
@@ -306,4 +321,96 @@ fn print_table(table: &[[Cell; 7]; 3]) {
         silent,
         total.4
     );
+}
+
+/// A missed group's relative rotations against the truth-started optimum's, and with `CUTS`
+/// set, how far hops that reflect the fit after one frame (each cut adjusted in full, the
+/// best kept, up to 8 rounds while the cost falls) take it.
+fn necker(
+    obs: &Observations,
+    (fit, fit_cost): (&Reconstruction, f64),
+    (optimum, optimum_cost): (&Reconstruction, f64),
+    (s, g): (u64, usize),
+) {
+    eprintln!(
+        "  scene {s} group {g}: relative rotations {}",
+        pattern(fit, optimum)
+    );
+    if std::env::var_os("CUTS").is_none() {
+        return;
+    }
+    let mut current = (fit_cost, fit.clone());
+    let mut hops = Vec::new();
+    for _ in 0..8 {
+        let best = (1..current.1.frames.len())
+            .filter_map(|k| {
+                let a = bundle_adjust(obs, &twin_after(obs, &current.1, k), &loop_only()).ok()?;
+                Some((*a.report.costs.last()?, k, a.reconstruction))
+            })
+            .min_by(|x, y| x.0.total_cmp(&y.0));
+        match best {
+            Some((v, k, r)) if v < current.0 * (1.0 - 1e-6) => {
+                hops.push((k, v));
+                current = (v, r);
+            }
+            _ => break,
+        }
+    }
+    eprintln!(
+        "    fit {fit_cost:.4e}, truth-started {optimum_cost:.4e}, best cut ({:e}, {hops:?})",
+        current.0
+    );
+}
+
+/// Per pair of consecutive frames, whether the fit's relative rotation is the reference's
+/// (S), its depth-reflected twin's (T), or neither (?).
+fn pattern(fit: &Reconstruction, reference: &Reconstruction) -> String {
+    let d = nalgebra::Matrix3::from_diagonal(&Vector3::new(1.0, 1.0, -1.0));
+    let angle = |m: nalgebra::Matrix3<f64>| {
+        ((m.trace() - 1.0) / 2.0)
+            .clamp(-1.0, 1.0)
+            .acos()
+            .to_degrees()
+    };
+    (1..fit.frames.len())
+        .map(|k| {
+            let rel =
+                |r: &Reconstruction| r.frames[k].rotation * r.frames[k - 1].rotation.transpose();
+            let (f, t) = (rel(fit), rel(reference));
+            let same = angle(f * t.transpose());
+            let twin = angle(f * (d * t * d).transpose());
+            if same < 1.0 && same < twin {
+                'S'
+            } else if twin < 1.0 {
+                'T'
+            } else {
+                '?'
+            }
+        })
+        .collect()
+}
+
+/// The fit with every frame from `k` on replaced by its depth-reflected twin (R ↦ DRD), and
+/// every point seen mostly from `k` on reflected (X ↦ DX).
+fn twin_after(obs: &Observations, fit: &Reconstruction, k: usize) -> Reconstruction {
+    let d = nalgebra::Matrix3::from_diagonal(&Vector3::new(1.0, 1.0, -1.0));
+    let mut out = fit.clone();
+    for f in &mut out.frames[k..] {
+        f.rotation = d * f.rotation * d;
+    }
+    for (j, x) in out.points.iter_mut().enumerate() {
+        let (before, after) = obs
+            .frames
+            .iter()
+            .enumerate()
+            .filter(|(_, f)| f[j].is_some())
+            .fold(
+                (0, 0),
+                |(b, a), (i, _)| if i < k { (b + 1, a) } else { (b, a + 1) },
+            );
+        if after > before {
+            *x = d * *x;
+        }
+    }
+    out
 }

@@ -343,6 +343,35 @@ fn run_chunk(
     out
 }
 
+/// The squared image lengths of every edge in every frame, with the model's noise, and the
+/// edges: the body's images, P shifted to the origin in every frame as in the paper's
+/// figures, then the noise. No names are copied (this runs once per trial, 10⁶ times).
+fn noisy_lengths(
+    body: &Body,
+    motions: &[Motion],
+    model: NoiseModel,
+    g: &mut ChaCha8Rng,
+) -> (Vec<Vec<f64>>, Vec<(usize, usize)>) {
+    let mut images: Vec<Vec<nalgebra::Vector2<f64>>> = motions
+        .iter()
+        .map(|m| {
+            let f: Vec<_> = body.points.iter().map(|x| m.project(x)).collect();
+            f.iter().map(|p| p - f[0]).collect()
+        })
+        .collect();
+    model.perturb_points(&mut images, g);
+    let edge_list = edges(body.points.len());
+    let lengths = images
+        .iter()
+        .map(|f| {
+            let l = edge_list.iter().map(|&(i, j)| (f[i] - f[j]).norm_squared());
+            l.map(|v| model.perturb_length(v.sqrt(), g).powi(2))
+                .collect()
+        })
+        .collect();
+    (lengths, edge_list)
+}
+
 /// One trial: random (or the fixed) motions, noise, solve; appends the best solution's ratios to `out`
 /// (nothing when no real solution with non-negative squares exists).
 #[allow(clippy::too_many_arguments)]
@@ -369,25 +398,7 @@ fn trial(
             &drawn[..]
         }
     };
-    // the body's images, P shifted to the origin in every frame as in the paper's figures,
-    // then the noise: no names copied (this loop runs 10⁶ times)
-    let mut images: Vec<Vec<nalgebra::Vector2<f64>>> = motions
-        .iter()
-        .map(|m| {
-            let f: Vec<_> = body.points.iter().map(|x| m.project(x)).collect();
-            f.iter().map(|p| p - f[0]).collect()
-        })
-        .collect();
-    model.perturb_points(&mut images, g);
-    let edge_list = edges(body.points.len());
-    let mut lengths: Vec<Vec<f64>> = images
-        .iter()
-        .map(|f| {
-            let l = edge_list.iter().map(|&(i, j)| (f[i] - f[j]).norm_squared());
-            l.map(|v| model.perturb_length(v.sqrt(), g).powi(2))
-                .collect()
-        })
-        .collect();
+    let (mut lengths, edge_list) = noisy_lengths(body, motions, model, g);
     let first3 = |i: usize| [lengths[i][0], lengths[i][1], lengths[i][2]];
     // the allocation-free cores where the frame count allows (this loop runs 10⁶ times)
     let candidates: Vec<Vec<f64>> = match (solver, frames) {
