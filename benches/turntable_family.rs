@@ -231,15 +231,14 @@ fn costs(m: &Made, c: &Component, (s, g): (u64, usize)) -> (Option<f64>, Option<
     let got = c.bundle.as_ref().and_then(|b| b.costs.last().copied());
     if let (Some(_), Some(a), Some(gc), Some(bc)) =
         (std::env::var_os("NECKER"), &adjusted, got, best)
+        && gc > bc * (1.0 + 1e-6)
     {
-        if gc > bc * (1.0 + 1e-6) {
-            necker(
-                &obs,
-                (&c.reconstruction, gc),
-                (&a.reconstruction, bc),
-                (s, g),
-            );
-        }
+        necker(
+            &obs,
+            (&c.reconstruction, gc),
+            (&a.reconstruction, bc),
+            (s, g),
+        );
     }
     if let (Some(dir), Some(a)) = (std::env::var_os("EXPORT"), &adjusted) {
         let starts = [

@@ -7,6 +7,8 @@
 //! may be wrong (`reconstruct`); 2 bad input or usage (clap exits with 2 on usage errors
 //! itself); 130 interrupted by Ctrl-C.
 
+#![forbid(unsafe_code)]
+
 /// mimalloc serves the many small allocations of exact arithmetic and Monte Carlo trials
 /// faster than the system allocator; results do not depend on the allocator.
 #[global_allocator]
