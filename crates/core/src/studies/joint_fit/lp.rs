@@ -32,9 +32,9 @@ pub fn lp_value(v: f64, power: f64) -> f64 {
     v.signum() * abs_pow(v, power / 2.0)
 }
 
-/// |v|^e; the exponents 0 and 1 without `powf`, whose result there is exact (1 and |v|:
-/// within its error bound of under one unit, an exactly representable power is returned
-/// exactly), so the value is the same and the least-squares stage costs no power.
+/// |v|^e; the exponents 0 and 1 without `powf`: 1 (what `powf` returns at exponent 0 for
+/// every base, C99 Annex F) and |v| (what it returns at exponent 1, the report's bytes
+/// unchanged), so the least-squares stage costs no power.
 #[inline]
 fn abs_pow(v: f64, e: f64) -> f64 {
     if e == 1.0 {
