@@ -17,8 +17,7 @@ use crate::model::Tracks;
 pub mod exact;
 pub mod route;
 pub use exact::{
-    exact_elimination, exact_elimination_parts, exact_equations, exact_linear_part, validate,
-    Validation,
+    exact_elimination, exact_elimination_parts, exact_equations, validate, Validation,
 };
 
 /// The unknowns as affine functions of the free one, t: v = slope·t + intercept.

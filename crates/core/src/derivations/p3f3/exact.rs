@@ -22,15 +22,9 @@ pub fn exact_equations(l: &[[num_rational::BigRational; 3]; 3]) -> [crate::algeb
     })
 }
 
-/// The linear part of the elimination: x and y as polynomials in z from F₁ − F₃ = F₂ − F₃ = 0,
-/// or `None` when the differences do not determine them.
-pub fn exact_linear_part(
-    l: &[[num_rational::BigRational; 3]; 3],
-) -> Option<(crate::algebra::Poly, crate::algebra::Poly)> {
-    linear_part_of(&exact_equations(l))
-}
-
-/// [`exact_linear_part`] of the equations [`exact_equations`] gives.
+/// The linear part of the elimination from the equations [`exact_equations`] gives: x and y
+/// as polynomials in z from F₁ − F₃ = F₂ − F₃ = 0, or `None` when the differences do not
+/// determine them.
 fn linear_part_of(
     [f1, f2, f3]: &[crate::algebra::Poly; 3],
 ) -> Option<(crate::algebra::Poly, crate::algebra::Poly)> {
@@ -66,8 +60,8 @@ pub fn exact_elimination(l: &[[num_rational::BigRational; 3]; 3]) -> Option<crat
     exact_elimination_parts(l).map(|(q, _, _)| q)
 }
 
-/// [`exact_elimination`] with the linear part it substituted, x and y as polynomials in z
-/// ([`exact_linear_part`]), the equations expanded once for both.
+/// [`exact_elimination`] with the linear part it substituted (x and y as polynomials in z
+/// from F₁ − F₃ = F₂ − F₃ = 0), the equations expanded once for both.
 pub fn exact_elimination_parts(
     l: &[[num_rational::BigRational; 3]; 3],
 ) -> Option<(
