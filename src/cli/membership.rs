@@ -19,12 +19,12 @@ pub struct Args {
     input: PathBuf,
     /// Largest epipolar distance of a member, relative to the image size, the same for every
     /// point. Default: from the data's noise, point by point, with the fit's degrees of
-    /// freedom accounted for: least median of squares finds the body, the epipolar geometry
-    /// is refitted to its points, the noise's mix of one scale and a scale growing with the
-    /// coordinates is estimated (from 10 members), and each point's tolerance is its own
-    /// standard deviation times Student's t at 99 % two-sided, so that about 1 % of true
-    /// members are rejected at most from 10 members (2–3 % below; docs/limits.md,
-    /// "Membership's tolerance").
+    /// freedom accounted for: least median of squares over fits of equal scale finds the
+    /// body, the epipolar geometry is refitted to its points, the noise's mix of one scale
+    /// and a scale growing with the coordinates is estimated (from 10 members), and each
+    /// point's tolerance is its own standard deviation times Student's t at 99 % two-sided,
+    /// so that at most about 1 % of true members are rejected (0.2–0.5 % measured from 6
+    /// members on; docs/limits.md, "Membership's tolerance").
     #[arg(long, allow_negative_numbers = true)]
     tolerance: Option<f64>,
     /// JSON output.

@@ -80,31 +80,8 @@ pub fn epipolar_with_rounding(f1: &[Vector2<f64>], f2: &[Vector2<f64>], rounding
     let zero = (4.0 * f1.len() as f64 * rounding * rounding)
         .max(crate::algebra::NEGLIGIBLE_ULPS * f64::EPSILON * eigenvalues[3]);
     let v = if eigenvalues[1] <= zero {
-        // q on span{v1, v2}: [q11 q12; q12 q22]; an indefinite form vanishes somewhere
         let v2: nalgebra::Vector4<f64> = eig.eigenvectors.column(order[1]).into();
-        let bil = |a: &nalgebra::Vector4<f64>, b: &nalgebra::Vector4<f64>| {
-            a[0] * b[0] + a[1] * b[1] - a[2] * b[2] - a[3] * b[3]
-        };
-        let (q11, q12, q22) = (bil(&v1, &v1), bil(&v1, &v2), bil(&v2, &v2));
-        // the unit vector cos t·v1 + sin t·v2 minimising |q|: the eigenvector of the 2×2 form
-        // for the eigenvalue of smallest modulus, or a zero of q when it is indefinite
-        let m = nalgebra::Matrix2::new(q11, q12, q12, q22);
-        let e2 = m.symmetric_eigen();
-        let (l0, l1) = (e2.eigenvalues[0], e2.eigenvalues[1]);
-        let (w0, w1) = (
-            e2.eigenvectors.column(0).into_owned(),
-            e2.eigenvectors.column(1).into_owned(),
-        );
-        let u = if l0 * l1 < 0.0 {
-            // q = l0 x² + l1 y² = 0 at x/y = √(−l1/l0)
-            let (x, y) = ((l1.abs()).sqrt(), (l0.abs()).sqrt());
-            (w0 * x + w1 * y).normalize()
-        } else if l0.abs() <= l1.abs() {
-            w0
-        } else {
-            w1
-        };
-        v1 * u[0] + v2 * u[1]
+        equal_scale_in_span(&v1, &v2)[0]
     } else {
         v1
     };
@@ -114,6 +91,40 @@ pub fn epipolar_with_rounding(f1: &[Vector2<f64>], f2: &[Vector2<f64>], rounding
         eigenvalues,
         scale_residual: q(&v),
         affine_residual: (eigenvalues[0] / eigenvalues[3].max(f64::MIN_POSITIVE)).sqrt(),
+    }
+}
+
+/// The unit vectors of span{v1, v2} (orthonormal) closest to equal scale: both zeros of
+/// q = a² + b² − c² − d² there when q is indefinite on the span, else the one vector where
+/// |q| is least. The first is the one [`epipolar`] keeps for an undetermined geometry.
+pub fn equal_scale_in_span(
+    v1: &nalgebra::Vector4<f64>,
+    v2: &nalgebra::Vector4<f64>,
+) -> Vec<nalgebra::Vector4<f64>> {
+    let bil = |a: &nalgebra::Vector4<f64>, b: &nalgebra::Vector4<f64>| {
+        a[0] * b[0] + a[1] * b[1] - a[2] * b[2] - a[3] * b[3]
+    };
+    let (q11, q12, q22) = (bil(v1, v1), bil(v1, v2), bil(v2, v2));
+    // q on the span is the 2×2 form [q11 q12; q12 q22]: its eigenvector of smallest
+    // modulus minimises |q| on the unit circle, and an indefinite form vanishes twice
+    let e2 = nalgebra::Matrix2::new(q11, q12, q12, q22).symmetric_eigen();
+    let (l0, l1) = (e2.eigenvalues[0], e2.eigenvalues[1]);
+    let (w0, w1) = (
+        e2.eigenvectors.column(0).into_owned(),
+        e2.eigenvectors.column(1).into_owned(),
+    );
+    let within = |u: nalgebra::Vector2<f64>| v1 * u[0] + v2 * u[1];
+    if l0 * l1 < 0.0 {
+        // q = l0 x² + l1 y² = 0 at x/y = ±√(−l1/l0)
+        let (x, y) = ((l1.abs()).sqrt(), (l0.abs()).sqrt());
+        vec![
+            within((w0 * x + w1 * y).normalize()),
+            within((w0 * x - w1 * y).normalize()),
+        ]
+    } else if l0.abs() <= l1.abs() {
+        vec![within(w0)]
+    } else {
+        vec![within(w1)]
     }
 }
 

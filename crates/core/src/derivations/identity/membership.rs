@@ -1,6 +1,6 @@
 //! Which points of two frames are one rigid body: membership by the affine epipolar
-//! geometry, started from the least-median four-point subset, and its default tolerance from
-//! the data's own noise.
+//! geometry, started from the least-median three-point fit of equal scale, and its default
+//! tolerance from the data's own noise.
 
 use super::*;
 use crate::algebra::mix::Mix;
@@ -25,14 +25,15 @@ const FIT_PARAMETERS: usize = 4;
 /// robust standard deviations start the least-squares refit.
 pub const REWEIGHT: f64 = 2.5;
 
-/// Four-point subsets tried by [`robust_tolerance`]: all of them up to this many, else this
-/// many drawn with a fixed seed (the same input gives the same tolerance).
+/// Three-point subsets tried by the least-median start: all of them up to this many, else
+/// this many drawn with a fixed seed (the same input gives the same tolerance).
 const LMEDS_SUBSETS: usize = 500;
 
 /// Members at least, for the mix of the two noise scales to be estimated (it takes a degree
 /// of freedom; below, one scale). Chosen by `membership_calibration` (docs/limits.md): from
-/// 6 members the extra degree costs the far foreign points of the smallest scenes (83 %
-/// found instead of 98 %), from 14 the relative noise of 10–13 members stays unmodelled.
+/// 6 members the extra degree costs the far foreign points of the smallest scenes (80–83 %
+/// found instead of 98 %), from 14 the relative noise of 10–13 members stays unmodelled
+/// (0.66 % of the 10–19 members rejected instead of 0.52 %).
 pub const MIX_MIN_MEMBERS: usize = 10;
 
 /// How far a member's epipolar distance (relative to the image size) may go, point by point.
@@ -111,10 +112,10 @@ fn noise_mix(fit: &Distances, members: &[bool]) -> (f64, f64) {
 /// The default tolerance of [`membership()`], from the data's own noise, with the degrees
 /// of freedom of the fit accounted for.
 ///
-/// 1. Least median of squares (Rousseeuw): the epipolar geometry of every four-point subset
-///    (or `LMEDS_SUBSETS` of them) fitted exactly, the subset whose h-th smallest distance
-///    over all points (h = ⌊(n + 4)/2⌋) is least kept; σ₀ = 1.4826 (1 + 5/(n − 3)) × that
-///    distance; the points within [`REWEIGHT`] σ₀ are the first members.
+/// 1. Least median of squares (Rousseeuw): the epipolar geometries of equal scale through
+///    every three-point subset (or `LMEDS_SUBSETS` of them), the one whose h-th smallest
+///    distance over all points (h = ⌊(n + 4)/2⌋) is least kept; σ₀ = 1.4826 (1 + 5/(n − 3))
+///    × that distance; the points within [`REWEIGHT`] σ₀ are the first members.
 /// 2. The constraint refitted to the members by least squares; with at least
 ///    [`MIX_MIN_MEMBERS`] members, the mix λ of the two noise scales ([`Tolerance`]) of most
 ///    likelihood for their distances (else λ = 0); σ̂² = Σ (d/w)² / ν over the m members,
@@ -133,7 +134,7 @@ pub fn robust_tolerance(f1: &[Vector2<f64>], f2: &[Vector2<f64>]) -> Tolerance {
         return floor;
     }
     let h = (n + EPIPOLAR_DOF).div_ceil(2).clamp(EPIPOLAR_DOF + 2, n);
-    let d = epipolar_distances(f1, f2, &least_median_subset(f1, f2)).d;
+    let d = least_median_fit(f1, f2).0.d;
     let mut sorted = d.clone();
     sorted.sort_by(f64::total_cmp);
     let sigma0 = MAD_TO_SIGMA * (1.0 + 5.0 / (n - EPIPOLAR_DOF) as f64) * sorted[h - 1];
@@ -181,17 +182,15 @@ pub fn robust_tolerance(f1: &[Vector2<f64>], f2: &[Vector2<f64>]) -> Tolerance {
     }
 }
 
-/// Every four-point subset of `n` points, or [`LMEDS_SUBSETS`] of them drawn with seed 0.
-fn four_point_subsets(n: usize) -> Vec<[usize; 4]> {
-    let all = n * (n - 1) * (n - 2) * (n - 3) / 24;
+/// Every three-point subset of `n` points, or [`LMEDS_SUBSETS`] of them drawn with seed 0.
+fn three_point_subsets(n: usize) -> Vec<[usize; 3]> {
+    let all = n * n.saturating_sub(1) * n.saturating_sub(2) / 6;
     if all <= LMEDS_SUBSETS {
         let mut out = Vec::with_capacity(all);
         for a in 0..n {
             for b in a + 1..n {
                 for c in b + 1..n {
-                    for d in c + 1..n {
-                        out.push([a, b, c, d]);
-                    }
+                    out.push([a, b, c]);
                 }
             }
         }
@@ -200,9 +199,31 @@ fn four_point_subsets(n: usize) -> Vec<[usize; 4]> {
     let mut rng = crate::model::rng(0);
     (0..LMEDS_SUBSETS)
         .map(|_| {
-            let v = rand::seq::index::sample(&mut rng, n, 4).into_vec();
-            [v[0], v[1], v[2], v[3]]
+            let v = rand::seq::index::sample(&mut rng, n, 3).into_vec();
+            [v[0], v[1], v[2]]
         })
+        .collect()
+}
+
+/// The epipolar geometries of equal scale, a² + b² = c² + d², through three points: the
+/// constraint's null space of their two difference rows is two-dimensional, and the form
+/// vanishes on it twice or nowhere (then the vector nearest equal scale). None when the
+/// rows are dependent (the points coincide or are collinear in both frames alike).
+fn equal_scale_fits(f1: &[Vector2<f64>], f2: &[Vector2<f64>], q: [usize; 3]) -> Vec<[f64; 4]> {
+    let row = |i: usize| nalgebra::Vector4::new(f1[i].x, f1[i].y, f2[i].x, f2[i].y);
+    let (r1, r2) = (row(q[1]) - row(q[0]), row(q[2]) - row(q[0]));
+    let eig = nalgebra::SymmetricEigen::new(r1 * r1.transpose() + r2 * r2.transpose());
+    let mut order = [0usize, 1, 2, 3];
+    order.sort_by(|&i, &j| eig.eigenvalues[i].total_cmp(&eig.eigenvalues[j]));
+    let negligible = crate::algebra::NEGLIGIBLE_ULPS * f64::EPSILON * eig.eigenvalues[order[3]];
+    if eig.eigenvalues[order[2]] <= negligible {
+        return Vec::new();
+    }
+    let v1: nalgebra::Vector4<f64> = eig.eigenvectors.column(order[0]).into();
+    let v2: nalgebra::Vector4<f64> = eig.eigenvectors.column(order[1]).into();
+    crate::derivations::two_frames::equal_scale_in_span(&v1, &v2)
+        .into_iter()
+        .map(|v| [v[0], v[1], v[2], v[3]])
         .collect()
 }
 
@@ -222,10 +243,19 @@ fn epipolar_distances(f1: &[Vector2<f64>], f2: &[Vector2<f64>], inside: &[bool])
     let idx: Vec<usize> = (0..f1.len()).filter(|&i| inside[i]).collect();
     let g1: Vec<Vector2<f64>> = idx.iter().map(|&i| f1[i]).collect();
     let g2: Vec<Vector2<f64>> = idx.iter().map(|&i| f2[i]).collect();
-    let e = epipolar(&g1, &g2);
-    let [a, b, c, d] = e.coefficients;
     let m1 = g1.iter().sum::<Vector2<f64>>() / g1.len().max(1) as f64;
     let m2 = g2.iter().sum::<Vector2<f64>>() / g2.len().max(1) as f64;
+    distances_from(f1, f2, epipolar(&g1, &g2).coefficients, [m1, m2])
+}
+
+/// Every point's distance from the line of coefficients (a, b, c, d) through the centres
+/// `[m1, m2]`, relative to frame 2's size.
+fn distances_from(
+    f1: &[Vector2<f64>],
+    f2: &[Vector2<f64>],
+    [a, b, c, d]: [f64; 4],
+    [m1, m2]: [Vector2<f64>; 2],
+) -> Distances {
     let size = f2
         .iter()
         .map(|q| (q - m2).norm())
@@ -266,10 +296,10 @@ pub struct Judged {
 
 /// Rigid-body membership with known correspondences. The epipolar geometry is fitted to all
 /// points; when some point lies beyond its tolerance (relative to the image size), the fit
-/// starts instead from the four-point subset of least h-th distance (as in
-/// [`robust_tolerance`]: a foreign point cannot drag it), its points within their tolerances
-/// are refitted until the members no longer change. Returns each point's membership, its
-/// final distance and its tolerance.
+/// starts instead from the least-median fit of equal scale (as in [`robust_tolerance`]: a
+/// foreign point cannot drag it), and its points within their tolerances are refitted until
+/// the members no longer change. Returns each point's membership, its final distance and
+/// its tolerance.
 pub fn membership(f1: &[Vector2<f64>], f2: &[Vector2<f64>], tolerance: &Tolerance) -> Vec<Judged> {
     let n = f1.len();
     let all = epipolar_distances(f1, f2, &vec![true; n]);
@@ -288,8 +318,7 @@ pub fn membership(f1: &[Vector2<f64>], f2: &[Vector2<f64>], tolerance: &Toleranc
     if n <= EPIPOLAR_DOF + 1 || all.d.iter().zip(&tol).all(|(d, t)| d <= t) {
         return judge(&all, &vec![true; n], &tol);
     }
-    let mut inside = least_median_subset(f1, f2);
-    let mut fit = epipolar_distances(f1, f2, &inside);
+    let (mut fit, mut inside) = least_median_fit(f1, f2);
     // each round refits on the points within the tolerance; the members settle in a few
     for _ in 0..n {
         let next = within(&fit.d, &inside, &tolerance.of(&fit), tolerance.base);
@@ -327,20 +356,44 @@ fn within(dist: &[f64], inside: &[bool], tolerance: &[f64], base: f64) -> Vec<bo
         .collect()
 }
 
-/// The four-point subset whose exact epipolar fit has the least h-th smallest distance over
-/// all points (h = ⌊(n + 4)/2⌋), as a membership mask.
-fn least_median_subset(f1: &[Vector2<f64>], f2: &[Vector2<f64>]) -> Vec<bool> {
+/// Least median of squares under equal scale: of the epipolar geometries of equal scale
+/// through three points ([`equal_scale_fits`], every subset of [`three_point_subsets`]),
+/// the one of least h-th smallest distance over all points (h = ⌊(n + 4)/2⌋). Returns its
+/// distances and its three points as a mask.
+///
+/// Equal scale is what one rigid body's two orthographic views obey. A fit without it (four
+/// points, four parameters) can pass through a foreign point and three members and still
+/// come near a fifth by chance; such a start then sets true members apart, and the rigidity
+/// check refuses the scene (`membership_calibration`, docs/limits.md).
+fn least_median_fit(f1: &[Vector2<f64>], f2: &[Vector2<f64>]) -> (Distances, Vec<bool>) {
     let n = f1.len();
     let h = (n + EPIPOLAR_DOF).div_ceil(2).clamp(EPIPOLAR_DOF + 2, n);
-    let mut best = (f64::INFINITY, vec![true; n]);
-    for q in four_point_subsets(n) {
-        let mut inside = vec![false; n];
-        q.iter().for_each(|&i| inside[i] = true);
-        let mut d = epipolar_distances(f1, f2, &inside).d;
-        d.sort_by(f64::total_cmp);
-        if d[h - 1] < best.0 {
-            best = (d[h - 1], inside);
+    let mut best: Option<(f64, [f64; 4], [usize; 3])> = None;
+    let mut d = Vec::with_capacity(n);
+    for q in three_point_subsets(n) {
+        let centres = centres_of(f1, f2, q);
+        for e in equal_scale_fits(f1, f2, q) {
+            d.clear();
+            d.extend(distances_from(f1, f2, e, centres).d);
+            let (_, kth, _) = d.select_nth_unstable_by(h - 1, f64::total_cmp);
+            if best.is_none_or(|b| *kth < b.0) {
+                best = Some((*kth, e, q));
+            }
         }
     }
-    best.1
+    let mut inside = vec![false; n];
+    match best {
+        Some((_, e, q)) => {
+            q.iter().for_each(|&i| inside[i] = true);
+            (distances_from(f1, f2, e, centres_of(f1, f2, q)), inside)
+        }
+        // every triple dependent: the least-squares fit of all points
+        None => (epipolar_distances(f1, f2, &vec![true; n]), vec![true; n]),
+    }
+}
+
+/// The centres of three points' images in the two frames.
+fn centres_of(f1: &[Vector2<f64>], f2: &[Vector2<f64>], q: [usize; 3]) -> [Vector2<f64>; 2] {
+    let mean = |f: &[Vector2<f64>]| q.iter().map(|&i| f[i]).sum::<Vector2<f64>>() / 3.0;
+    [mean(f1), mean(f2)]
 }
