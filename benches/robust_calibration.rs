@@ -10,7 +10,10 @@
 //! in 0.1 %–1 %; then 1–3 observations replaced by points drawn in the frame's image box.
 //! σ is the good observations' rms error per coordinate; a bad observation counts as far
 //! when its distance from its true image exceeds 10 σ. A good observation is dropped when
-//! the report lists it, alone or as an image of a rejected point.
+//! the report lists it, alone or as an image of a rejected point. A second table splits the
+//! dropped good observations: those on a point with a bad image (a point left with fewer
+//! than three images within the threshold is rejected whole, `judge::MIN_IMAGES`) and those
+//! on a point whose images are all good (the threshold's own rejections).
 
 use std::collections::HashSet;
 
@@ -60,6 +63,8 @@ fn main() {
         absolute,
     } = Calibration::from_args(1000);
     let mut bands: [Tally; 3] = Default::default();
+    // per band: good observations dropped beside a bad image, and on all-good points (of them)
+    let mut split = [[0usize; 3]; 3];
     for s in 0..scenes {
         let (clean, noisy, bad, m) = scene(Calibration::scene_seed(seed, s), absolute);
         let k = clean.frames.len();
@@ -102,6 +107,12 @@ fn main() {
             .map(|d| (d.frame - 1, index(&d.point)))
             .collect();
         band.lost += good.iter().filter(|p| dropped.contains(p)).count();
+        let beside = |p: &(usize, usize)| bad.iter().any(|b| b.1 == p.1);
+        let row = &mut split[orthocheck_benches::band(m)];
+        for p in good.iter().filter(|p| dropped.contains(p)) {
+            row[usize::from(!beside(p))] += 1;
+        }
+        row[2] += good.iter().filter(|p| !beside(p)).count();
         for p in &bad {
             if err(p) > 10.0 * sigma {
                 band.far += 1;
@@ -113,4 +124,15 @@ fn main() {
         "| points | scenes | good observations dropped | bad > 10 σ dropped | refused |",
         &bands,
     );
+    println!();
+    println!("| points | good dropped beside a bad image | good dropped on all-good points |");
+    println!("|---|---:|---:|");
+    for ((name, [beside, alone, of]), b) in orthocheck_benches::BANDS.iter().zip(split).zip(&bands)
+    {
+        println!(
+            "| {name} | {beside} | {alone} of {of} ({:.2} %) |",
+            100.0 * alone as f64 / of.max(1) as f64
+        );
+        debug_assert!(beside + alone == b.lost);
+    }
 }
