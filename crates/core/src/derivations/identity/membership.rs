@@ -249,37 +249,46 @@ fn epipolar_distances(f1: &[Vector2<f64>], f2: &[Vector2<f64>], inside: &[bool])
 }
 
 /// Every point's distance from the line of coefficients (a, b, c, d) through the centres
-/// `[m1, m2]`, relative to frame 2's size.
+/// `[m1, m2]`, relative to frame 2's size, with the points' spreads under it.
 fn distances_from(
     f1: &[Vector2<f64>],
     f2: &[Vector2<f64>],
-    [a, b, c, d]: [f64; 4],
-    [m1, m2]: [Vector2<f64>; 2],
+    e: [f64; 4],
+    centres: [Vector2<f64>; 2],
 ) -> Distances {
-    let size = f2
-        .iter()
-        .map(|q| (q - m2).norm())
-        .fold(f64::MIN_POSITIVE, f64::max);
-    let norm = (c * c + d * d).sqrt().max(f64::MIN_POSITIVE);
+    let [a, b, c, d] = e;
     let all = (a * a + b * b + c * c + d * d).max(f64::MIN_POSITIVE);
-    let d_all = (0..f1.len())
-        .map(|i| {
-            (a * (f1[i].x - m1.x)
-                + b * (f1[i].y - m1.y)
-                + c * (f2[i].x - m2.x)
-                + d * (f2[i].y - m2.y))
-                .abs()
-                / norm
-                / size
-        })
-        .collect();
     let spread = (0..f1.len())
         .map(|i| {
             let (p, q) = (f1[i], f2[i]);
             (a * a * p.x * p.x + b * b * p.y * p.y + c * c * q.x * q.x + d * d * q.y * q.y) / all
         })
         .collect();
-    Distances { d: d_all, spread }
+    let mut dist = Vec::with_capacity(f1.len());
+    line_distances(f1, f2, e, centres, &mut dist);
+    Distances { d: dist, spread }
+}
+
+/// [`distances_from`]'s distances alone, into `out` (cleared first).
+fn line_distances(
+    f1: &[Vector2<f64>],
+    f2: &[Vector2<f64>],
+    [a, b, c, d]: [f64; 4],
+    [m1, m2]: [Vector2<f64>; 2],
+    out: &mut Vec<f64>,
+) {
+    let size = f2
+        .iter()
+        .map(|q| (q - m2).norm())
+        .fold(f64::MIN_POSITIVE, f64::max);
+    let norm = (c * c + d * d).sqrt().max(f64::MIN_POSITIVE);
+    out.clear();
+    out.extend((0..f1.len()).map(|i| {
+        (a * (f1[i].x - m1.x) + b * (f1[i].y - m1.y) + c * (f2[i].x - m2.x) + d * (f2[i].y - m2.y))
+            .abs()
+            / norm
+            / size
+    }));
 }
 
 /// One point's membership.
@@ -373,8 +382,7 @@ fn least_median_fit(f1: &[Vector2<f64>], f2: &[Vector2<f64>]) -> (Distances, Vec
     for q in three_point_subsets(n) {
         let centres = centres_of(f1, f2, q);
         for e in equal_scale_fits(f1, f2, q) {
-            d.clear();
-            d.extend(distances_from(f1, f2, e, centres).d);
+            line_distances(f1, f2, e, centres, &mut d);
             let (_, kth, _) = d.select_nth_unstable_by(h - 1, f64::total_cmp);
             if best.is_none_or(|b| *kth < b.0) {
                 best = Some((*kth, e, q));
