@@ -10,7 +10,9 @@
 //! points, each with images drawn anew in each frame within the body's image box. σ is the
 //! members' rms distance from the body's true (noise-free) epipolar line; a foreign point
 //! counts as far when its distance from that line exceeds 10 σ. `SHOW_REFUSED=1` names the
-//! scenes refused as no rigid body.
+//! scenes refused as no rigid body. `STRETCH=2` is the control: frame 2's images (the
+//! foreign points' too) are twice as wide as a view of the body, so no rigid body gives the
+//! frames, and every scene should be refused.
 
 use nalgebra::Vector2;
 use orthocheck::derivations::identity;
@@ -35,6 +37,11 @@ fn distances(clean: &[[Vector2<f64>; 2]], all: &[[Vector2<f64>; 2]]) -> Vec<f64>
         .collect()
 }
 
+/// The width by which `STRETCH` stretches frame 2 (`None`: not set or not a number).
+fn stretch() -> Option<f64> {
+    std::env::var("STRETCH").ok()?.parse().ok()
+}
+
 /// Each point's images in the two frames.
 type Pairs = Vec<[Vector2<f64>; 2]>;
 
@@ -45,7 +52,10 @@ fn scene(seed: u64, absolute: bool) -> (Pairs, Pairs) {
     let m = g.random_range(6..=50usize);
     let foreign = g.random_range(1..=3usize);
     let eps = g.random_range(0.001..0.01);
-    let clean = Scene::random(m, 2, g.random()).tracks();
+    let mut clean = Scene::random(m, 2, g.random()).tracks();
+    if let Some(w) = stretch() {
+        clean.frames[1].iter_mut().for_each(|y| y.x *= w);
+    }
     let noisy = if absolute {
         let mut t = clean.clone();
         for y in t.frames.iter_mut().flatten() {

@@ -21,7 +21,7 @@ use nalgebra::Vector2;
 use orthocheck::model::{rng, NoiseModel, Scene, Tracks};
 use orthocheck::sfm::robust::RansacOptions;
 use orthocheck::sfm::{reconstruct, Observations, Options};
-use orthocheck_benches::{band, print_bands, Calibration, Tally};
+use orthocheck_benches::{band, print_bands, Calibration, Tally, BANDS};
 use rand::Rng;
 
 /// The scene's noisy tracks, the corrupted (frame, point) pairs and σ.
@@ -56,6 +56,49 @@ fn scene(seed: u64, absolute: bool) -> (Tracks, Tracks, HashSet<(usize, usize)>,
     (clean, noisy, bad, m)
 }
 
+/// Whether the good observation `p` (frame, point) is on a point with a bad image.
+fn beside(bad: &HashSet<(usize, usize)>, p: &(usize, usize)) -> bool {
+    bad.iter().any(|b| b.1 == p.1)
+}
+
+/// The observations (frame, point) robust mode drops from `noisy`, with its threshold from
+/// the data; `None` when the scene is refused.
+fn dropped_by_robust_mode(noisy: &Tracks) -> Option<HashSet<(usize, usize)>> {
+    let options = Options {
+        robust: Some(RansacOptions::from_data()),
+        ..Options::default()
+    };
+    let obs = Observations::from_tracks(noisy);
+    let r = reconstruct(&obs, &options).ok()?.into_single()?.robust?;
+    let index = |name: &str| {
+        noisy
+            .names
+            .iter()
+            .position(|n| n == name)
+            .unwrap_or(usize::MAX)
+    };
+    Some(
+        r.dropped
+            .iter()
+            .map(|d| (d.frame - 1, index(&d.point)))
+            .collect(),
+    )
+}
+
+/// The second table: per band, good observations dropped beside a bad image, and those
+/// dropped on all-good points of all such.
+fn print_split(split: &[[usize; 3]; 3], bands: &[Tally; 3]) {
+    println!("| points | good dropped beside a bad image | good dropped on all-good points |");
+    println!("|---|---:|---:|");
+    for ((name, [beside, alone, of]), b) in BANDS.iter().zip(split).zip(bands) {
+        println!(
+            "| {name} | {beside} | {alone} of {of} ({:.2} %) |",
+            100.0 * *alone as f64 / (*of).max(1) as f64
+        );
+        debug_assert!(beside + alone == b.lost);
+    }
+}
+
 fn main() {
     let Calibration {
         scenes,
@@ -63,7 +106,8 @@ fn main() {
         absolute,
     } = Calibration::from_args(1000);
     let mut bands: [Tally; 3] = Default::default();
-    // per band: good observations dropped beside a bad image, and on all-good points (of them)
+    // per band: good observations dropped beside a bad image, on all-good points, and of
+    // those (refused scenes counted, as in the band's good observations)
     let mut split = [[0usize; 3]; 3];
     for s in 0..scenes {
         let (clean, noisy, bad, m) = scene(Calibration::scene_seed(seed, s), absolute);
@@ -75,48 +119,22 @@ fn main() {
         let err = |&(f, j): &(usize, usize)| (noisy.frames[f][j] - clean.frames[f][j]).norm();
         let sigma =
             (good.iter().map(|p| err(p).powi(2)).sum::<f64>() / (2 * good.len()) as f64).sqrt();
-        let band = &mut bands[band(m)];
-        band.scenes += 1;
-        band.good += good.len();
-        let options = Options {
-            robust: Some(RansacOptions::from_data()),
-            ..Options::default()
-        };
-        let obs = Observations::from_tracks(&noisy);
-        let Some(c) = reconstruct(&obs, &options)
-            .ok()
-            .and_then(|o| o.into_single())
-        else {
-            band.refused += 1;
+        let (tally, row) = (&mut bands[band(m)], &mut split[band(m)]);
+        tally.scenes += 1;
+        tally.good += good.len();
+        row[2] += good.iter().filter(|p| !beside(&bad, p)).count();
+        let Some(dropped) = dropped_by_robust_mode(&noisy) else {
+            tally.refused += 1;
             continue;
         };
-        let Some(r) = c.robust else {
-            band.refused += 1;
-            continue;
-        };
-        let index = |name: &str| {
-            noisy
-                .names
-                .iter()
-                .position(|n| n == name)
-                .unwrap_or(usize::MAX)
-        };
-        let dropped: HashSet<(usize, usize)> = r
-            .dropped
-            .iter()
-            .map(|d| (d.frame - 1, index(&d.point)))
-            .collect();
-        band.lost += good.iter().filter(|p| dropped.contains(p)).count();
-        let beside = |p: &(usize, usize)| bad.iter().any(|b| b.1 == p.1);
-        let row = &mut split[orthocheck_benches::band(m)];
         for p in good.iter().filter(|p| dropped.contains(p)) {
-            row[usize::from(!beside(p))] += 1;
+            tally.lost += 1;
+            row[usize::from(!beside(&bad, p))] += 1;
         }
-        row[2] += good.iter().filter(|p| !beside(p)).count();
         for p in &bad {
             if err(p) > 10.0 * sigma {
-                band.far += 1;
-                band.found += usize::from(dropped.contains(p));
+                tally.far += 1;
+                tally.found += usize::from(dropped.contains(p));
             }
         }
     }
@@ -125,14 +143,5 @@ fn main() {
         &bands,
     );
     println!();
-    println!("| points | good dropped beside a bad image | good dropped on all-good points |");
-    println!("|---|---:|---:|");
-    for ((name, [beside, alone, of]), b) in orthocheck_benches::BANDS.iter().zip(split).zip(&bands)
-    {
-        println!(
-            "| {name} | {beside} | {alone} of {of} ({:.2} %) |",
-            100.0 * alone as f64 / of.max(1) as f64
-        );
-        debug_assert!(beside + alone == b.lost);
-    }
+    print_split(&split, &bands);
 }

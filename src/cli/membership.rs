@@ -23,7 +23,7 @@ pub struct Args {
     /// body, the epipolar geometry is refitted to its points, the noise's mix of one scale
     /// and a scale growing with the coordinates is estimated (from 10 members), and each
     /// point's tolerance is its own standard deviation times Student's t at 99 % two-sided,
-    /// so that at most about 1 % of true members are rejected (0.2–0.5 % measured from 6
+    /// so that at most about 1 % of true members are rejected (0.3–0.6 % measured from 6
     /// members on; docs/limits.md, "Membership's tolerance").
     #[arg(long, allow_negative_numbers = true)]
     tolerance: Option<f64>,

@@ -32,8 +32,8 @@ const LMEDS_SUBSETS: usize = 500;
 /// Members at least, for the mix of the two noise scales to be estimated (it takes a degree
 /// of freedom; below, one scale). Chosen by `membership_calibration` (docs/limits.md): from
 /// 6 members the extra degree costs the far foreign points of the smallest scenes (80–83 %
-/// found instead of 98 %), from 14 the relative noise of 10–13 members stays unmodelled
-/// (0.66 % of the 10–19 members rejected instead of 0.52 %).
+/// found instead of 98–99 %), from 14 the relative noise of 10–13 members stays unmodelled
+/// (0.69 % of the 10–19 members rejected instead of 0.55 %).
 pub const MIX_MIN_MEMBERS: usize = 10;
 
 /// How far a member's epipolar distance (relative to the image size) may go, point by point.
@@ -133,7 +133,7 @@ pub fn robust_tolerance(f1: &[Vector2<f64>], f2: &[Vector2<f64>]) -> Tolerance {
     if n <= FIT_PARAMETERS + 1 {
         return floor;
     }
-    let h = (n + EPIPOLAR_DOF).div_ceil(2).clamp(EPIPOLAR_DOF + 2, n);
+    let h = median_rank(n);
     let d = least_median_fit(f1, f2).0.d;
     let mut sorted = d.clone();
     sorted.sort_by(f64::total_cmp);
@@ -182,6 +182,16 @@ pub fn robust_tolerance(f1: &[Vector2<f64>], f2: &[Vector2<f64>]) -> Tolerance {
     }
 }
 
+/// The rank h = ⌈(n + 3)/2⌉ (at least 5, at most n) of the distance least median of squares
+/// minimises over n ≥ 5 points. It counts the affine constraint's three degrees of freedom,
+/// as Rousseeuw's ⌊(n + p + 1)/2⌋ does p, although the start of equal scale has two: more
+/// points must fit, the safer side, and the calibration in docs/limits.md is of this rank.
+fn median_rank(n: usize) -> usize {
+    (n + EPIPOLAR_DOF)
+        .div_ceil(2)
+        .clamp(EPIPOLAR_DOF + 2, n.max(EPIPOLAR_DOF + 2))
+}
+
 /// Every three-point subset of `n` points, or [`LMEDS_SUBSETS`] of them drawn with seed 0.
 fn three_point_subsets(n: usize) -> Vec<[usize; 3]> {
     let all = n * n.saturating_sub(1) * n.saturating_sub(2) / 6;
@@ -207,16 +217,18 @@ fn three_point_subsets(n: usize) -> Vec<[usize; 3]> {
 
 /// The epipolar geometries of equal scale, a² + b² = c² + d², through three points: the
 /// constraint's null space of their two difference rows is two-dimensional, and the form
-/// vanishes on it twice or nowhere (then the vector nearest equal scale). None when the
-/// rows are dependent (the points coincide or are collinear in both frames alike).
+/// vanishes on it twice or nowhere (then the vector nearest equal scale). No fit when the
+/// rows are nearly dependent (the points coincide or are collinear in both frames alike):
+/// the second singular value below ε^(1/4) of the first, where the null space's vectors
+/// would carry errors of more than √ε (the Gram matrix's eigenvalues are the singular
+/// values squared).
 fn equal_scale_fits(f1: &[Vector2<f64>], f2: &[Vector2<f64>], q: [usize; 3]) -> Vec<[f64; 4]> {
     let row = |i: usize| nalgebra::Vector4::new(f1[i].x, f1[i].y, f2[i].x, f2[i].y);
     let (r1, r2) = (row(q[1]) - row(q[0]), row(q[2]) - row(q[0]));
     let eig = nalgebra::SymmetricEigen::new(r1 * r1.transpose() + r2 * r2.transpose());
     let mut order = [0usize, 1, 2, 3];
     order.sort_by(|&i, &j| eig.eigenvalues[i].total_cmp(&eig.eigenvalues[j]));
-    let negligible = crate::algebra::NEGLIGIBLE_ULPS * f64::EPSILON * eig.eigenvalues[order[3]];
-    if eig.eigenvalues[order[2]] <= negligible {
+    if eig.eigenvalues[order[2]] <= f64::EPSILON.sqrt() * eig.eigenvalues[order[3]] {
         return Vec::new();
     }
     let v1: nalgebra::Vector4<f64> = eig.eigenvectors.column(order[0]).into();
@@ -337,8 +349,30 @@ pub fn membership(f1: &[Vector2<f64>], f2: &[Vector2<f64>], tolerance: &Toleranc
         inside = next;
         fit = epipolar_distances(f1, f2, &inside);
     }
+    if inside.iter().filter(|m| **m).count() <= EPIPOLAR_DOF {
+        fit = nearest_four(f1, f2, &fit, &mut inside);
+    }
     let tol = tolerance.of(&fit);
     judge(&fit, &inside, &tol)
+}
+
+/// Three members, the start's, say nothing (an epipolar geometry of equal scale passes
+/// through any three points): the nearest point outside joins them, and the four are fitted
+/// exactly, so that the rigidity check has four points to judge (four points of no rigid
+/// body are rarely of equal scale).
+fn nearest_four(
+    f1: &[Vector2<f64>],
+    f2: &[Vector2<f64>],
+    fit: &Distances,
+    inside: &mut [bool],
+) -> Distances {
+    let next = (0..inside.len())
+        .filter(|&i| !inside[i])
+        .min_by(|&i, &j| fit.d[i].total_cmp(&fit.d[j]));
+    if let Some(i) = next {
+        inside[i] = true;
+    }
+    epipolar_distances(f1, f2, inside)
 }
 
 /// Each point's threshold under the fit to `inside`, from its own tolerance t_i = base ×
@@ -348,7 +382,8 @@ pub fn membership(f1: &[Vector2<f64>], f2: &[Vector2<f64>], tolerance: &Toleranc
 /// √(t_i² + base² · 4/m) (a prediction interval; with one scale, t √(1 + 4/m)), and a
 /// member once set apart is judged alike.
 fn thresholds(inside: &[bool], tolerance: &[f64], base: f64) -> Vec<f64> {
-    let m = inside.iter().filter(|x| **x).count().max(1);
+    // a leverage is at most 1: the three points of the start count as four
+    let m = inside.iter().filter(|x| **x).count().max(FIT_PARAMETERS);
     let fit = base * base * FIT_PARAMETERS as f64 / m as f64;
     inside
         .iter()
@@ -372,11 +407,11 @@ fn within(dist: &[f64], inside: &[bool], tolerance: &[f64], base: f64) -> Vec<bo
 ///
 /// Equal scale is what one rigid body's two orthographic views obey. A fit without it (four
 /// points, four parameters) can pass through a foreign point and three members and still
-/// come near a fifth by chance; such a start then sets true members apart, and the rigidity
-/// check refuses the scene (`membership_calibration`, docs/limits.md).
+/// come near another member by chance; such a start then sets true members apart, and the
+/// rigidity check refuses the scene (`membership_calibration`, docs/limits.md).
 fn least_median_fit(f1: &[Vector2<f64>], f2: &[Vector2<f64>]) -> (Distances, Vec<bool>) {
     let n = f1.len();
-    let h = (n + EPIPOLAR_DOF).div_ceil(2).clamp(EPIPOLAR_DOF + 2, n);
+    let h = median_rank(n);
     let mut best: Option<(f64, [f64; 4], [usize; 3])> = None;
     let mut d = Vec::with_capacity(n);
     for q in three_point_subsets(n) {
@@ -384,7 +419,7 @@ fn least_median_fit(f1: &[Vector2<f64>], f2: &[Vector2<f64>]) -> (Distances, Vec
         for e in equal_scale_fits(f1, f2, q) {
             line_distances(f1, f2, e, centres, &mut d);
             let (_, kth, _) = d.select_nth_unstable_by(h - 1, f64::total_cmp);
-            if best.is_none_or(|b| *kth < b.0) {
+            if best.is_none_or(|b| kth.total_cmp(&b.0).is_lt()) {
                 best = Some((*kth, e, q));
             }
         }
@@ -395,7 +430,7 @@ fn least_median_fit(f1: &[Vector2<f64>], f2: &[Vector2<f64>]) -> (Distances, Vec
             q.iter().for_each(|&i| inside[i] = true);
             (distances_from(f1, f2, e, centres_of(f1, f2, q)), inside)
         }
-        // every triple dependent: the least-squares fit of all points
+        // every triple tried dependent: the least-squares fit of all points
         None => (epipolar_distances(f1, f2, &vec![true; n]), vec![true; n]),
     }
 }

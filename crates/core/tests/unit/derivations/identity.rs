@@ -154,106 +154,39 @@ fn the_default_tolerance_follows_noise_relative_to_the_coordinates() {
     );
 }
 
-/// A rigid body plus a foreign point is never refused as "no rigid body": two scenes of six
-/// members and one foreign point (the last) with noise of one scale, where a least-median
-/// start without equal scale passed through the foreign point and three members, set two
-/// members apart, and the rigidity check then refused the members chosen
-/// (`membership_calibration 2000 2 absolute`, scenes 646 and 818).
+/// Two scenes of six members and one foreign point (the last), noise of one scale
+/// (`membership_calibration 2000 2 absolute`, scenes 646 and 818): rows x₁, y₁, x₂, y₂.
+#[rustfmt::skip]
+const BODY_AND_FOREIGN: [[[f64; 4]; 7]; 2] = [
+    [
+        [-0.3566096035211434, -0.947798945913236, 0.438999735062447, 1.1884745362652196],
+        [0.6578621094763839, -0.26301136705849737, 0.5020797381299086, -0.0830537781432127],
+        [-0.33969929531176757, 0.7905383718487405, 1.45261012402057, 0.56303623155267],
+        [-0.9647338500031574, -0.8953227576472234, 0.3911565577814718, 2.007493047874132],
+        [-0.07281068370918027, 0.18734716749223773, 1.0086455958906129, 0.5001991117505741],
+        [0.1466434290647501, -0.8882912603526155, 0.24377714027384706, 0.7036038784614838],
+        [0.6442052783060036, -0.9326498491548574, 1.077354128303114, 1.9783546889112962],
+    ],
+    [
+        [0.7939038974314795, -0.6190666580668233, -1.1826576575041168, 0.6145112153655605],
+        [-0.7171103665685032, -0.08715975137293909, -0.9630930725874617, 1.534951766168753],
+        [-0.44048816781265154, -0.4632962431609748, -0.8395049307321792, 1.5055403588478733],
+        [-0.28093576828407085, -0.7249466434623714, -0.7488409204886196, 1.5008910912514524],
+        [-0.26047289928086415, 0.09681888400595105, -0.9514951955869787, 1.0541370550164042],
+        [-0.7167667336056713, 0.3129769207082514, 0.1019409347032326, 1.1507420675776237],
+        [-0.5100274284466126, -0.5752485717297129, -0.356150404168294, 1.018757288853509],
+    ],
+];
+
+/// A rigid body plus a foreign point is never refused as "no rigid body": in both scenes of
+/// [`BODY_AND_FOREIGN`] a least-median start without equal scale passed through the foreign
+/// point and three members, set two members apart, and the rigidity check then refused the
+/// members chosen.
 #[test]
 fn a_body_and_a_foreign_point_are_not_refused() {
     use nalgebra::Vector2;
     use orthocheck_core::derivations::identity::{members_rigid, membership, robust_tolerance};
-    let scenes: [[[f64; 4]; 7]; 2] = [
-        [
-            [
-                -0.3566096035211434,
-                -0.947798945913236,
-                0.438999735062447,
-                1.1884745362652196,
-            ],
-            [
-                0.6578621094763839,
-                -0.26301136705849737,
-                0.5020797381299086,
-                -0.0830537781432127,
-            ],
-            [
-                -0.33969929531176757,
-                0.7905383718487405,
-                1.45261012402057,
-                0.56303623155267,
-            ],
-            [
-                -0.9647338500031574,
-                -0.8953227576472234,
-                0.3911565577814718,
-                2.007493047874132,
-            ],
-            [
-                -0.07281068370918027,
-                0.18734716749223773,
-                1.0086455958906129,
-                0.5001991117505741,
-            ],
-            [
-                0.1466434290647501,
-                -0.8882912603526155,
-                0.24377714027384706,
-                0.7036038784614838,
-            ],
-            [
-                0.6442052783060036,
-                -0.9326498491548574,
-                1.077354128303114,
-                1.9783546889112962,
-            ],
-        ],
-        [
-            [
-                0.7939038974314795,
-                -0.6190666580668233,
-                -1.1826576575041168,
-                0.6145112153655605,
-            ],
-            [
-                -0.7171103665685032,
-                -0.08715975137293909,
-                -0.9630930725874617,
-                1.534951766168753,
-            ],
-            [
-                -0.44048816781265154,
-                -0.4632962431609748,
-                -0.8395049307321792,
-                1.5055403588478733,
-            ],
-            [
-                -0.28093576828407085,
-                -0.7249466434623714,
-                -0.7488409204886196,
-                1.5008910912514524,
-            ],
-            [
-                -0.26047289928086415,
-                0.09681888400595105,
-                -0.9514951955869787,
-                1.0541370550164042,
-            ],
-            [
-                -0.7167667336056713,
-                0.3129769207082514,
-                0.1019409347032326,
-                1.1507420675776237,
-            ],
-            [
-                -0.5100274284466126,
-                -0.5752485717297129,
-                -0.356150404168294,
-                1.018757288853509,
-            ],
-        ],
-    ];
-    for (s, rows) in scenes.iter().enumerate() {
+    for (s, rows) in BODY_AND_FOREIGN.iter().enumerate() {
         let f1: Vec<Vector2<f64>> = rows.iter().map(|r| Vector2::new(r[0], r[1])).collect();
         let f2: Vec<Vector2<f64>> = rows.iter().map(|r| Vector2::new(r[2], r[3])).collect();
         let tol = robust_tolerance(&f1, &f2);
@@ -266,5 +199,31 @@ fn a_body_and_a_foreign_point_are_not_refused() {
         );
         let refused = members_rigid(&f1, &f2, &inside, tol.largest(&judged));
         assert_eq!(refused, None, "scene {s}");
+    }
+}
+
+/// Points of no rigid body are refused, however few: five points drawn at random in each
+/// frame leave only the start's three within the default tolerance (the floor), and the
+/// nearest fourth joins them, so the rigidity check has four points to judge.
+#[test]
+fn five_points_of_no_body_are_refused() {
+    use nalgebra::Vector2;
+    use orthocheck_core::derivations::identity::{members_rigid, membership, robust_tolerance};
+    use rand::Rng;
+    for seed in 0..20u64 {
+        let mut g = orthocheck_core::model::rng(seed);
+        let mut draw = || -> Vec<Vector2<f64>> {
+            (0..5)
+                .map(|_| Vector2::new(g.random_range(-1.0..1.0), g.random_range(-1.0..1.0)))
+                .collect()
+        };
+        let (f1, f2) = (draw(), draw());
+        let tol = robust_tolerance(&f1, &f2);
+        let judged = membership(&f1, &f2, &tol);
+        let inside: Vec<bool> = judged.iter().map(|j| j.member).collect();
+        let members = inside.iter().filter(|m| **m).count();
+        assert!(members >= 4, "seed {seed}: {judged:?}");
+        let refused = members_rigid(&f1, &f2, &inside, tol.largest(&judged));
+        assert!(refused.is_some(), "seed {seed}: {judged:?}");
     }
 }
