@@ -63,12 +63,7 @@ pub fn epipolar(f1: &[Vector2<f64>], f2: &[Vector2<f64>]) -> Epipolar {
 /// epipolar geometry undetermined: the vector kept is the one of that space closest to equal
 /// scale, and the residual is the smallest |a² + b² − c² − d²| there.
 pub fn epipolar_with_rounding(f1: &[Vector2<f64>], f2: &[Vector2<f64>], rounding: f64) -> Epipolar {
-    let (c1, c2) = (centred(f1), centred(f2));
-    let mut g = Matrix4::zeros();
-    for (p, q) in c1.iter().zip(&c2) {
-        let r = nalgebra::Vector4::new(p.x, p.y, q.x, q.y);
-        g += r * r.transpose();
-    }
+    let g = centred_gram(f1, f2);
     let eig = SymmetricEigen::new(g);
     let mut order = [0usize, 1, 2, 3];
     order.sort_by(|&i, &j| eig.eigenvalues[i].total_cmp(&eig.eigenvalues[j]));
@@ -92,6 +87,17 @@ pub fn epipolar_with_rounding(f1: &[Vector2<f64>], f2: &[Vector2<f64>], rounding
         scale_residual: q(&v),
         affine_residual: (eigenvalues[0] / eigenvalues[3].max(f64::MIN_POSITIVE)).sqrt(),
     }
+}
+
+/// The Gram matrix of the centred rows (x₁, y₁, x₂, y₂) of two frames.
+pub(crate) fn centred_gram(f1: &[Vector2<f64>], f2: &[Vector2<f64>]) -> Matrix4<f64> {
+    let (c1, c2) = (centred(f1), centred(f2));
+    let mut g = Matrix4::zeros();
+    for (p, q) in c1.iter().zip(&c2) {
+        let r = nalgebra::Vector4::new(p.x, p.y, q.x, q.y);
+        g += r * r.transpose();
+    }
+    g
 }
 
 /// The unit vectors of span{v1, v2} (orthonormal) closest to equal scale: both zeros of

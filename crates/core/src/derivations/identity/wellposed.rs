@@ -168,22 +168,24 @@ pub fn rigidity(f1: &[Vector2<f64>], f2: &[Vector2<f64>]) -> Option<TwoFrameDege
     (l0 > zero || e.scale_residual.abs() > scale_allowance).then_some(TwoFrameDegenerate::NotRigid)
 }
 
-/// The level at which [`members_rigid`] refuses members as views of no rigid body: the
-/// chance that noise alone (normal errors) gives a rigid body's members an F ratio beyond
-/// it. One in a million: a rigid body is refused, in effect, never.
+/// The level at which [`members_rigid`] refuses members by their own noise: the chance that
+/// normal errors give a rigid body's members an F ratio beyond it. Nominal: F(1, ν) holds
+/// for small noise, and members chosen for small residuals inflate the ratio; none of
+/// `membership_calibration`'s 12,000 rigid scenes was refused (docs/limits.md).
 pub const RIGID_LEVEL: f64 = 1e-6;
 
 /// Whether the members of a membership decision are views of one rigid body at equal scale.
 ///
 /// They are, unless their epipolar geometry's equal-scale residual exceeds what rounding
-/// leaves ([`rigidity`]'s allowance) and noise cannot explain it either. With m ≥ 5 members
-/// the noise is the members' own: the least squares Σ (v·row)² over unit vectors v of equal
-/// scale exceed the free least by F(1, m − 4) times the free least's variance (m − 4
-/// residual degrees of freedom: the centre and the unit vector take four), and they are
-/// refused beyond its 1 − [`RIGID_LEVEL`] point. With four members (no residual freedom) the
-/// noise is the one `tolerance` (the relative epipolar distance a member may have) admits,
-/// carried to the residual by a worst-case bound. `None` when they are rigid; the
-/// degenerate case otherwise.
+/// leaves ([`rigidity`]'s allowance) and one of two rules says noise cannot explain it:
+/// - the noise that `tolerance` (the relative epipolar distance a member may have) admits,
+///   carried to the residual by a worst-case bound;
+/// - with m ≥ 5 members, their own noise: the least squares Σ (v·row)² over unit vectors v
+///   of equal scale exceed the free least by more than F(1, m − 4) times the free least's
+///   variance allows at [`RIGID_LEVEL`] (m − 4 residual degrees of freedom: the centre and
+///   the unit vector take four).
+///
+/// `None` when they are rigid; the degenerate case otherwise.
 pub fn members_rigid(
     f1: &[Vector2<f64>],
     f2: &[Vector2<f64>],
@@ -208,16 +210,20 @@ pub fn members_rigid(
     if !e.determined || e.scale_residual.abs() <= rounding {
         return None;
     }
-    let unexplained = match g1.len() - 4 {
-        0 => e.scale_residual.abs() > tolerance_bound(&g1, &g2, &e, tolerance),
-        nu => {
-            let (free, equal) = equal_scale_least(&centred_gram(&g1, &g2));
-            let t = crate::algebra::student::two_sided_quantile(1.0 - RIGID_LEVEL, nu as u32);
-            // F = (equal − free) / (free / ν) beyond t², without dividing by a zero `free`
-            (equal - free) * nu as f64 > t * t * free
-        }
+    let beyond_bound = e.scale_residual.abs() > tolerance_bound(&g2, &e, tolerance);
+    let nu = g1.len() - 4;
+    let beyond_level = nu > 0 && {
+        let gram = crate::derivations::two_frames::centred_gram(&g1, &g2);
+        let (free, equal) = equal_scale_least(&gram, l3);
+        let t = crate::algebra::student::two_sided_quantile(1.0 - RIGID_LEVEL, nu as u32);
+        // F = (equal − free) / (free / ν) beyond t², both least squares known to the
+        // eigensolver's rounding r = 64ε·λ₃ (and `free` taken as at least r)
+        let r = crate::algebra::NEGLIGIBLE_ULPS * f64::EPSILON * l3;
+        (equal - free - r) * nu as f64 > t * t * free.max(r)
     };
-    unexplained.then_some(TwoFrameDegenerate::NotRigid)
+    // either rule refuses: the bound never refused a rigid body in the calibration, and the
+    // test adds what the members' own noise shows
+    (beyond_bound || beyond_level).then_some(TwoFrameDegenerate::NotRigid)
 }
 
 /// The equal-scale residual the noise that `tolerance` admits can cause: a member's distance
@@ -226,7 +232,6 @@ pub fn members_rigid(
 /// 4√(l₃ n) σ, the null vector by that over the gap (Davis–Kahan), and q = vᵀDv by twice
 /// that (‖D‖ = 1).
 fn tolerance_bound(
-    g1: &[Vector2<f64>],
     g2: &[Vector2<f64>],
     e: &crate::derivations::two_frames::Epipolar,
     tolerance: f64,
@@ -237,30 +242,16 @@ fn tolerance_bound(
     let m2 = g2.iter().sum::<Vector2<f64>>() / g2.len() as f64;
     let size = g2.iter().map(|q| (q - m2).norm()).fold(0.0, f64::max);
     let sigma = tolerance * (c * c + d * d).sqrt() * size;
-    8.0 * (l3 * g1.len() as f64).sqrt() * sigma / gap
-}
-
-/// The Gram matrix of the centred rows (x₁, y₁, x₂, y₂).
-fn centred_gram(g1: &[Vector2<f64>], g2: &[Vector2<f64>]) -> nalgebra::Matrix4<f64> {
-    let n = g1.len().max(1) as f64;
-    let (m1, m2) = (
-        g1.iter().sum::<Vector2<f64>>() / n,
-        g2.iter().sum::<Vector2<f64>>() / n,
-    );
-    g1.iter()
-        .zip(g2)
-        .fold(nalgebra::Matrix4::zeros(), |acc, (p, q)| {
-            let r = nalgebra::Vector4::new(p.x - m1.x, p.y - m1.y, q.x - m2.x, q.y - m2.y);
-            acc + r * r.transpose()
-        })
+    8.0 * (l3 * g2.len() as f64).sqrt() * sigma / gap
 }
 
 /// The least vᵀGv over unit vectors v, free and of equal scale (vᵀDv = 0, D = diag(1, 1,
 /// −1, −1)), as (free, equal). The equal-scale least is the dual's maximum over η of the
 /// least eigenvalue φ(η) of G − ηD (a concave function, whose slope is −vᵀDv at its least
-/// eigenvector v), found by bisection on the slope's sign in [−λ₃, λ₃] (beyond, φ falls
-/// below φ(0)).
-fn equal_scale_least(g: &nalgebra::Matrix4<f64>) -> (f64, f64) {
+/// eigenvector v), found by bisection on the slope's sign in [−λ₃, λ₃] (`top` = λ₃, G's
+/// largest eigenvalue; beyond, φ falls below φ(0)). Two quadratic forms on the sphere leave
+/// no duality gap (Brickman), so the maximum is the constrained least.
+fn equal_scale_least(g: &nalgebra::Matrix4<f64>, top: f64) -> (f64, f64) {
     let d = nalgebra::Matrix4::from_diagonal(&nalgebra::Vector4::new(1.0, 1.0, -1.0, -1.0));
     let least = |eta: f64| -> (f64, f64) {
         let eig = (g - d * eta).symmetric_eigen();
@@ -269,7 +260,7 @@ fn equal_scale_least(g: &nalgebra::Matrix4<f64>) -> (f64, f64) {
         (eig.eigenvalues[i], (v.transpose() * d * v)[(0, 0)])
     };
     let free = least(0.0).0;
-    let top = g.symmetric_eigenvalues().max().max(f64::MIN_POSITIVE);
+    let top = top.max(f64::MIN_POSITIVE);
     let (mut lo, mut hi) = (-top, top);
     let mut best = free;
     // φ'(η) = −q(η): q < 0 means φ still rises to the right

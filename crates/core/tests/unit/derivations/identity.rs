@@ -263,3 +263,34 @@ fn stretched_views_are_refused_and_rigid_ones_kept() {
         refused[1]
     );
 }
+
+/// The rigidity test at rounding level: exact views and views with noise of 10⁻¹⁰ (the
+/// least squares then near rounding, so their F ratio is rounding over rounding) are kept,
+/// exact stretched views refused.
+#[test]
+fn rigidity_at_rounding_level() {
+    use nalgebra::Vector2;
+    use orthocheck_core::derivations::identity::{members_rigid, membership, robust_tolerance};
+    use orthocheck_core::model::{rng, Scene};
+    use rand::Rng;
+    for seed in 0..20u64 {
+        let mut g = rng(seed);
+        let t = Scene::random(12, 2, g.random()).tracks();
+        for (noise, stretch, rigid) in [(0.0, 1.0, true), (1e-10, 1.0, true), (0.0, 2.0, false)] {
+            let mut f: [Vec<Vector2<f64>>; 2] = [t.frames[0].clone(), t.frames[1].clone()];
+            f[1].iter_mut().for_each(|y| y.x *= stretch);
+            if noise > 0.0 {
+                for y in f.iter_mut().flatten() {
+                    *y +=
+                        Vector2::new(g.random_range(-noise..noise), g.random_range(-noise..noise));
+                }
+            }
+            let tol = robust_tolerance(&f[0], &f[1]);
+            let judged = membership(&f[0], &f[1], &tol);
+            let inside: Vec<bool> = judged.iter().map(|j| j.member).collect();
+            let r = members_rigid(&f[0], &f[1], &inside, tol.largest(&judged));
+            let case = format!("seed {seed}, noise {noise}, stretch {stretch}: {judged:?}");
+            assert_eq!(r.is_none(), rigid, "{case}");
+        }
+    }
+}
