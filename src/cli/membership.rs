@@ -66,8 +66,9 @@ pub fn run(a: Args) -> Result<(), Error> {
         return Err(in_file(
             &a.input,
             Error::InvalidInput(format!(
-                "{d} (tolerance {}){hint}",
-                crate::numfmt::sig(largest)
+                "{d} (beyond the noise of tolerance {}, or of the members' own residuals at level {}){hint}",
+                crate::numfmt::sig(largest),
+                crate::numfmt::sig(identity::RIGID_LEVEL)
             )),
         ));
     }
