@@ -172,21 +172,19 @@ fn membership_finds_a_foreign_point_at_its_default_tolerance() {
     );
 }
 
-/// Views of no rigid body are refused, exit 2: 30 points at 0.5 % noise with frame 2
-/// stretched to twice its width (the unit tests and `membership_calibration STRETCH=2`
-/// measure how often). The worst-case bound alone let this scene through, exit 0, as it let
-/// 10 of the seeds 1–12 of such scenes.
+/// Views of no rigid body are refused, exit 2: 30 points with relative noise of 0.5 %
+/// (`synth --noise`'s model) and frame 2 stretched to twice its width (the unit tests and
+/// `membership_calibration STRETCH=2` measure how often). The worst-case bound alone let
+/// this scene through, exit 0, as it let 10 of seeds 1–12 of such scenes; with the F test
+/// all 12 are refused.
 #[test]
 fn membership_refuses_stretched_views() {
-    use rand::{Rng, SeedableRng};
+    use orthocheck::model::{rng, NoiseModel, Scene};
+    const SEED: u64 = 1;
     let dir = tempfile::tempdir().unwrap();
-    let mut t = orthocheck::model::Scene::random(30, 2, 1).tracks();
-    let mut rng = rand_chacha::ChaCha8Rng::seed_from_u64(1);
-    t.frames[1].iter_mut().for_each(|p| p.x *= 2.0);
-    for p in t.frames.iter_mut().flatten() {
-        p.x *= 1.0 + 5e-3 * rng.random_range(-1.0..1.0);
-        p.y *= 1.0 + 5e-3 * rng.random_range(-1.0..1.0);
-    }
+    let mut clean = Scene::random(30, 2, SEED).tracks();
+    clean.frames[1].iter_mut().for_each(|p| p.x *= 2.0);
+    let t = NoiseModel::RelativeCoordinate { eps: 5e-3 }.perturb_tracks(&clean, &mut rng(SEED));
     let file = dir.path().join("stretched.yaml");
     std::fs::write(&file, orthocheck::input::tracks_to_yaml(&t)).unwrap();
     let out = orthocheck(&["membership", "--input", file.to_str().unwrap()]);
