@@ -2,6 +2,9 @@
 //! selected value for c"): the rules tried against the printed d of each assignment, and
 //! the reason the choice cannot change a verdict (the distance does not depend on d).
 
+use std::cell::RefCell;
+use std::collections::HashMap;
+
 use nalgebra::Vector2;
 
 use super::program::replay;
@@ -113,9 +116,39 @@ pub fn appendix_coefficients(s1: [f64; 3], s2: [f64; 3]) -> Option<[f64; 6]> {
     ])
 }
 
+/// The grid minima of frames (b² of the − and + roots, then g²), by the bits of their
+/// coordinates: the four grid rules of one assignment, and of each rounding probe, share one
+/// scan of the grid.
+#[derive(Default)]
+struct Minima(RefCell<HashMap<[u64; 16], Option<[f64; 4]>>>);
+
+impl Minima {
+    fn get(&self, f1: &[Vector2<f64>; 4], f2: &[Vector2<f64>; 4], lo: f64) -> Option<[f64; 4]> {
+        let key = std::array::from_fn(|i| {
+            let p = if i < 8 { f1[i / 2] } else { f2[(i - 8) / 2] };
+            p[i % 2].to_bits()
+        });
+        *self
+            .0
+            .borrow_mut()
+            .entry(key)
+            .or_insert_with(|| minima(f1, f2, lo))
+    }
+}
+
 /// The d² a rule gives for frames `f1`, `f2` (program order P, Q, R, T); `None` when it
 /// does not exist (no real slope, no admissible d).
 pub fn predict(rule: Rule, f1: &[Vector2<f64>; 4], f2: &[Vector2<f64>; 4]) -> Option<f64> {
+    predict_with(rule, f1, f2, &Minima::default())
+}
+
+/// [`predict`], the grid rules' minima looked up in `memo`.
+fn predict_with(
+    rule: Rule,
+    f1: &[Vector2<f64>; 4],
+    f2: &[Vector2<f64>; 4],
+    memo: &Minima,
+) -> Option<f64> {
     let (s1, s2) = (squares(f1), squares(f2));
     let lo = s1[2].max(s2[2]);
     let hi = s1[2].min(s2[2]);
@@ -148,10 +181,10 @@ pub fn predict(rule: Rule, f1: &[Vector2<f64>; 4], f2: &[Vector2<f64>; 4]) -> Op
             let a = |f: &[Vector2<f64>; 4]| [f[3], f[1], f[2], f[0]];
             smallest_c(&a(f1), &a(f2))?.powi(2)
         }
-        Rule::MinimumBMinus => minimum(f1, f2, lo, 0, false)?,
-        Rule::MinimumBPlus => minimum(f1, f2, lo, 1, false)?,
-        Rule::MinimumGMinus => minimum(f1, f2, lo, 0, true)?,
-        Rule::MinimumGPlus => minimum(f1, f2, lo, 1, true)?,
+        Rule::MinimumBMinus => memo.get(f1, f2, lo)?[0],
+        Rule::MinimumBPlus => memo.get(f1, f2, lo)?[1],
+        Rule::MinimumGMinus => memo.get(f1, f2, lo)?[2],
+        Rule::MinimumGPlus => memo.get(f1, f2, lo)?[3],
     };
     value.is_finite().then_some(value)
 }
@@ -169,26 +202,28 @@ fn grid() -> &'static [f64] {
     })
 }
 
-/// The d² on the grid where b² (or g², `g`) of root `root` (0: −, 1: +) is smallest.
-fn minimum(
-    f1: &[Vector2<f64>; 4],
-    f2: &[Vector2<f64>; 4],
-    lo: f64,
-    root: usize,
-    g: bool,
-) -> Option<f64> {
+/// The d² on the grid where b² of the − root, b² of the +, g² of the −, g² of the + is
+/// smallest (each the first grid point of its least value); `None` where no grid point has
+/// real roots.
+fn minima(f1: &[Vector2<f64>; 4], f2: &[Vector2<f64>; 4], lo: f64) -> Option<[f64; 4]> {
     let a = |f: &[Vector2<f64>; 4]| [f[3], f[1], f[2], f[0]];
     let (a1, a2) = (a(f1), a(f2));
     let at = crate::derivations::identity::b_squared_in(&a1, &a2)?;
-    grid()
-        .iter()
-        .filter_map(|t| {
-            let x = lo * (1.0 + t);
-            let (b2, g2) = at(x)?[root];
-            Some((x, if g { g2 } else { b2 }))
-        })
-        .min_by(|u, v| u.1.total_cmp(&v.1))
-        .map(|m| m.0)
+    let mut best: Option<[(f64, f64); 4]> = None;
+    for t in grid() {
+        let x = lo * (1.0 + t);
+        let Some([(bm, gm), (bp, gp)]) = at(x) else {
+            continue;
+        };
+        let values = [bm, bp, gm, gp];
+        let b = best.get_or_insert(values.map(|v| (x, v)));
+        for (m, v) in b.iter_mut().zip(values) {
+            if m.1.total_cmp(&v).is_gt() {
+                *m = (x, v);
+            }
+        }
+    }
+    best.map(|b| b.map(|m| m.0))
 }
 
 /// How far a rule misses over the assignments.
@@ -212,11 +247,17 @@ pub type PrintedD = ([Vector2<f64>; 4], [Vector2<f64>; 4], f64, f64);
 
 /// A rule's first-order bound over the frames' rounding (±`half` on every coordinate): 0
 /// where a probe is undefined.
-fn rounding_bound(rule: Rule, f1: &[Vector2<f64>; 4], f2: &[Vector2<f64>; 4], half: f64) -> f64 {
+fn rounding_bound(
+    rule: Rule,
+    f1: &[Vector2<f64>; 4],
+    f2: &[Vector2<f64>; 4],
+    half: f64,
+    memo: &Minima,
+) -> f64 {
     let x: Vec<f64> = f1.iter().chain(f2).flat_map(|p| [p.x, p.y]).collect();
     let f = |v: &[f64]| {
         let g = |o: usize| std::array::from_fn(|i| Vector2::new(v[o + 2 * i], v[o + 2 * i + 1]));
-        predict(rule, &g(0), &g(8)).map(|y| vec![y])
+        predict_with(rule, &g(0), &g(8), memo).map(|y| vec![y])
     };
     first_order_bound(&f, &x, &[half; 16]).map_or(0.0, |b| b[0])
 }
@@ -224,18 +265,19 @@ fn rounding_bound(rule: Rule, f1: &[Vector2<f64>; 4], f2: &[Vector2<f64>; 4], ha
 /// Every rule against `printed`, the frames' coordinates rounded to ±`half`: a hit is a
 /// prediction within the printed d²'s rounding plus the prediction's propagated bound.
 pub fn fit_rules(printed: &[PrintedD], half: f64) -> Vec<RuleFit> {
+    let memo = Minima::default();
     Rule::ALL
         .iter()
         .map(|&rule| {
             let mut rel = Vec::new();
             let mut hits = 0;
             for (f1, f2, d2, tol) in printed {
-                if let Some(y) = predict(rule, f1, f2) {
+                if let Some(y) = predict_with(rule, f1, f2, &memo) {
                     // the bound is never NaN and at least 0: only a miss by the printed
                     // rounding alone needs it
                     let off = (y - d2).abs();
                     hits += usize::from(
-                        off <= *tol || off <= *tol + rounding_bound(rule, f1, f2, half),
+                        off <= *tol || off <= *tol + rounding_bound(rule, f1, f2, half, &memo),
                     );
                     rel.push((y - d2).abs() / d2);
                 }
