@@ -57,8 +57,8 @@ pub fn run(a: Args) -> Result<(), Error> {
     let obs = load_observations(&a.input)?;
     if a.robust {
         crate::limits::at_most(
-            "points × frames of --robust",
-            obs.names.len().saturating_mul(obs.frames.len()),
+            "observations of --robust",
+            obs.count(),
             crate::limits::RANSAC_OBSERVATIONS,
         )
         .map_err(|m| in_file(&a.input, Error::InvalidInput(m)))?;

@@ -548,6 +548,54 @@ fn variable_projection_beyond_its_work_limit_is_refused_before_the_work() {
     assert!(out.stdout.is_empty());
 }
 
+/// `--robust`'s limit counts the images given, not points × frames: 26,000 points each seen
+/// once in 4 frames (104,000 cells, 26,000 images) pass it and are then dropped as tracks
+/// seen once; 25,001 points in all 4 frames (100,004 images) are refused by it.
+#[test]
+fn the_robust_limit_counts_images_not_cells() {
+    let dir = tempfile::tempdir().unwrap();
+    let write = |name: &str, points: usize, all_frames: bool| {
+        let mut text = String::from("frame,point,x,y\n");
+        for j in 0..points {
+            for f in 1..=4 {
+                if all_frames || f == j % 4 + 1 {
+                    let (x, y) = ((j % 1000) as f64, (j / 1000) as f64 + f as f64 / 8.0);
+                    text.push_str(&format!("{f},P{j},{x},{y}\n"));
+                }
+            }
+        }
+        let path = dir.path().join(name);
+        std::fs::write(&path, text).unwrap();
+        path
+    };
+    let sparse = write("sparse.csv", 26_000, false);
+    let out = orthocheck(&[
+        "reconstruct",
+        "--robust",
+        "--input",
+        sparse.to_str().unwrap(),
+    ]);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(
+        !err.contains("limit") && err.contains("all 4 frames were dropped"),
+        "{err}"
+    );
+    let dense = write("dense.csv", 25_001, true);
+    let out = orthocheck(&[
+        "reconstruct",
+        "--robust",
+        "--input",
+        dense.to_str().unwrap(),
+    ]);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("observations of --robust is 100004") && err.contains("limit of 100000"),
+        "{err}"
+    );
+}
+
 #[test]
 fn what_a_claim_rests_on_is_checked_at_its_line() {
     let copy = || {

@@ -128,8 +128,9 @@ pub const VARPRO_WORK: f64 = 1e10;
 pub const OBSERVATION_CELLS: usize = 20_000_000;
 /// RANSAC samples at most (each costs one point intersection per point and frame).
 pub const RANSAC_SAMPLES: usize = 10_000;
-/// Observations (points × frames) of `reconstruct --robust`: every sample intersects every
-/// point, so the worst case (no good sample) costs samples × observations.
+/// Observations of `reconstruct --robust` (the images given, points × frames when no track
+/// has gaps): every sample intersects every point from its images, so the worst case (no
+/// good sample) costs samples × observations.
 pub const RANSAC_OBSERVATIONS: usize = 100_000;
 /// Points per frame of `identify --method epipolar`: every ordered choice of four frame-2
 /// points is tried, n⁴ of them; n = 40 takes about 2 s on two cores (n = 60 about 10 s).

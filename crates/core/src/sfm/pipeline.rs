@@ -429,12 +429,17 @@ pub const UNEVEN_Z: f64 = 5.0;
 /// frame's noise may well be twice the median frame's (a tracker's accuracy varies with the
 /// image, relative noise with the body's extent in the frame), a mean square four times as
 /// large. A chosen factor: at turntable rates the frames of good fits stayed below 3.8, those
-/// of local optima reached 3 to 480 (`turntable_family`, docs/limits.md).
+/// of local optima reached 3 to 480 (`turntable_family`, docs/limits.md). On a real sequence
+/// the images themselves differ more: the Oxford dinosaur's frames 13–16 fit 4.5–5.6 times
+/// worse than the median frame under the sequence's own calibrated cameras, and the
+/// warning names 14 and 15 at the optimum (`real_turntable`, docs/limits.md), so it names
+/// both causes.
 pub const UNEVEN_FLOOR: f64 = 4.0;
 
 /// The warning of frames whose reprojection error is far beyond the others': a fit at its
 /// optimum leaves every frame a share of the noise in proportion to its observations, a
-/// local optimum leaves some frames fitting badly. Each frame's mean squared residual per
+/// local optimum leaves some frames fitting badly, and so do images worse than the rest
+/// (mismatched tracks). Each frame's mean squared residual per
 /// degree of freedom (ν = 2 n − 5 for its n images and five parameters) is compared with
 /// the median frame's, scaled by the χ²_ν/ν point at [`UNEVEN_Z`] and at least
 /// [`UNEVEN_FLOOR`]; `None` when every frame
@@ -490,7 +495,7 @@ pub fn uneven_warning(
         .collect();
     (!bad.is_empty()).then(|| {
         format!(
-            "{} frame(s) fit far worse than the median frame (frame, mean squared residual over the median's): {}{}: likely a local optimum, not the best fit",
+            "{} frame(s) fit far worse than the median frame (frame, mean squared residual over the median's): {}{}: a local optimum, not the best fit, or images in those frames worse than the rest (--robust drops observations beyond its threshold)",
             bad.len(),
             named.join(", "),
             if bad.len() > DEEP_NAMED { ", …" } else { "" }

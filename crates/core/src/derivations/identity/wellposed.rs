@@ -21,8 +21,10 @@ pub enum TwoFrameDegenerate {
     /// Frame 2 is a scaled copy of frame 1 (up to an in-plane motion): orthographic views of
     /// one rigid body have one scale, so no rigid body gives these frames.
     ScaledFrames,
-    /// No rigid body gives these frames: they fit no affine epipolar geometry of two views at
-    /// equal scale.
+    /// No rigid body seen orthographically gives these frames: they fit no affine epipolar
+    /// geometry of two views at equal scale. Real cameras break it too where their
+    /// perspective or non-square pixels exceed the tracks' noise: 5 of the Oxford dinosaur's
+    /// 35 pairs of consecutive frames are refused (docs/limits.md).
     NotRigid,
     /// The best assignment leaves the epipolar geometry undetermined (a planar body).
     Planar,
@@ -43,7 +45,7 @@ impl std::fmt::Display for TwoFrameDegenerate {
                 "frame 2 is a scaled copy of frame 1: orthographic views of one rigid body have one scale, no rigid body gives these frames"
             }
             TwoFrameDegenerate::NotRigid => {
-                "no rigid body gives these frames: they fit no epipolar geometry of two orthographic views at equal scale"
+                "no rigid body gives these frames as orthographic views: they fit no epipolar geometry of two orthographic views at equal scale (a real camera's perspective or non-square pixels, beyond the tracks' noise, break it too)"
             }
             TwoFrameDegenerate::Planar => {
                 "the body is planar: the epipolar geometry is undetermined and several assignments may fit"
