@@ -56,12 +56,19 @@ pub fn run(a: Args) -> Result<(), Error> {
     }
     let obs = load_observations(&a.input)?;
     if a.robust {
-        crate::limits::at_most(
-            "observations of --robust",
-            obs.count(),
-            crate::limits::RANSAC_OBSERVATIONS,
-        )
-        .map_err(|m| in_file(&a.input, Error::InvalidInput(m)))?;
+        let (what, limit) = if obs.count() < obs.names.len().saturating_mul(obs.frames.len()) {
+            (
+                "observations of --robust on tracks with gaps",
+                crate::limits::RANSAC_GAP_OBSERVATIONS,
+            )
+        } else {
+            (
+                "observations of --robust",
+                crate::limits::RANSAC_OBSERVATIONS,
+            )
+        };
+        crate::limits::at_most(what, obs.count(), limit)
+            .map_err(|m| in_file(&a.input, Error::InvalidInput(m)))?;
     }
     let side = (2 * obs.frames.len()).min(obs.names.len());
     crate::limits::at_most(

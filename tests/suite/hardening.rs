@@ -548,19 +548,21 @@ fn variable_projection_beyond_its_work_limit_is_refused_before_the_work() {
     assert!(out.stdout.is_empty());
 }
 
-/// `--robust`'s limit counts the images given, not points × frames: 26,000 points each seen
-/// once in 4 frames (104,000 cells, 26,000 images) pass it and are then dropped as tracks
-/// seen once; 25,001 points in all 4 frames (100,004 images) are refused by it.
+/// `--robust`'s limits count the images given, not points × frames: 17,000 points each seen
+/// once in 6 frames (102,000 cells, 17,000 images) pass them and are then dropped as tracks
+/// seen once; 10,002 points each in 2 of the 6 (20,004 images) are refused by the limit of
+/// tracks with gaps, and 25,001 points in all 4 frames (100,004 images) by that of complete
+/// tracks.
 #[test]
-fn the_robust_limit_counts_images_not_cells() {
+fn the_robust_limits_count_images_not_cells() {
     let dir = tempfile::tempdir().unwrap();
-    let write = |name: &str, points: usize, all_frames: bool| {
+    let write = |name: &str, points: usize, frames: usize, seen: usize| {
         let mut text = String::from("frame,point,x,y\n");
         for j in 0..points {
-            for f in 1..=4 {
-                if all_frames || f == j % 4 + 1 {
+            for f in 0..frames {
+                if (f + frames - j % frames) % frames < seen {
                     let (x, y) = ((j % 1000) as f64, (j / 1000) as f64 + f as f64 / 8.0);
-                    text.push_str(&format!("{f},P{j},{x},{y}\n"));
+                    text.push_str(&format!("{},P{j},{x},{y}\n", f + 1));
                 }
             }
         }
@@ -568,28 +570,23 @@ fn the_robust_limit_counts_images_not_cells() {
         std::fs::write(&path, text).unwrap();
         path
     };
-    let sparse = write("sparse.csv", 26_000, false);
-    let out = orthocheck(&[
-        "reconstruct",
-        "--robust",
-        "--input",
-        sparse.to_str().unwrap(),
-    ]);
-    let err = String::from_utf8_lossy(&out.stderr);
-    assert_eq!(out.status.code(), Some(2), "{err}");
+    let robust = |path: &std::path::Path| {
+        let out = orthocheck(&["reconstruct", "--robust", "--input", path.to_str().unwrap()]);
+        assert_eq!(out.status.code(), Some(2));
+        String::from_utf8_lossy(&out.stderr).into_owned()
+    };
+    let err = robust(&write("once.csv", 17_000, 6, 1));
     assert!(
-        !err.contains("limit") && err.contains("all 4 frames were dropped"),
+        !err.contains("limit") && err.contains("all 6 frames were dropped"),
         "{err}"
     );
-    let dense = write("dense.csv", 25_001, true);
-    let out = orthocheck(&[
-        "reconstruct",
-        "--robust",
-        "--input",
-        dense.to_str().unwrap(),
-    ]);
-    let err = String::from_utf8_lossy(&out.stderr);
-    assert_eq!(out.status.code(), Some(2), "{err}");
+    let err = robust(&write("gaps.csv", 10_002, 6, 2));
+    assert!(
+        err.contains("observations of --robust on tracks with gaps is 20004")
+            && err.contains("limit of 20000"),
+        "{err}"
+    );
+    let err = robust(&write("complete.csv", 25_001, 4, 4));
     assert!(
         err.contains("observations of --robust is 100004") && err.contains("limit of 100000"),
         "{err}"

@@ -206,3 +206,59 @@ fn where_three_frames_share_only_three_points_ransac_uses_the_three_point_solver
     let e = shape_error(&out.reconstruction, &scene.body.points);
     assert!(e < 1e-2, "shape error {e}");
 }
+
+#[test]
+fn where_no_sample_explains_half_a_long_sequence_robust_mode_judges_from_the_whole_fit() {
+    use orthocheck::sfm::turntable::Turntable;
+    // 40 frames, every point in 8 consecutive ones: three random frames rarely share four
+    // points, and no sample's cameras reproject half the observations
+    let t = Turntable {
+        points: 150,
+        frames: 40,
+        window: 8,
+        elevation: 30f64.to_radians(),
+        noise: Some(0.001),
+        seed: 3,
+    };
+    let (_, mut obs) = t.generate();
+    let units = Units::of(&obs).unwrap();
+    // six images moved by a third of the image's scale
+    let mut g = rng(4);
+    let seen: Vec<(usize, usize)> = obs.seen().map(|(f, j, _)| (f, j)).collect();
+    let mut moved = BTreeSet::new();
+    while moved.len() < 6 {
+        moved.insert(seen[g.random_range(0..seen.len())]);
+    }
+    for &(f, j) in &moved {
+        if let Some(y) = obs.frames[f][j].as_mut() {
+            y.x += units.scale / 3.0;
+        }
+    }
+    let robust = Options {
+        robust: Some(RansacOptions::from_data()),
+        ..Options::default()
+    };
+    let out = reconstruct(&obs, &robust).unwrap().into_single().unwrap();
+    let report = out.robust.as_ref().unwrap();
+    assert!(report.whole_fit, "{}", out.reconstruction.method[0]);
+    assert!(out.reconstruction.method[0].contains("the fit of every observation"));
+    let dropped: BTreeSet<(String, usize)> = report
+        .dropped
+        .iter()
+        .map(|d| (d.point.clone(), d.frame))
+        .collect();
+    for &(f, j) in &moved {
+        assert!(dropped.contains(&(obs.names[j].clone(), f + 1)), "{f} {j}");
+    }
+    // of the 1,194 good images, at most 1 % dropped
+    let good_dropped = dropped.len() - moved.len();
+    assert!(
+        good_dropped * 100 <= seen.len() - moved.len(),
+        "{dropped:?}"
+    );
+    assert!(
+        out.reconstruction.warnings.is_empty(),
+        "{:?}",
+        out.reconstruction.warnings
+    );
+}

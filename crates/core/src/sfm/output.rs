@@ -146,6 +146,14 @@ fn component_fields<M: SerializeMap>(m: &mut M, c: &Component) -> Result<(), M::
         m.serialize_entry("inliers", i)?;
     }
     if let Some(rb) = &c.robust {
+        m.serialize_entry(
+            "robust_start",
+            if rb.whole_fit {
+                "fit of every observation"
+            } else {
+                "sample"
+            },
+        )?;
         m.serialize_entry("inlier_frames", &InlierFrames(rb))?;
         m.serialize_entry("rejected", &rb.rejected)?;
         m.serialize_entry("threshold", &ThresholdJson(&rb.threshold))?;

@@ -18,6 +18,11 @@
 //! adjustment; that fit's residuals give the threshold again (σ now corrected for the fit's
 //! parameters) and its cameras judge every observation again, up to [`REJUDGE_ROUNDS`] times
 //! until the judgement no longer changes.
+//!
+//! On a long sequence of short tracks three random frames rarely share four points, and no
+//! sample's cameras may reproject half the observations. Where the tracks have gaps, the
+//! first judgement then comes from the pipeline's fit of every observation instead, and the
+//! rounds above narrow its threshold (docs/limits.md, "Long sequences of short tracks").
 
 use nalgebra::{Vector2, Vector3};
 use rand::Rng;
@@ -329,8 +334,25 @@ fn check_threshold(o: &RansacOptions) -> Result<(), Error> {
 pub fn ransac(obs: &Observations, o: &RansacOptions) -> Result<Sample, Error> {
     obs.check_counts()?;
     check_threshold(o)?;
-    best_sample(obs, &judge::views(obs), o)
+    best_sample(obs, &judge::views(obs), o)?.map_err(|(drawn, _)| no_sample(drawn, o))
 }
+
+/// The error of a search in which no sample gave cameras (that reproject half the
+/// observations, without a threshold).
+fn no_sample(drawn: usize, o: &RansacOptions) -> Error {
+    Error::Unreachable(format!(
+        "ransac: none of {drawn} samples of four points in three frames gave cameras{}",
+        if o.threshold.is_some() {
+            ""
+        } else {
+            " that reproject half the observations"
+        }
+    ))
+}
+
+/// What a search found: the best sample, or, when no sample gave cameras, the samples drawn
+/// and of them those by the three-point solver.
+type Search = Result<Sample, (usize, usize)>;
 
 /// The samples needed once a sample of score `s` and residuals `res` is the best: from the
 /// share of clean points its threshold (given, or from its median) counts.
@@ -346,7 +368,7 @@ fn needed_after(views: &[Images], res: &[f64], s: f64, o: &RansacOptions, floor:
 }
 
 /// [`ransac`] on the observations' images by point.
-fn best_sample(obs: &Observations, views: &[Images], o: &RansacOptions) -> Result<Sample, Error> {
+fn best_sample(obs: &Observations, views: &[Images], o: &RansacOptions) -> Result<Search, Error> {
     let (p, k) = (obs.names.len(), obs.frames.len());
     let floor = threshold::floor(Units::of(obs)?.scale, 1.0);
     let mut g = rng(o.seed);
@@ -373,14 +395,7 @@ fn best_sample(obs: &Observations, views: &[Images], o: &RansacOptions) -> Resul
         }
     }
     let Some((s, cameras)) = best else {
-        return Err(Error::Unreachable(format!(
-            "ransac: none of {drawn} samples of four points in three frames gave cameras{}",
-            if o.threshold.is_some() {
-                ""
-            } else {
-                " that reproject half the observations"
-            }
-        )));
+        return Ok(Err((drawn, triangles)));
     };
     let threshold = match o.threshold {
         Some(t) => Threshold::given(t),
@@ -388,12 +403,12 @@ fn best_sample(obs: &Observations, views: &[Images], o: &RansacOptions) -> Resul
             Error::Numerical("ransac: the best sample's median residual is not finite".into())
         })?,
     };
-    Ok(Sample {
+    Ok(Ok(Sample {
         cameras,
         threshold,
         samples: drawn,
         triangles,
-    })
+    }))
 }
 
 /// An observation robust mode dropped.
@@ -435,6 +450,55 @@ pub struct RobustReport {
     pub triangles: usize,
     /// Judgements from a fit after the sample's.
     pub rounds: usize,
+    /// Whether the first judgement came from the fit of every observation, not from a
+    /// sample: tracks with gaps where no sample's cameras reprojected half the observations
+    /// (three frames of a long sequence rarely share four points).
+    pub whole_fit: bool,
+}
+
+/// Where the first judgement came from: the best sample, or (tracks with gaps, no sample
+/// good enough) the fit of every observation; each with the samples drawn and of them those
+/// by the three-point solver.
+#[derive(Clone, Copy, Debug)]
+enum Start {
+    Sample { samples: usize, triangles: usize },
+    WholeFit { samples: usize, triangles: usize },
+}
+
+/// The first judgement of tracks with gaps where no sample's cameras reprojected half the
+/// observations: the pipeline's fit of every observation (least squares: no threshold is
+/// known yet), its residuals' threshold (or the one given), its cameras' judgement and the
+/// fit of what that judgement keeps (with the Huber loss of the threshold). Outliers pull
+/// the first fit, so its threshold is wide; the rounds of [`run`] narrow it.
+fn from_whole_fit(
+    obs: &Observations,
+    views: &[Images],
+    o: &RansacOptions,
+    size: f64,
+    (options, numbers): (&super::Options, &[usize]),
+) -> Result<(Threshold, Judgement, Fit), Error> {
+    let k = obs.frames.len();
+    let (rec, bundle) = super::fit(obs, options, None, numbers)?;
+    // every observation kept, every point in the fit's order
+    let every = Judgement {
+        inlier: obs
+            .frames
+            .iter()
+            .map(|row| row.iter().map(Option::is_some).collect())
+            .collect(),
+        kept: (0..obs.names.len()).collect(),
+        dropped: Vec::new(),
+    };
+    let whole = (obs.clone(), rec, bundle);
+    let t = match o.threshold {
+        Some(t) => Threshold::given(t),
+        None => fit_threshold(views, &whole, &every, size).ok_or_else(|| {
+            Error::Unreachable("the fit reprojects fewer than half the observations".into())
+        })?,
+    };
+    let judged = judge::judge(views, k, &cameras_of(&whole.1, k), (t.value, t.mix()));
+    let fit = fit_judged(obs, &judged, &t, (options, numbers))?;
+    Ok((t, judged, fit))
 }
 
 /// Robust mode's answer: the kept observations, their reconstruction, its bundle
@@ -573,16 +637,42 @@ pub fn run(
     obs.check_counts()?;
     check_threshold(o)?;
     let views = judge::views(obs);
-    let sample = best_sample(obs, &views, o)?;
     let (k, size) = (obs.frames.len(), Units::of(obs)?.scale);
-    let mut threshold = sample.threshold;
-    let mut judged = judge::judge(
-        &views,
-        k,
-        &sample.cameras,
-        (threshold.value, threshold.mix()),
-    );
-    let mut fit = fit_judged(obs, &judged, &threshold, (options, numbers))?;
+    let (mut threshold, mut judged, mut fit, start) = match best_sample(obs, &views, o)? {
+        Ok(sample) => {
+            let judged = judge::judge(
+                &views,
+                k,
+                &sample.cameras,
+                (sample.threshold.value, sample.threshold.mix()),
+            );
+            let fit = fit_judged(obs, &judged, &sample.threshold, (options, numbers))?;
+            let start = Start::Sample {
+                samples: sample.samples,
+                triangles: sample.triangles,
+            };
+            (sample.threshold, judged, fit, start)
+        }
+        Err((drawn, triangles)) if obs.count() < obs.names.len() * k => {
+            let (t, judged, fit) = from_whole_fit(obs, &views, o, size, (options, numbers))
+                .map_err(|e| match (e, no_sample(drawn, o)) {
+                    (Error::Unreachable(why), Error::Unreachable(none)) => Error::Unreachable(
+                        format!("{none}, and from the fit of every observation: {why}"),
+                    ),
+                    (e, _) => e,
+                })?;
+            (
+                t,
+                judged,
+                fit,
+                Start::WholeFit {
+                    samples: drawn,
+                    triangles,
+                },
+            )
+        }
+        Err((drawn, _)) => return Err(no_sample(drawn, o)),
+    };
     let (mut rounds, mut note) = (0, None);
     while rounds < REJUDGE_ROUNDS {
         rounds += 1;
@@ -616,13 +706,7 @@ pub fn run(
             }
         }
     }
-    let report = summary(
-        (obs, numbers),
-        &judged,
-        threshold,
-        (sample.samples, sample.triangles),
-        rounds,
-    );
+    let report = summary((obs, numbers), &judged, threshold, start, rounds);
     let (used, mut reconstruction, bundle) = fit;
     reconstruction
         .method
@@ -640,9 +724,13 @@ fn summary(
     (obs, numbers): (&Observations, &[usize]),
     judged: &Judgement,
     threshold: Threshold,
-    (samples, triangles): (usize, usize),
+    start: Start,
     rounds: usize,
 ) -> RobustReport {
+    let (samples, triangles, whole_fit) = match start {
+        Start::Sample { samples, triangles } => (samples, triangles, false),
+        Start::WholeFit { samples, triangles } => (samples, triangles, true),
+    };
     let mut is_kept = vec![false; obs.names.len()];
     for &j in &judged.kept {
         is_kept[j] = true;
@@ -683,27 +771,41 @@ fn summary(
         samples,
         triangles,
         rounds,
+        whole_fit,
     }
 }
 
 /// The `method` line of robust mode.
 fn method_line(r: &RobustReport, given: bool, note: Option<String>) -> String {
+    let by_three = if r.triangles > 0 {
+        format!(
+            " ({} of them by the three-point solver: three frames sharing only three points)",
+            r.triangles
+        )
+    } else {
+        String::new()
+    };
+    let first = match (r.whole_fit, given) {
+        (true, _) => format!(
+            "ransac over the four-point solver: none of {} samples{by_three} gave cameras that {} (tracks with gaps: three frames rarely share four points), so the first judgement came from the fit of every observation",
+            r.samples,
+            if given {
+                "placed any observation"
+            } else {
+                "reproject half the observations"
+            }
+        ),
+        (false, true) => format!(
+            "ransac over the four-point solver: {} samples{by_three}, the best by the most observations within the threshold",
+            r.samples
+        ),
+        (false, false) => format!(
+            "ransac over the four-point solver: {} samples{by_three}, the best by the least median residual",
+            r.samples
+        ),
+    };
     let mut s = format!(
-        "ransac over the four-point solver: {} samples{}, the best by {}; judged again from the fit {} time(s): {} of {} observations dropped beyond {} image units, {} of {} points kept",
-        r.samples,
-        if r.triangles > 0 {
-            format!(
-                " ({} of them by the three-point solver: three frames sharing only three points)",
-                r.triangles
-            )
-        } else {
-            String::new()
-        },
-        if given {
-            "the most observations within the threshold"
-        } else {
-            "the least median residual"
-        },
+        "{first}; judged again from the fit {} time(s): {} of {} observations dropped beyond {} image units, {} of {} points kept",
         r.rounds,
         r.dropped.len(),
         r.observations,
