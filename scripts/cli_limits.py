@@ -87,6 +87,10 @@ def main():
                        "--noise", "0.001", "--format", "csv")
         runs.append(("RANSAC_OBSERVATIONS (500 × 200)", ["reconstruct", "--input", robust,
                                                          "--robust"]))
+        for points, window in [(10_000, 2), (4_000, 5), (2_000, 10)]:
+            g = turntable(d, f"robust{points}w{window}.csv", points, 100, window)
+            runs.append((f"RANSAC_GAP_OBSERVATIONS ({points} points, {window} frames each of 100)",
+                         ["reconstruct", "--input", g, "--robust"]))
         tt = turntable(d, "tt100k.csv", 100_000, 100, 2)
         runs.append(("VARPRO_WORK, BUNDLE_OBSERVATIONS (100,000 points, 2 frames each of 100)",
                      ["reconstruct", "--input", tt]))

@@ -554,6 +554,8 @@ fn robust_mode_takes_its_threshold_from_the_data_and_drops_single_observations()
     // every point with at least three good images is kept; the wrong track is rejected
     let names = default_names(40);
     assert_eq!(v["rejected"], serde_json::json!(["P40"]));
+    // complete tracks: the first judgement is a sample's
+    assert_eq!(v["robust_start"], "sample");
     let kept: Vec<&str> = v["inliers"]
         .as_array()
         .unwrap()
@@ -592,6 +594,49 @@ fn robust_mode_takes_its_threshold_from_the_data_and_drops_single_observations()
         "{text}"
     );
     assert!(text.contains("rejected points (1;"), "{text}");
+}
+
+/// A long turntable of short tracks (40 frames, each point in 8): no sample explains half
+/// the observations, and the JSON says the first judgement came from the whole fit.
+#[test]
+fn robust_json_names_the_start_of_a_long_sequence() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("long.csv");
+    let args = [
+        "synth",
+        "--points",
+        "150",
+        "--frames",
+        "40",
+        "--seed",
+        "3",
+        "--turntable",
+        "--window",
+        "8",
+        "--noise",
+        "0.001",
+        "--format",
+        "csv",
+        "--out",
+    ];
+    let out = orthocheck(&[&args[..], &[file.to_str().unwrap()]].concat());
+    assert!(out.status.success());
+    let out = orthocheck(&[
+        "reconstruct",
+        "--input",
+        file.to_str().unwrap(),
+        "--robust",
+        "--json",
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(v["robust_start"], "fit of every observation");
+    let method = v["method"].as_str().unwrap();
+    assert!(method.contains("none of 10000 samples"), "{method}");
 }
 
 #[test]

@@ -132,10 +132,11 @@ pub const RANSAC_SAMPLES: usize = 10_000;
 /// has gaps): every sample intersects every point from its images, so the worst case (no
 /// good sample) costs samples × observations.
 pub const RANSAC_OBSERVATIONS: usize = 100_000;
-/// Observations of `reconstruct --robust` on tracks with gaps: each judgement is refitted
-/// by variable projection from several starts (where no sample explains half the
-/// observations, the fit of all of them comes first), up to five fits in all; 20,000 images
-/// take 9–12 s on turntables whose fits stop at their limits (docs/limits.md).
+/// Observations of `reconstruct --robust` on tracks with gaps (the input's, before tracks
+/// seen once are dropped): up to five fits of tracks with gaps (the fit of every
+/// observation where no sample explains half of them, the first judgement's, three
+/// rounds); 20,000 images take 8.9–10.8 s on turntables whose fits stop at their limits
+/// (docs/limits.md).
 pub const RANSAC_GAP_OBSERVATIONS: usize = 20_000;
 /// Points per frame of `identify --method epipolar`: every ordered choice of four frame-2
 /// points is tried, n⁴ of them; n = 40 takes about 2 s on two cores (n = 60 about 10 s).

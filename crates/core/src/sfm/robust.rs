@@ -209,28 +209,28 @@ fn triangle_cameras(
                     translation: image(f, pts[0]),
                 });
             }
-            out.push(extend_cameras(obs, views, cams));
+            out.push(extend_cameras(views, cams));
         }
     }
     out
 }
 
 /// The cameras extended to every frame that sees four points they place (each point
-/// intersected from the cameras that see it).
-fn extend_cameras(
-    obs: &Observations,
-    views: &[Images],
-    mut cams: Vec<Option<Frame>>,
-) -> Vec<Option<Frame>> {
+/// intersected from the cameras that see it). The frames' images are gathered from `views`,
+/// point by point, so the work follows the images, not the frames × points table.
+fn extend_cameras(views: &[Images], mut cams: Vec<Option<Frame>>) -> Vec<Option<Frame>> {
     let placed: Vec<Option<Vector3<f64>>> = views.iter().map(|v| intersect(&cams, v)).collect();
-    for (f, row) in obs.frames.iter().enumerate() {
+    let mut seen: Vec<Vec<(usize, Vector2<f64>)>> = vec![Vec::new(); cams.len()];
+    for (j, v) in views.iter().enumerate() {
+        for (f, y) in v {
+            if cams[*f].is_none() {
+                seen[*f].push((j, *y));
+            }
+        }
+    }
+    for (f, images) in seen.iter().enumerate() {
         if cams[f].is_none() {
-            let seen: Vec<(usize, Vector2<f64>)> = row
-                .iter()
-                .enumerate()
-                .filter_map(|(j, y)| y.map(|y| (j, y)))
-                .collect();
-            cams[f] = resect(&placed, &seen);
+            cams[f] = resect(&placed, images);
         }
     }
     cams
@@ -492,6 +492,8 @@ fn from_whole_fit(
     let whole = (obs.clone(), rec, bundle);
     let t = match o.threshold {
         Some(t) => Threshold::given(t),
+        // the fit places every point and camera, so every observation has a residual and
+        // this cannot fail; an error rather than a panic all the same
         None => fit_threshold(views, &whole, &every, size).ok_or_else(|| {
             Error::Unreachable("the fit reprojects fewer than half the observations".into())
         })?,
@@ -625,6 +627,52 @@ fn fit_threshold(views: &[Images], fit: &Fit, judged: &Judgement, size: f64) -> 
     })
 }
 
+/// The first judgement and the fit of what it keeps: from the best sample, or, on tracks
+/// with gaps where no sample gave cameras, from the fit of every observation
+/// ([`from_whole_fit`]; an error of that fit says that no sample gave cameras either).
+fn first_judgement(
+    obs: &Observations,
+    views: &[Images],
+    o: &RansacOptions,
+    size: f64,
+    (options, numbers): (&super::Options, &[usize]),
+) -> Result<(Threshold, Judgement, Fit, Start), Error> {
+    let k = obs.frames.len();
+    match best_sample(obs, views, o)? {
+        Ok(sample) => {
+            let t = sample.threshold;
+            let judged = judge::judge(views, k, &sample.cameras, (t.value, t.mix()));
+            let fit = fit_judged(obs, &judged, &t, (options, numbers))?;
+            let start = Start::Sample {
+                samples: sample.samples,
+                triangles: sample.triangles,
+            };
+            Ok((t, judged, fit, start))
+        }
+        Err((drawn, triangles)) if obs.count() < obs.names.len() * k => {
+            let (t, judged, fit) = from_whole_fit(obs, views, o, size, (options, numbers))
+                .map_err(|e| {
+                    let none = no_sample(drawn, o);
+                    let then = |why: String| {
+                        format!("{none}, and from the fit of every observation: {why}")
+                    };
+                    match e {
+                        Error::Unreachable(why) => Error::Unreachable(then(why)),
+                        Error::TooLarge(why) => Error::TooLarge(then(why)),
+                        Error::Numerical(why) => Error::Numerical(then(why)),
+                        e => e,
+                    }
+                })?;
+            let start = Start::WholeFit {
+                samples: drawn,
+                triangles,
+            };
+            Ok((t, judged, fit, start))
+        }
+        Err((drawn, _)) => Err(no_sample(drawn, o)),
+    }
+}
+
 /// RANSAC, the judgement of every observation, the fit of the kept ones, and the judgement
 /// again from the fit (see the module). `numbers`: the input's number (from 1) of each frame
 /// of `obs`, as the report and the messages name them.
@@ -638,41 +686,8 @@ pub fn run(
     check_threshold(o)?;
     let views = judge::views(obs);
     let (k, size) = (obs.frames.len(), Units::of(obs)?.scale);
-    let (mut threshold, mut judged, mut fit, start) = match best_sample(obs, &views, o)? {
-        Ok(sample) => {
-            let judged = judge::judge(
-                &views,
-                k,
-                &sample.cameras,
-                (sample.threshold.value, sample.threshold.mix()),
-            );
-            let fit = fit_judged(obs, &judged, &sample.threshold, (options, numbers))?;
-            let start = Start::Sample {
-                samples: sample.samples,
-                triangles: sample.triangles,
-            };
-            (sample.threshold, judged, fit, start)
-        }
-        Err((drawn, triangles)) if obs.count() < obs.names.len() * k => {
-            let (t, judged, fit) = from_whole_fit(obs, &views, o, size, (options, numbers))
-                .map_err(|e| match (e, no_sample(drawn, o)) {
-                    (Error::Unreachable(why), Error::Unreachable(none)) => Error::Unreachable(
-                        format!("{none}, and from the fit of every observation: {why}"),
-                    ),
-                    (e, _) => e,
-                })?;
-            (
-                t,
-                judged,
-                fit,
-                Start::WholeFit {
-                    samples: drawn,
-                    triangles,
-                },
-            )
-        }
-        Err((drawn, _)) => return Err(no_sample(drawn, o)),
-    };
+    let (mut threshold, mut judged, mut fit, start) =
+        first_judgement(obs, &views, o, size, (options, numbers))?;
     let (mut rounds, mut note) = (0, None);
     while rounds < REJUDGE_ROUNDS {
         rounds += 1;
@@ -787,12 +802,12 @@ fn method_line(r: &RobustReport, given: bool, note: Option<String>) -> String {
     };
     let first = match (r.whole_fit, given) {
         (true, _) => format!(
-            "ransac over the four-point solver: none of {} samples{by_three} gave cameras that {} (tracks with gaps: three frames rarely share four points), so the first judgement came from the fit of every observation",
+            "ransac over the four-point solver: none of {} samples{by_three} gave cameras{} (tracks with gaps: three frames rarely share four points), so the first judgement came from the fit of every observation",
             r.samples,
             if given {
-                "placed any observation"
+                ""
             } else {
-                "reproject half the observations"
+                " that reproject half the observations"
             }
         ),
         (false, true) => format!(
