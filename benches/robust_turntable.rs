@@ -81,14 +81,8 @@ fn tally(row: &mut Row, obs: &Observations, moved: &BTreeSet<(usize, usize)>, c:
 }
 
 fn main() {
-    let args: Vec<u64> = std::env::args()
-        .skip(1)
-        .filter_map(|a| a.parse().ok())
-        .collect();
-    let (scenes, seed) = (
-        args.first().copied().unwrap_or(200),
-        args.get(1).copied().unwrap_or(1),
-    );
+    let orthocheck_benches::Calibration { scenes, seed, .. } =
+        orthocheck_benches::Calibration::from_args(200);
     let mut rows: [Row; 2] = Default::default();
     let mut refused = 0usize;
     let options = Options {

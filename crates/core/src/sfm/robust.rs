@@ -456,13 +456,13 @@ pub struct RobustReport {
     pub whole_fit: bool,
 }
 
-/// Where the first judgement came from: the best sample, or (tracks with gaps, no sample
-/// good enough) the fit of every observation; each with the samples drawn and of them those
-/// by the three-point solver.
+/// The samples drawn, of them those by the three-point solver, and whether the first
+/// judgement came from the fit of every observation rather than the best sample.
 #[derive(Clone, Copy, Debug)]
-enum Start {
-    Sample { samples: usize, triangles: usize },
-    WholeFit { samples: usize, triangles: usize },
+struct Start {
+    samples: usize,
+    triangles: usize,
+    whole_fit: bool,
 }
 
 /// The first judgement of tracks with gaps where no sample's cameras reprojected half the
@@ -643,9 +643,10 @@ fn first_judgement(
             let t = sample.threshold;
             let judged = judge::judge(views, k, &sample.cameras, (t.value, t.mix()));
             let fit = fit_judged(obs, &judged, &t, (options, numbers))?;
-            let start = Start::Sample {
+            let start = Start {
                 samples: sample.samples,
                 triangles: sample.triangles,
+                whole_fit: false,
             };
             Ok((t, judged, fit, start))
         }
@@ -663,9 +664,10 @@ fn first_judgement(
                         e => e,
                     }
                 })?;
-            let start = Start::WholeFit {
+            let start = Start {
                 samples: drawn,
                 triangles,
+                whole_fit: true,
             };
             Ok((t, judged, fit, start))
         }
@@ -742,10 +744,6 @@ fn summary(
     start: Start,
     rounds: usize,
 ) -> RobustReport {
-    let (samples, triangles, whole_fit) = match start {
-        Start::Sample { samples, triangles } => (samples, triangles, false),
-        Start::WholeFit { samples, triangles } => (samples, triangles, true),
-    };
     let mut is_kept = vec![false; obs.names.len()];
     for &j in &judged.kept {
         is_kept[j] = true;
@@ -783,10 +781,10 @@ fn summary(
                 residual: d.residual,
             })
             .collect(),
-        samples,
-        triangles,
+        samples: start.samples,
+        triangles: start.triangles,
         rounds,
-        whole_fit,
+        whole_fit: start.whole_fit,
     }
 }
 
