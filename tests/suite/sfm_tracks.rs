@@ -14,6 +14,15 @@ use rand::Rng;
 
 use crate::sfm::{normal_pair, shape_error};
 
+/// The images robust mode dropped, as (point, frame counted from 1).
+fn dropped_images(report: &orthocheck::sfm::robust::RobustReport) -> BTreeSet<(String, usize)> {
+    report
+        .dropped
+        .iter()
+        .map(|d| (d.point.clone(), d.frame))
+        .collect()
+}
+
 #[test]
 fn a_turntable_sequence_ninety_percent_missing_is_reconstructed() {
     use orthocheck::sfm::turntable::Turntable;
@@ -104,11 +113,7 @@ fn robust_mode_returns_every_point_from_its_inliers_at_fifteen_percent_outlying_
     let report = out.robust.as_ref().unwrap();
     assert_eq!(report.kept.len(), p, "rejected: {:?}", report.rejected);
     // no replaced observation kept (a random point lies far beyond the threshold)
-    let dropped: BTreeSet<(String, usize)> = report
-        .dropped
-        .iter()
-        .map(|d| (d.point.clone(), d.frame))
-        .collect();
+    let dropped = dropped_images(report);
     for &(j, f) in &replaced {
         assert!(
             dropped.contains(&(clean.names[j].clone(), f + 1)),
@@ -242,11 +247,7 @@ fn where_no_sample_explains_half_a_long_sequence_robust_mode_judges_from_the_who
     let report = out.robust.as_ref().unwrap();
     assert!(report.whole_fit, "{}", out.reconstruction.method[0]);
     assert!(out.reconstruction.method[0].contains("the fit of every observation"));
-    let dropped: BTreeSet<(String, usize)> = report
-        .dropped
-        .iter()
-        .map(|d| (d.point.clone(), d.frame))
-        .collect();
+    let dropped = dropped_images(report);
     for &(f, j) in &moved {
         assert!(dropped.contains(&(obs.names[j].clone(), f + 1)), "{f} {j}");
     }
