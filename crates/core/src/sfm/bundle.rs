@@ -5,6 +5,14 @@
 //! of points and factored by a blocked Cholesky (`algebra::cholesky`). The damping is λI
 //! for the first [`PLAIN_ITERATIONS`], then λ·diag(JᵀJ).
 //!
+//! After every step, each point its views fix is moved to its least-squares position for
+//! the new cameras before the cost is compared (embedded point iterations: Jeong, Nistér,
+//! Steedly, Szeliski & Kweon, "Pushing the envelope of modern methods for bundle
+//! adjustment", 2012). Under an orthographic camera that position is exact, since a point's
+//! images are linear in it, and it costs one 3 × 3 solve per point. Where points are seen
+//! in few frames it shortens the descent along their weakly fixed depths by orders of
+//! magnitude (docs/limits.md).
+//!
 //! The gauge (a common rotation, a common 3-D shift) is fixed by holding frame 1's rotation
 //! and re-centring the points after every step (an exact change of gauge that moves no
 //! image); the shift along frame 1's viewing direction that remains is held by the damping.
@@ -20,6 +28,7 @@ use nalgebra::{
 use super::{Error, Observations, Reconstruction, Units};
 use crate::algebra::cholesky::{cholesky_lower, cholesky_solve};
 use crate::algebra::damping::Damping;
+use crate::algebra::negligible;
 
 /// Levenberg–Marquardt iterations by default: [`PLAIN_ITERATIONS`] damped by λI, the rest
 /// damped by λ·diag(JᵀJ).
@@ -66,6 +75,10 @@ pub struct BundleOptions {
     /// Iterations damped by λI before the damping is scaled by diag(JᵀJ)
     /// ([`PLAIN_ITERATIONS`]); `max_iterations` or more: λI throughout, 0: scaled throughout.
     pub plain_iterations: usize,
+    /// Whether each point is moved to its least-squares position for the cameras after
+    /// every step (embedded point iterations, see the module's documentation); `false`:
+    /// the points take their share of the step alone, as in plain Levenberg–Marquardt.
+    pub embedded_points: bool,
 }
 
 impl Default for BundleOptions {
@@ -75,6 +88,7 @@ impl Default for BundleOptions {
             huber: None,
             standard_errors: true,
             plain_iterations: PLAIN_ITERATIONS,
+            embedded_points: true,
         }
     }
 }
@@ -145,8 +159,38 @@ impl State {
         self.rows(f) * self.pts[j] + self.trans[f] - y
     }
 
-    /// The step δ applied: R·exp([δ_R]×), t + δ_t, X + δ_X, then re-centred.
-    fn step(&self, dc: &[Vec5], dp: &[Vector3<f64>]) -> State {
+    /// The step δ applied to the cameras (R·exp([δ_R]×), t + δ_t), then each point fixed by its views moved to its
+    /// least-squares position for them (weighted by Huber's weights at its residuals after
+    /// the step, so the cost of a point does not rise: the weighted quadratic touches ρ
+    /// from above there), the others by their share of the step; then re-centred.
+    fn step(
+        &self,
+        dc: &[Vec5],
+        dp: &[Vector3<f64>],
+        by_point: &ByPoint,
+        huber: Option<f64>,
+    ) -> State {
+        let mut s = self.moved(dc, dp);
+        for (j, list) in by_point.iter().enumerate() {
+            let mut v = Matrix3::zeros();
+            let mut b = Vector3::zeros();
+            for (f, y) in list {
+                let c = s.rows(*f);
+                let w = weight(s.residual(*f, j, y).norm_squared(), huber);
+                v += c.transpose() * c * w;
+                b += c.transpose() * (y - s.trans[*f]) * w;
+            }
+            if fixes(&v)
+                && let Some(x) = v.cholesky().map(|ch| ch.solve(&b))
+            {
+                s.pts[j] = x;
+            }
+        }
+        s.recentred()
+    }
+
+    /// The step δ applied: R·exp([δ_R]×), t + δ_t, X + δ_X.
+    fn moved(&self, dc: &[Vec5], dp: &[Vector3<f64>]) -> State {
         let mut s = self.clone();
         for (f, d) in dc.iter().enumerate() {
             let w = Vector3::new(d[0], d[1], d[2]);
@@ -156,15 +200,21 @@ impl State {
         for (x, d) in s.pts.iter_mut().zip(dp) {
             *x += d;
         }
-        let c = s.pts.iter().sum::<Vector3<f64>>() / s.pts.len().max(1) as f64;
-        for x in &mut s.pts {
+        s
+    }
+
+    /// The points' centroid moved to the origin, the translations compensating: an exact
+    /// change of gauge that moves no image.
+    fn recentred(mut self) -> State {
+        let c = self.pts.iter().sum::<Vector3<f64>>() / self.pts.len().max(1) as f64;
+        for x in &mut self.pts {
             *x -= c;
         }
-        let shifts: Vec<Vector2<f64>> = (0..s.rot.len()).map(|f| s.rows(f) * c).collect();
-        for (t, shift) in s.trans.iter_mut().zip(shifts) {
+        let shifts: Vec<Vector2<f64>> = (0..self.rot.len()).map(|f| self.rows(f) * c).collect();
+        for (t, shift) in self.trans.iter_mut().zip(shifts) {
             *t += shift;
         }
-        s
+        self
     }
 
     fn norm(&self) -> f64 {
@@ -176,6 +226,14 @@ impl State {
 
 /// Observations grouped by point: (frame, image).
 type ByPoint = Vec<Vec<(usize, Vector2<f64>)>>;
+
+/// Whether a point's normal block V = Σ w CᵀC fixes it: its smallest eigenvalue is not
+/// within rounding of its largest (V sums 2 × 3 products of unit rows: its entries round to
+/// about ε times their size, as in `gaps::intersect`).
+fn fixes(v: &Matrix3<f64>) -> bool {
+    let e = v.symmetric_eigenvalues();
+    !negligible(e.min(), e.max() * 3.0)
+}
 
 /// Σ ρ(‖r‖): ρ(s) = s²/2 (least squares), or Huber's s²/2 within the corner k and
 /// k s − k²/2 beyond it.
@@ -271,6 +329,12 @@ struct PointTerms {
     z: Vec<Mat5x3>,
 }
 
+/// A damped step: the cameras' and the points' shares.
+struct Step {
+    dc: Vec<Vec5>,
+    dp: Vec<Vector3<f64>>,
+}
+
 /// The damping's shape on a block `m` of JᵀJ (a camera's 5 × 5 or a point's 3 × 3): I, or
 /// its diagonal within [`SCALED_DIAGONAL`] when `scaled`.
 fn shape<const N: usize>(m: &SMatrix<f64, N, N>, scaled: bool) -> SMatrix<f64, N, N> {
@@ -287,12 +351,7 @@ fn shape<const N: usize>(m: &SMatrix<f64, N, N>, scaled: bool) -> SMatrix<f64, N
 /// The damped step: (JᵀJ + λD) δ = −Jᵀr (D = I, or diag(JᵀJ) when `scaled`) by the Schur
 /// complement on the point blocks; the camera system's lower triangle is accumulated and
 /// factored by a blocked Cholesky.
-fn solve(
-    n: &Normal,
-    by_point: &ByPoint,
-    lambda: f64,
-    scaled: bool,
-) -> Option<(Vec<Vec5>, Vec<Vector3<f64>>)> {
+fn solve(n: &Normal, by_point: &ByPoint, lambda: f64, scaled: bool) -> Option<Step> {
     let k = n.u.len();
     let mut s = DMatrix::<f64>::zeros(5 * k, 5 * k);
     let mut rhs = DVector::<f64>::zeros(5 * k);
@@ -336,7 +395,7 @@ fn solve(
             t.m.transpose() * (t.m * g)
         })
         .collect();
-    Some((dc, dp))
+    Some(Step { dc, dp })
 }
 
 /// S −= Σ Z Zᵀ over a chunk of points, into S's lower triangle (image lists in frame order):
@@ -399,14 +458,16 @@ fn subtract_chunk(
 }
 
 /// The reduction the damped model predicts: ½ δᵀ(λDδ − g), D the damping's shape.
-fn predicted(n: &Normal, dc: &[Vec5], dp: &[Vector3<f64>], lambda: f64, scaled: bool) -> f64 {
-    let c: f64 = dc
+fn predicted(n: &Normal, st: &Step, lambda: f64, scaled: bool) -> f64 {
+    let c: f64 = st
+        .dc
         .iter()
         .zip(&n.gc)
         .zip(&n.u)
         .map(|((d, g), u)| d.dot(&(shape(u, scaled) * d * lambda - g)))
         .sum();
-    let p: f64 = dp
+    let p: f64 = st
+        .dp
         .iter()
         .zip(&n.gp)
         .zip(&n.v)
@@ -484,7 +545,12 @@ pub fn bundle_adjust(
     rec.points = state.pts;
     units.back(&mut rec);
     rec.method.push(format!(
-        "bundle adjustment (levenberg-marquardt, schur complement{}): {} iterations{}{}",
+        "bundle adjustment (levenberg-marquardt, schur complement{}{}): {} iterations{}{}",
+        if options.embedded_points {
+            ", points re-solved after each step"
+        } else {
+            ""
+        },
         options.huber.map_or(String::new(), |k| format!(
             ", huber loss with its corner at {} image units, by reweighting",
             crate::numfmt::sig(k)
@@ -528,16 +594,19 @@ fn trial(
     state: &State,
     c: f64,
     damping: &mut Damping,
-    huber: Option<f64>,
-    scaled: bool,
+    rule: Rule,
 ) -> Option<(State, f64, f64)> {
     for _ in 0..MAX_REJECTIONS {
-        if let Some((dc, dp)) = solve(n, by_point, damping.lambda, scaled) {
-            let next = state.step(&dc, &dp);
-            let nc = cost(by_point, &next, huber);
-            let pred = predicted(n, &dc, &dp, damping.lambda, scaled);
-            let step = (dc.iter().map(|d| d.norm_squared()).sum::<f64>()
-                + dp.iter().map(|d| d.norm_squared()).sum::<f64>())
+        if let Some(st) = solve(n, by_point, damping.lambda, rule.scaled) {
+            let next = if rule.embedded {
+                state.step(&st.dc, &st.dp, by_point, rule.huber)
+            } else {
+                state.moved(&st.dc, &st.dp).recentred()
+            };
+            let nc = cost(by_point, &next, rule.huber);
+            let pred = predicted(n, &st, damping.lambda, rule.scaled);
+            let step = (st.dc.iter().map(|d| d.norm_squared()).sum::<f64>()
+                + st.dp.iter().map(|d| d.norm_squared()).sum::<f64>())
             .sqrt();
             if nc.is_finite() && nc < c && pred > 0.0 {
                 damping.accepted((c - nc) / pred);
@@ -550,6 +619,15 @@ fn trial(
         damping.rejected();
     }
     None
+}
+
+/// How a phase of the loop steps: Huber's corner (unit coordinates), the damping's shape
+/// (λ·diag(JᵀJ) when `scaled`, else λI) and whether points are re-solved after each step.
+#[derive(Clone, Copy)]
+struct Rule {
+    huber: Option<f64>,
+    scaled: bool,
+    embedded: bool,
 }
 
 /// The damped Gauss–Newton loop: damped by λI for at most `plain_iterations`, then by
@@ -571,13 +649,19 @@ fn levenberg_marquardt(
         points_std: None,
     };
     let plain = max_iterations.min(options.plain_iterations);
+    let mut rule = Rule {
+        huber,
+        scaled: false,
+        embedded: options.embedded_points,
+    };
     if plain > 0 {
-        state = descend(by_point, state, &mut report, plain, huber, false);
+        state = descend(by_point, state, &mut report, plain, rule);
     }
     let left = report.costs.last().is_some_and(|&c| c > 0.0);
     if !report.converged && left && report.iterations < max_iterations {
         report.scaled_after = Some(report.iterations);
-        state = descend(by_point, state, &mut report, max_iterations, huber, true);
+        rule.scaled = true;
+        state = descend(by_point, state, &mut report, max_iterations, rule);
     }
     let c = report.costs.last().copied().unwrap_or(f64::NAN);
     if c == 0.0 {
@@ -593,20 +677,20 @@ fn levenberg_marquardt(
 
 /// Damped steps from `state` (the cost is the report's last) until none lowers the cost
 /// beyond rounding or the report counts `until` iterations; damped by λI from 10⁻³ of the
-/// largest diagonal entry of JᵀJ, or when `scaled` by λ·diag(JᵀJ) from [`SCALED_START`].
+/// largest diagonal entry of JᵀJ, or when the rule is `scaled` by λ·diag(JᵀJ) from
+/// [`SCALED_START`].
 fn descend(
     by_point: &ByPoint,
     mut state: State,
     report: &mut BundleReport,
     until: usize,
-    huber: Option<f64>,
-    scaled: bool,
+    rule: Rule,
 ) -> State {
     let mut c = report.costs.last().copied().unwrap_or(f64::NAN);
-    let mut damping = if scaled {
+    let mut damping = if rule.scaled {
         Damping::with_lambda(SCALED_START)
     } else {
-        let first = normal(by_point, &state, huber);
+        let first = normal(by_point, &state, rule.huber);
         let diag = first
             .u
             .iter()
@@ -615,9 +699,8 @@ fn descend(
         Damping::from_diagonal_max(diag.fold(f64::MIN_POSITIVE, f64::max))
     };
     while report.iterations < until && c > 0.0 {
-        let n = normal(by_point, &state, huber);
-        let Some((next, nc, step)) = trial(&n, by_point, &state, c, &mut damping, huber, scaled)
-        else {
+        let n = normal(by_point, &state, rule.huber);
+        let Some((next, nc, step)) = trial(&n, by_point, &state, c, &mut damping, rule) else {
             report.converged = true;
             break;
         };
