@@ -243,7 +243,7 @@ fn fixes(v: &Matrix3<f64>) -> bool {
     // threshold, the eigenvalues (a third of the adjustment's time on 100,000 points) would
     // only confirm it.
     let tr = v.trace();
-    if !(tr > 0.0) {
+    if tr.is_nan() || tr <= 0.0 {
         return false;
     }
     let bound = 2.0 * v.determinant() / (tr * tr);
