@@ -8,7 +8,7 @@
 use nalgebra::{Matrix2x3, Matrix3, Vector2, Vector3};
 
 use super::{Error, Frame, Observations, Reconstruction, Units, MIN_FRAMES, MIN_POINTS};
-use crate::algebra::{complete_rotation, negligible, orthonormal_rows};
+use crate::algebra::{complete_rotation, orthonormal_rows, psd3_nonsingular};
 
 /// The frames and points (indices, ascending) of a complete block, chosen greedily.
 pub fn largest_complete_block(obs: &Observations) -> (Vec<usize>, Vec<usize>) {
@@ -78,9 +78,8 @@ pub fn intersect(frames: &[Option<Frame>], seen: &[(usize, Vector2<f64>)]) -> Op
             g += c.transpose() * (y - fr.translation);
         }
     }
-    let e = h.symmetric_eigenvalues();
     // h sums 2 × 3 products of unit rows: its entries round to about ε · (views)
-    if negligible(e.min(), e.max() * 3.0) {
+    if !psd3_nonsingular(&h, 3.0) {
         return None;
     }
     h.cholesky().map(|c| c.solve(&g))
@@ -106,8 +105,7 @@ pub fn resect(points: &[Option<Vector3<f64>>], seen: &[(usize, Vector2<f64>)]) -
         xx += (x - xm) * (x - xm).transpose();
         yx += (y - ym) * (x - xm).transpose();
     }
-    let e = xx.symmetric_eigenvalues();
-    if negligible(e.min(), e.max() * n) {
+    if !psd3_nonsingular(&xx, n) {
         return None;
     }
     let a = yx * xx.try_inverse()?;

@@ -78,7 +78,7 @@ fn two_frame_tracks() -> (Observations, Reconstruction) {
 
 #[test]
 fn the_scaled_damping_moves_points_seen_in_few_frames() {
-    // λI, sized by the largest curvature, holds the depths almost still
+    // λI, sized by the largest curvature, moves the weakly fixed depths slowly
     let (obs, start) = two_frame_tracks();
     let both = BundleOptions {
         standard_errors: false,
