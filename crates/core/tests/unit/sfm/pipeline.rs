@@ -76,19 +76,28 @@ fn two_frame_tracks() -> (Observations, Reconstruction) {
     (obs, start)
 }
 
+/// The adjustment alone, without the standard errors.
+fn loop_only() -> BundleOptions {
+    BundleOptions {
+        standard_errors: false,
+        ..BundleOptions::default()
+    }
+}
+
+/// `o` damped by λI throughout.
+fn plain(o: &BundleOptions) -> BundleOptions {
+    BundleOptions {
+        plain_iterations: o.max_iterations,
+        ..*o
+    }
+}
+
 #[test]
 fn the_scaled_damping_moves_points_seen_in_few_frames() {
     // λI, sized by the largest curvature, moves the weakly fixed depths slowly
     let (obs, start) = two_frame_tracks();
-    let both = BundleOptions {
-        standard_errors: false,
-        ..BundleOptions::default()
-    };
-    let plain = BundleOptions {
-        plain_iterations: both.max_iterations,
-        ..both
-    };
-    let a = bundle_adjust(&obs, &start, &plain).unwrap().report;
+    let both = loop_only();
+    let a = bundle_adjust(&obs, &start, &plain(&both)).unwrap().report;
     let b = bundle_adjust(&obs, &start, &both).unwrap().report;
     assert_eq!(
         (a.iterations, a.converged, a.scaled_after),
@@ -106,10 +115,7 @@ fn the_scaled_damping_moves_points_seen_in_few_frames() {
 #[test]
 fn points_re_solved_after_each_step_descend_where_their_depths_are_weakly_fixed() {
     let (obs, start) = two_frame_tracks();
-    let with = BundleOptions {
-        standard_errors: false,
-        ..BundleOptions::default()
-    };
+    let with = loop_only();
     let without = BundleOptions {
         embedded_points: false,
         ..with
@@ -121,10 +127,6 @@ fn points_re_solved_after_each_step_descend_where_their_depths_are_weakly_fixed(
     // damped by λI alone for 200 iterations: 0.624 without, 2.13 × 10⁻³ with (290 times
     // lower); the default damping: 1.05 × 10⁻³ without, 3.55 × 10⁻⁴ with. Asked: 100 times
     // and 2 times
-    let plain = |o: &BundleOptions| BundleOptions {
-        plain_iterations: o.max_iterations,
-        ..*o
-    };
     let (pw, po) = (end(&plain(&with)), end(&plain(&without)));
     assert!(pw * 100.0 < po, "{pw} against {po}");
     let (dw, dn) = (end(&with), end(&without));
