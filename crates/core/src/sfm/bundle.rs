@@ -183,7 +183,9 @@ impl State {
                 v += squares[*f] * w;
                 b += c.transpose() * (y - s.trans[*f]) * w;
             }
-            if fixes(&v)
+            // V sums 2 × 3 products of unit rows: its entries round to about ε times their
+            // size (as in `gaps::intersect`)
+            if psd3_nonsingular(&v, 3.0)
                 && let Some(x) = v.cholesky().map(|ch| ch.solve(&b))
             {
                 s.pts[j] = x;
@@ -229,12 +231,6 @@ impl State {
 
 /// Observations grouped by point: (frame, image).
 type ByPoint = Vec<Vec<(usize, Vector2<f64>)>>;
-
-/// Whether a point's normal block V = Σ w CᵀC fixes it: V sums 2 × 3 products of unit
-/// rows, so its entries round to about ε times their size, as in `gaps::intersect`.
-fn fixes(v: &Matrix3<f64>) -> bool {
-    psd3_nonsingular(v, 3.0)
-}
 
 /// Σ ρ(‖r‖): ρ(s) = s²/2 (least squares), or Huber's s²/2 within the corner k and
 /// k s − k²/2 beyond it.
