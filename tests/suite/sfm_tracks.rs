@@ -57,7 +57,7 @@ fn a_turntable_sequence_ninety_percent_missing_is_reconstructed() {
     assert!(method.contains("metric upgrade") && method.contains("bundle adjustment"));
     // a clean first fit is checked against the other starts too, and kept when none is lower
     assert!(
-        method.ends_with("tracks with gaps: of 9 starts, the one of least final cost (2.55534e-5) kept: the first"),
+        method.ends_with("tracks with gaps: of 10 starts, the one of least final cost (2.55534e-5) kept: the first"),
         "{method}"
     );
     assert!(

@@ -37,7 +37,7 @@ pub use newton::{min_norm_newton, min_norm_newton_step, min_norm_newton_with};
 pub use parse::parse_decimal;
 pub use perm::{permutations, permutations4};
 pub use poly::{Monomial, Poly};
-pub use procrustes::{complete_rotation, kabsch, orthonormal_rows};
+pub use procrustes::{complete_rotation, kabsch, nearest_rotation, orthonormal_rows};
 pub use rank::{exact_rank, exact_solve, svd_rank, svd_rank_above, ExactRankMethod, SvdRank};
 pub use ratfn::{determinant, solve_linear, solve_linear_fraction_free, RatFn};
 pub use sturm::{RealRoot, UPoly};

@@ -17,13 +17,18 @@ use nalgebra::{Matrix2x3, Matrix3, Rotation3, Vector3};
 /// ```
 pub fn kabsch(from: &[Vector3<f64>], to: &[Vector3<f64>]) -> Rotation3<f64> {
     let h: Matrix3<f64> = from.iter().zip(to).map(|(f, t)| t * f.transpose()).sum();
-    let svd = h.svd(true, true);
+    Rotation3::from_matrix_unchecked(nearest_rotation(&h))
+}
+
+/// The proper rotation nearest `m` in the Frobenius norm: its polar factor U Vᵀ, the last
+/// singular direction reversed when that has determinant −1. The identity when the SVD fails.
+pub fn nearest_rotation(m: &Matrix3<f64>) -> Matrix3<f64> {
+    let svd = m.svd(true, true);
     let (Some(u), Some(vt)) = (svd.u, svd.v_t) else {
-        return Rotation3::identity();
+        return Matrix3::identity();
     };
     let d = (u * vt).determinant().signum();
-    let fix = Matrix3::from_diagonal(&Vector3::new(1.0, 1.0, d));
-    Rotation3::from_matrix_unchecked(u * fix * vt)
+    u * Matrix3::from_diagonal(&Vector3::new(1.0, 1.0, d)) * vt
 }
 
 /// The 2×3 matrix with orthonormal rows nearest `a` in the Frobenius norm (its polar factor

@@ -4,10 +4,12 @@
 //! a wrong basin with nothing in it to warn of (docs/limits.md). So for every fit of tracks
 //! with gaps, the chain is started again from other frames, forwards and backwards
 //! ([`CHAIN_STARTS`]; where most entries are missing, as variable projection needs; a chain
-//! that fails falls back on the largest complete block grown in its order), and from the
-//! largest complete block; each is adjusted briefly ([`SCREEN_ITERATIONS`]), the best
-//! [`FINISHED`] are adjusted in full, and the fit of least cost, theirs or the first's, is
-//! kept with its own warnings; a warning when only one of those fits reached that cost.
+//! that fails falls back on the largest complete block grown in its order), from the
+//! largest complete block, and from random rotations ([`rotations`]: of every frame in a
+//! small group, window by window in a larger one); each is adjusted briefly
+//! ([`SCREEN_ITERATIONS`]), the best [`FINISHED`] are adjusted in full, and the fit of least
+//! cost, theirs or the first's, is kept with its own warnings; a warning when only one of
+//! those fits reached that cost.
 
 use rayon::prelude::*;
 
@@ -15,6 +17,10 @@ use super::{adjust, fit, uneven_warning, with_gaps};
 use crate::numfmt::sig;
 use crate::sfm::bundle::BundleOptions;
 use crate::sfm::{BundleReport, Error, Observations, Options, Reconstruction};
+
+mod rotations;
+
+pub use rotations::{ROTATION_FRAMES, ROTATION_STARTS, WINDOW_FRAMES};
 
 /// Iterations each other start is adjusted for before the best is chosen; the chosen one
 /// then goes on to the full adjustment (with its standard errors).
@@ -59,32 +65,49 @@ pub(super) fn best_fit(
     if !least.is_finite() {
         return first;
     }
-    // the earliest fit at the least cost within AGREE (the first before the others): the
-    // same optimum reached again by another start does not replace the first fit
-    let Some(best) = fits
-        .iter()
-        .position(|f| cost(&f.0) <= least * (1.0 + AGREE))
-    else {
+    // the earliest fit at the least cost (the first before the others): the same optimum
+    // reached again by another start does not replace the first fit
+    let at_least = |c: f64| c <= least * (1.0 + AGREE) + rounding(used);
+    let Some(best) = fits.iter().position(|f| at_least(cost(&f.0))) else {
         return first;
     };
-    let reached = fits
+    let reached: Vec<&str> = fits
         .iter()
-        .filter(|f| cost(&f.0) <= least * (1.0 + AGREE))
-        .count();
+        .filter(|f| at_least(cost(&f.0)))
+        .map(|f| f.1.as_str())
+        .collect();
+    let unconfirmed = unconfirmed(&reached, fits.len(), least, tried);
     let ((mut rec, b), name) = fits.swap_remove(best);
     rec.method.push(format!(
         "tracks with gaps: of {tried} starts, the one of least final cost ({}) kept: {name}",
         sig(least)
     ));
-    if reached < 2 {
-        rec.warnings.push(format!(
-            "of the {} fits finished from {tried} starts only one reached the least cost ({}): a lower optimum may exist",
-            fits.len() + 1,
-            sig(least)
-        ));
-    }
+    rec.warnings.extend(unconfirmed);
     Ok((rec, b))
 }
+
+/// The warning when the least cost is not confirmed by two kinds of start (`reached`: the
+/// names of the fits that reached it, of `finished`): one fit alone reached it, or random
+/// rotations alone (many draws of one kind of start can all fall into
+/// the same wrong basin; measured on uniform windows of three frames, docs/limits.md).
+fn unconfirmed(reached: &[&str], finished: usize, least: f64, tried: usize) -> Option<String> {
+    let random = |name: &&str| name.starts_with(RANDOM_NAME);
+    let least = sig(least);
+    if reached.len() < 2 {
+        Some(format!(
+            "of the {finished} fits finished from {tried} starts only one reached the least cost ({least}): a lower optimum may exist"
+        ))
+    } else if reached.iter().all(random) {
+        Some(format!(
+            "of the {finished} fits finished from {tried} starts only those from random rotations reached the least cost ({least}): a lower optimum may exist"
+        ))
+    } else {
+        None
+    }
+}
+
+/// The name of the starts from random rotations, each followed by its number.
+const RANDOM_NAME: &str = "random rotations";
 
 /// Fits finished in full from the other starts, the best by their screening's cost.
 pub const FINISHED: usize = 2;
@@ -121,6 +144,15 @@ fn finish(
 /// turntable family differ by factors, far beyond it.
 const AGREE: f64 = 1e-6;
 
+/// The cost's rounding floor at an exact fit: each residual y − (C x + t) is computed to
+/// within a few ε of the coordinates' magnitude s (the largest), so ½ Σ (4ε s)² over every
+/// coordinate observed. Costs within it of the least are at the least (exact data).
+fn rounding(used: &Observations) -> f64 {
+    let s = used.seen().map(|(_, _, y)| y.amax()).fold(0.0, f64::max);
+    let coordinates = 2 * used.count();
+    0.5 * coordinates as f64 * (4.0 * f64::EPSILON * s).powi(2)
+}
+
 /// The other starts ([`orders`], the largest complete block), each adjusted for
 /// [`SCREEN_ITERATIONS`] on every core, by cost (the earlier start on a tie); those that
 /// fail are left out.
@@ -146,17 +178,36 @@ fn screen_starts(
         .map(|(name, order)| (name, Some(order)))
         .collect();
     starts.push(("the largest complete block".to_string(), None));
-    let tried = 1 + starts.len();
     let mut screened: Vec<(Fitted, String)> = starts
-        .into_par_iter()
-        .filter_map(|(name, order)| match &order {
-            Some(order) => from_order(used, options, numbers, (&name, order), &screen),
-            None => from_block(used, numbers, &screen).map(|f| (f, name)),
+        .par_iter()
+        .filter_map(|(name, order)| match order {
+            Some(order) => from_order(used, options, numbers, (name, order), &screen),
+            None => from_block(used, numbers, &screen).map(|f| (f, name.clone())),
         })
         .collect();
+    let (global, searched) = search(used, options.seed, &screen);
+    screened.extend(global);
+    let tried = 1 + starts.len() + searched;
     // a stable sort: the earlier start first on a tie
     screened.sort_by(|a, b| cost(&a.0).total_cmp(&cost(&b.0)));
     (screened, tried)
+}
+
+/// The global search of [`rotations`]: a group of at most [`ROTATION_FRAMES`] frames from
+/// [`ROTATION_STARTS`] random rotations, each named by its seed's place; a larger one from
+/// windows of [`WINDOW_FRAMES`] chained. With the number of starts it counts.
+fn search(used: &Observations, seed: u64, bo: &BundleOptions) -> (Vec<(Fitted, String)>, usize) {
+    if used.frames.len() <= ROTATION_FRAMES {
+        let fits = rotations::random_fits(used, seed, bo);
+        let named = fits
+            .into_iter()
+            .map(|(i, f)| (f, format!("{RANDOM_NAME} {} of {ROTATION_STARTS}", i + 1)))
+            .collect();
+        return (named, ROTATION_STARTS);
+    }
+    let chained = rotations::windowed(used, seed, bo).and_then(|rec| screened(used, rec, bo));
+    let name = format!("windows of {WINDOW_FRAMES} frames from random rotations, chained");
+    (chained.map(|f| (f, name)).into_iter().collect(), 1)
 }
 
 /// The adjustment's final cost (½ Σ ‖r‖²); infinite without one.
