@@ -16,18 +16,26 @@ use crate::sfm::{Frame, Observations, Reconstruction};
 
 /// Groups of at most this many frames are started from random rotations of every frame;
 /// larger ones window by window. Measured on the turntable family (docs/limits.md): random
-/// starts reached the optimum in 6 of 11 missed scenes whose groups have 9–13 frames, and
-/// in few of those with more.
+/// starts reached the optimum in 6 of 11 missed scenes whose groups have 7–13 frames, and
+/// in few of those with larger groups.
 pub const ROTATION_FRAMES: usize = 13;
 
 /// Random starts of a group, and of each window ([`windowed`]), each screened by the short
-/// adjustment; the one of least cost is kept. 24 starts reached the optimum in 1 of 11 missed
-/// scenes with groups of 7–13 frames, 64 in 6 (docs/limits.md).
+/// adjustment (a group's best go on to the full adjustment with the other starts; a window
+/// keeps its best). Of 11 scenes of the turntable family missed in groups of 7–13 frames,
+/// 24 starts reached the optimum in 2, 64 in 6 (docs/limits.md).
 pub const ROTATION_STARTS: usize = 64;
 
 /// Frames in a window of [`windowed`]; consecutive windows share half of them. Windows of 4,
-/// 6, 8 and 10 frames reached the optimum in about as many of the family's missed scenes.
+/// 6, 8 and 10 frames each reached the optimum in 6 of the 34 scenes the family's first seed
+/// missed in groups of 7 frames or more (docs/limits.md).
 pub const WINDOW_FRAMES: usize = 6;
+
+/// Points a window's random starts use at most: only its rotations are chained, and a few
+/// dozen points seen in several of its frames fix them; the search's work then does not grow
+/// with the points (a sequence of the Oxford dinosaur's size took 5.0 s with every point,
+/// 0.78 s before the windows; docs/limits.md).
+pub const WINDOW_POINTS: usize = 60;
 
 /// Seeds of the windows' starts are offset by this from the group's, so that the two
 /// searches draw different rotations.
@@ -83,17 +91,20 @@ pub(super) fn windowed(
     place(used, &rotations?)
 }
 
-/// The best random start of the frames `frames` and the points they see at least twice.
+/// The best random start of the frames `frames` and the points they see at least twice (at
+/// most [`WINDOW_POINTS`]: those seen in the most of its frames, the earlier on a tie).
 fn window(used: &Observations, frames: &[usize], seed: u64, bo: &BundleOptions) -> Option<Fitted> {
-    let keep: Vec<usize> = (0..used.names.len())
-        .filter(|&j| {
-            frames
-                .iter()
-                .filter(|&&f| used.frames[f][j].is_some())
-                .count()
-                >= 2
-        })
-        .collect();
+    let views = |j: usize| {
+        frames
+            .iter()
+            .filter(|&&f| used.frames[f][j].is_some())
+            .count()
+    };
+    let mut keep: Vec<usize> = (0..used.names.len()).filter(|&j| views(j) >= 2).collect();
+    // a stable sort: the earlier point first on a tie
+    keep.sort_by_key(|&j| std::cmp::Reverse(views(j)));
+    keep.truncate(WINDOW_POINTS);
+    keep.sort_unstable();
     if keep.len() < crate::sfm::MIN_POINTS {
         return None;
     }
