@@ -9,7 +9,7 @@
 //! small group, window by window in a larger one); each is adjusted briefly
 //! ([`SCREEN_ITERATIONS`]), the best [`FINISHED`] are adjusted in full, and the fit of least
 //! cost, theirs or the first's, is kept with its own warnings; a warning when only one of
-//! those fits reached that cost.
+//! those fits reached that cost, or only fits from random rotations ([`unconfirmed`]).
 
 use rayon::prelude::*;
 
@@ -30,7 +30,7 @@ pub const SCREEN_ITERATIONS: usize = 20;
 type Fitted = (Reconstruction, Option<BundleReport>);
 
 /// The first fit ([`fit`], with the uneven-frames check); on tracks with gaps, the best of
-/// it and the other starts ([`orders`] and the largest complete block) by the adjustment's
+/// it and the other starts ([`orders`], the largest complete block, [`search`]) by the adjustment's
 /// final cost. Errors other than an unreachable part or a numerical failure (too large,
 /// degenerate) are returned as they are.
 pub(super) fn best_fit(
@@ -67,13 +67,13 @@ pub(super) fn best_fit(
     }
     // the earliest fit at the least cost (the first before the others): the same optimum
     // reached again by another start does not replace the first fit
-    let at_least = |c: f64| c <= least * (1.0 + AGREE) + rounding(used);
-    let Some(best) = fits.iter().position(|f| at_least(cost(&f.0))) else {
+    let at_least_cost = |c: f64| c <= least * (1.0 + AGREE) + rounding(used);
+    let Some(best) = fits.iter().position(|f| at_least_cost(cost(&f.0))) else {
         return first;
     };
     let reached: Vec<&str> = fits
         .iter()
-        .filter(|f| at_least(cost(&f.0)))
+        .filter(|f| at_least_cost(cost(&f.0)))
         .map(|f| f.1.as_str())
         .collect();
     let unconfirmed = unconfirmed(&reached, fits.len(), least, tried);
@@ -86,9 +86,9 @@ pub(super) fn best_fit(
     Ok((rec, b))
 }
 
-/// The warning when the least cost is not confirmed by two kinds of start (`reached`: the
-/// names of the fits that reached it, of `finished`): one fit alone reached it, or random
-/// rotations alone (many draws of one kind of start can all fall into
+/// The warning when the least cost is not confirmed (`reached`: the names of the fits that
+/// reached it, of `finished`): one fit alone reached it, or only random starts of a whole
+/// group (the chained windows count as a start of their own) (many draws of one kind of start can all fall into
 /// the same wrong basin; measured on uniform windows of three frames, docs/limits.md).
 fn unconfirmed(reached: &[&str], finished: usize, least: f64, tried: usize) -> Option<String> {
     let random = |name: &&str| name.starts_with(RANDOM_NAME);
@@ -145,15 +145,16 @@ fn finish(
 const AGREE: f64 = 1e-6;
 
 /// The cost's rounding floor at an exact fit: each residual y − (C x + t) is computed to
-/// within a few ε of the coordinates' magnitude s (the largest), so ½ Σ (4ε s)² over every
-/// coordinate observed. Costs within it of the least are at the least (exact data).
+/// within a few ε of the coordinates' magnitude, at most s (the largest; an upper bound,
+/// since the adjustment works in centred units), so ½ Σ (4ε s)² over every coordinate
+/// observed. Costs within it of the least are at the least (exact data).
 fn rounding(used: &Observations) -> f64 {
     let s = used.seen().map(|(_, _, y)| y.amax()).fold(0.0, f64::max);
     let coordinates = 2 * used.count();
     0.5 * coordinates as f64 * (4.0 * f64::EPSILON * s).powi(2)
 }
 
-/// The other starts ([`orders`], the largest complete block), each adjusted for
+/// The other starts ([`orders`], the largest complete block, [`search`]), each adjusted for
 /// [`SCREEN_ITERATIONS`] on every core, by cost (the earlier start on a tie); those that
 /// fail are left out.
 fn screen_starts(

@@ -1,8 +1,8 @@
 //! Starts from seeded random rotations. Where the frames' tracks are short, the chain of frame
 //! pairs and the largest complete block can both start in a wrong basin (docs/limits.md);
 //! a group of few frames is small enough to search globally instead: [`ROTATION_STARTS`]
-//! random rotations of every frame, the points and translations placed by least squares
-//! for them. A larger group is searched window by window ([`windowed`]), the windows chained
+//! random rotations of every frame, the points and translations placed for them
+//! ([`place`]). A larger group is searched window by window ([`windowed`]), the windows chained
 //! through the frames they share.
 
 use nalgebra::{Matrix3, Vector2, Vector3};
@@ -34,11 +34,12 @@ pub const WINDOW_FRAMES: usize = 6;
 /// Points a window's random starts use at most: only its rotations are chained, and a few
 /// dozen points seen in several of its frames fix them; the search's work then does not grow
 /// with the points (a sequence of the Oxford dinosaur's size took 5.0 s with every point,
-/// 0.78 s before the windows; docs/limits.md).
+/// 0.76–0.89 s before the random starts, 0.96–1.19 s with the cap; docs/limits.md).
 pub const WINDOW_POINTS: usize = 60;
 
-/// Seeds of the windows' starts are offset by this from the group's, so that the two
-/// searches draw different rotations.
+/// The offset of the windows' seeds from the group's (every window draws the same 64
+/// sets of rotations; the random starts of a whole group and the windows never run on the
+/// same group).
 const WINDOW_SEED: u64 = 1000;
 
 /// [`ROTATION_STARTS`] starts from random rotations (seeds `seed`, `seed` + 1, …), each placed
@@ -67,7 +68,8 @@ pub(super) fn random_fits(
 /// its random starts ([`random_fits`] of the points it sees twice), chained: each window turned
 /// onto the rotations of the frames it shares with those before it (it or its mirror twin,
 /// whichever agrees better), then the points and translations placed for every frame's
-/// rotation. `None` when a frame is left without a window's rotation.
+/// rotation. `None` when a frame is left without a window's rotation, or a window shares no
+/// frame with those chained before it ([`chain`]).
 pub(super) fn windowed(
     used: &Observations,
     seed: u64,
@@ -79,8 +81,10 @@ pub(super) fn windowed(
     loop {
         let last = (first + WINDOW_FRAMES).min(k);
         let frames: Vec<usize> = (first..last).collect();
-        if let Some((window, _)) = window(used, &frames, seed.wrapping_add(WINDOW_SEED), bo) {
-            chain(&mut known, &frames, &window);
+        if let Some((window, _)) = window(used, &frames, seed.wrapping_add(WINDOW_SEED), bo)
+            && !chain(&mut known, &frames, &window)
+        {
+            return None;
         }
         if last == k {
             break;
@@ -122,7 +126,13 @@ fn window(used: &Observations, frames: &[usize], seed: u64, bo: &BundleOptions) 
 /// `window` (the fit of `frames`) turned into the rotations already `known`: Rₖ = R_w Q with
 /// Qᵀ the rotation nearest the mean of Rₖᵀ R_w over the frames both have, for the window or
 /// its mirror twin, whichever leaves the smaller misfit; the frames not yet known take it.
-fn chain(known: &mut [Option<Matrix3<f64>>], frames: &[usize], window: &Reconstruction) {
+/// False when frames are known and the window shares none of them (a window before it
+/// failed): nothing then relates its frame of reference to theirs.
+fn chain(known: &mut [Option<Matrix3<f64>>], frames: &[usize], window: &Reconstruction) -> bool {
+    let linked = frames.iter().any(|&f| known[f].is_some());
+    if !linked && known.iter().any(Option::is_some) {
+        return false;
+    }
     let twins = [window.clone(), window.mirror()];
     let mut best: Option<(f64, Matrix3<f64>, &Reconstruction)> = None;
     for twin in &twins {
@@ -143,17 +153,20 @@ fn chain(known: &mut [Option<Matrix3<f64>>], frames: &[usize], window: &Reconstr
             best = Some((misfit, qt, twin));
         }
     }
-    let Some((_, qt, twin)) = best else { return };
+    let Some((_, qt, twin)) = best else {
+        return false;
+    };
     for (&f, w) in frames.iter().zip(&twin.frames) {
         if known[f].is_none() {
             known[f] = Some(w.rotation * qt.transpose());
         }
     }
+    true
 }
 
-/// Least-squares points and translations for fixed rotations: each frame's translation
-/// first its images' centroid; then, three times, the points intersected and each
-/// translation the mean of its images' residuals; the points intersected once more.
+/// Points and translations for fixed rotations, by alternating least squares: each frame's
+/// translation first its images' centroid; then, three times, the points intersected and
+/// each translation the mean of its images' residuals; the points intersected once more.
 /// Centred, frame 1 turned to the identity. `None` when a point's views do not fix it.
 fn place(used: &Observations, rotations: &[Matrix3<f64>]) -> Option<Reconstruction> {
     let mut frames: Vec<Frame> = rotations
