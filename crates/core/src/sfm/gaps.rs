@@ -158,13 +158,7 @@ fn grow(
     for (b, &j) in points_in.iter().enumerate() {
         points[j] = Some(block.points[b]);
     }
-    let by_point: Vec<Vec<(usize, Vector2<f64>)>> = (0..p)
-        .map(|j| {
-            (0..k)
-                .filter_map(|f| obs.frames[f][j].map(|y| (f, y)))
-                .collect()
-        })
-        .collect();
+    let by_point = obs.by_point();
     let by_frame: Vec<Vec<(usize, Vector2<f64>)>> = (0..k)
         .map(|f| {
             (0..p)

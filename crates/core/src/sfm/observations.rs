@@ -62,6 +62,25 @@ impl Observations {
         self.frames.iter().flatten().filter(|y| y.is_some()).count()
     }
 
+    /// Each point's views: (frame, image), frames ascending.
+    pub fn by_point(&self) -> Vec<Vec<(usize, Vector2<f64>)>> {
+        (0..self.names.len())
+            .map(|j| {
+                (0..self.frames.len())
+                    .filter_map(|f| self.frames[f][j].map(|y| (f, y)))
+                    .collect()
+            })
+            .collect()
+    }
+
+    /// The observations in the frames `keep` (indices, in the order given).
+    pub fn select_frames(&self, keep: &[usize]) -> Observations {
+        Observations {
+            names: self.names.clone(),
+            frames: keep.iter().map(|&f| self.frames[f].clone()).collect(),
+        }
+    }
+
     /// The observations of the points `keep` (indices, in the order given).
     pub fn select_points(&self, keep: &[usize]) -> Observations {
         Observations {

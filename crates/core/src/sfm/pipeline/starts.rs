@@ -262,10 +262,7 @@ fn from_order(
     (name, order): (&str, &[usize]),
     bo: &BundleOptions,
 ) -> Option<(Fitted, String)> {
-    let permuted = Observations {
-        names: used.names.clone(),
-        frames: order.iter().map(|&f| used.frames[f].clone()).collect(),
-    };
+    let permuted = used.select_frames(order);
     let renumbered: Vec<usize> = order.iter().map(|&f| numbers[f]).collect();
     let mut rec = with_gaps(&permuted, options, &renumbered).ok()?;
     let grown = rec

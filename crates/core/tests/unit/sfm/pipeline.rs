@@ -350,6 +350,11 @@ fn short_tracks(frames: usize, points: usize, seed: u64) -> (f64, f64, String, V
     )
 }
 
+/// One of `warnings` says `text`.
+fn warned(warnings: &[String], text: &str) {
+    assert!(warnings.iter().any(|w| w.contains(text)), "{warnings:?}");
+}
+
 /// 24 points in 10 frames, each in 3: every chain of frame pairs and the largest complete
 /// block end 1,883 times above the truth-started optimum (measured before the random starts);
 /// a start from random rotations reaches it. No other start confirms it, so it is warned of
@@ -365,12 +370,7 @@ fn a_small_group_reaches_the_optimum_from_random_rotations() {
         got <= best * (1.0 + 1e-6),
         "cost {got} against the truth-started {best}"
     );
-    assert!(
-        warnings
-            .iter()
-            .any(|w| w.contains("only one reached the least cost")),
-        "{warnings:?}"
-    );
+    warned(&warnings, "only one reached the least cost");
 }
 
 /// 16 points in 8 frames, each in 3: two starts from random rotations end at the same cost,
@@ -384,11 +384,9 @@ fn an_optimum_only_random_rotations_reach_is_warned_of() {
         got > 100.0 * best,
         "cost {got} against the truth-started {best}"
     );
-    assert!(
-        warnings
-            .iter()
-            .any(|w| w.contains("only those from random rotations reached the least cost")),
-        "{warnings:?}"
+    warned(
+        &warnings,
+        "only those from random rotations reached the least cost",
     );
 }
 

@@ -112,11 +112,7 @@ fn window(used: &Observations, frames: &[usize], seed: u64, bo: &BundleOptions) 
     if keep.len() < crate::sfm::MIN_POINTS {
         return None;
     }
-    let part = Observations {
-        names: used.names.clone(),
-        frames: frames.iter().map(|&f| used.frames[f].clone()).collect(),
-    }
-    .select_points(&keep);
+    let part = used.select_frames(frames).select_points(&keep);
     random_fits(&part, seed, bo)
         .into_iter()
         .map(|(_, f)| f)
@@ -177,13 +173,7 @@ fn place(used: &Observations, rotations: &[Matrix3<f64>]) -> Option<Reconstructi
             translation: mean(row.iter().flatten().copied()),
         })
         .collect();
-    let by_point: Vec<Vec<(usize, Vector2<f64>)>> = (0..used.names.len())
-        .map(|j| {
-            (0..used.frames.len())
-                .filter_map(|f| used.frames[f][j].map(|y| (f, y)))
-                .collect()
-        })
-        .collect();
+    let by_point = used.by_point();
     let intersected = |frames: &[Frame]| -> Option<Vec<Vector3<f64>>> {
         let known: Vec<Option<Frame>> = frames.iter().copied().map(Some).collect();
         by_point
