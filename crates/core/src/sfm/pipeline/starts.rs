@@ -67,7 +67,8 @@ pub(super) fn best_fit(
     }
     // the earliest fit at the least cost (the first before the others): the same optimum
     // reached again by another start does not replace the first fit
-    let at_least_cost = |c: f64| c <= least * (1.0 + AGREE) + rounding(used);
+    let floor = rounding(used);
+    let at_least_cost = |c: f64| c <= least * (1.0 + AGREE) + floor;
     let Some(best) = fits.iter().position(|f| at_least_cost(cost(&f.0))) else {
         return first;
     };
@@ -88,8 +89,9 @@ pub(super) fn best_fit(
 
 /// The warning when the least cost is not confirmed (`reached`: the names of the fits that
 /// reached it, of `finished`): one fit alone reached it, or only random starts of a whole
-/// group (the chained windows count as a start of their own) (many draws of one kind of start can all fall into
-/// the same wrong basin; measured on uniform windows of three frames, docs/limits.md).
+/// group, since many draws of one kind of start can all fall into the same wrong basin
+/// (measured on uniform windows of three frames, docs/limits.md). The chained windows count
+/// as a start of their own.
 fn unconfirmed(reached: &[&str], finished: usize, least: f64, tried: usize) -> Option<String> {
     let random = |name: &&str| name.starts_with(RANDOM_NAME);
     let least = sig(least);
