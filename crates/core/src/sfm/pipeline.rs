@@ -450,38 +450,7 @@ pub fn uneven_warning(
     rec: &Reconstruction,
     numbers: &[usize],
 ) -> Option<String> {
-    let k = rec.frames.len();
-    let (mut ss, mut n) = (vec![0.0f64; k], vec![0usize; k]);
-    for (f, j, y) in obs.seen() {
-        ss[f] += (rec.frames[f].project(&rec.points[j]) - y).norm_squared();
-        n[f] += 1;
-    }
-    let per: Vec<(usize, f64, f64)> = (0..k)
-        .filter(|&f| 2 * n[f] > 5)
-        .map(|f| {
-            let nu = (2 * n[f] - 5) as f64;
-            (f, ss[f] / nu, nu)
-        })
-        .collect();
-    if per.len() < 3 {
-        return None;
-    }
-    let mut means: Vec<f64> = per.iter().map(|p| p.1).collect();
-    means.sort_by(f64::total_cmp);
-    let median = means[means.len() / 2];
-    if median.is_nan() || median <= 0.0 {
-        return None;
-    }
-    let limit = |nu: f64| {
-        let a = 2.0 / (9.0 * nu);
-        (1.0 - a + UNEVEN_Z * a.sqrt()).powi(3)
-    };
-    let mut bad: Vec<(usize, f64)> = per
-        .iter()
-        .filter(|(_, m, nu)| *m > median * limit(*nu).max(UNEVEN_FLOOR))
-        .map(|(f, m, _)| (*f, m / median))
-        .collect();
-    bad.sort_by(|a, b| b.1.total_cmp(&a.1));
+    let bad = uneven_frames(obs, rec);
     let named: Vec<String> = bad
         .iter()
         .take(DEEP_NAMED)
@@ -501,4 +470,42 @@ pub fn uneven_warning(
             if bad.len() > DEEP_NAMED { ", …" } else { "" }
         )
     })
+}
+
+/// The frames of [`uneven_warning`] (indices into `rec.frames`), each with its mean squared
+/// residual over the median frame's, the worst first.
+pub(crate) fn uneven_frames(obs: &Observations, rec: &Reconstruction) -> Vec<(usize, f64)> {
+    let k = rec.frames.len();
+    let (mut ss, mut n) = (vec![0.0f64; k], vec![0usize; k]);
+    for (f, j, y) in obs.seen() {
+        ss[f] += (rec.frames[f].project(&rec.points[j]) - y).norm_squared();
+        n[f] += 1;
+    }
+    let per: Vec<(usize, f64, f64)> = (0..k)
+        .filter(|&f| 2 * n[f] > 5)
+        .map(|f| {
+            let nu = (2 * n[f] - 5) as f64;
+            (f, ss[f] / nu, nu)
+        })
+        .collect();
+    if per.len() < 3 {
+        return Vec::new();
+    }
+    let mut means: Vec<f64> = per.iter().map(|p| p.1).collect();
+    means.sort_by(f64::total_cmp);
+    let median = means[means.len() / 2];
+    if median.is_nan() || median <= 0.0 {
+        return Vec::new();
+    }
+    let limit = |nu: f64| {
+        let a = 2.0 / (9.0 * nu);
+        (1.0 - a + UNEVEN_Z * a.sqrt()).powi(3)
+    };
+    let mut bad: Vec<(usize, f64)> = per
+        .iter()
+        .filter(|(_, m, nu)| *m > median * limit(*nu).max(UNEVEN_FLOOR))
+        .map(|(f, m, _)| (*f, m / median))
+        .collect();
+    bad.sort_by(|a, b| b.1.total_cmp(&a.1));
+    bad
 }

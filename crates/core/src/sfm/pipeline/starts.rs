@@ -7,9 +7,10 @@
 //! that fails falls back on the largest complete block grown in its order), from the
 //! largest complete block, and from random rotations ([`rotations`]: of every frame in a
 //! small group, window by window in a larger one); each is adjusted briefly
-//! ([`SCREEN_ITERATIONS`]), the best [`FINISHED`] are adjusted in full, and the fit of least
-//! cost, theirs or the first's, is kept with its own warnings; a warning when only one of
-//! those fits reached that cost, or only fits from random rotations ([`unconfirmed`]).
+//! ([`SCREEN_ITERATIONS`]), the best [`FINISHED`] are adjusted in full; the frames the best
+//! of those fits leaves uneven are started again with the rest kept ([`reseat`]); and the fit
+//! of least cost, theirs or the first's, is kept with its own warnings; a warning when only
+//! one of those fits reached that cost, or only fits from random rotations ([`unconfirmed`]).
 
 use rayon::prelude::*;
 
@@ -18,6 +19,7 @@ use crate::numfmt::sig;
 use crate::sfm::bundle::BundleOptions;
 use crate::sfm::{BundleReport, Error, Observations, Options, Reconstruction};
 
+mod reseat;
 mod rotations;
 
 pub use rotations::{ROTATION_FRAMES, ROTATION_STARTS, WINDOW_FRAMES};
@@ -30,9 +32,9 @@ pub const SCREEN_ITERATIONS: usize = 20;
 type Fitted = (Reconstruction, Option<BundleReport>);
 
 /// The first fit ([`fit`], with the uneven-frames check); on tracks with gaps, the best of
-/// it and the other starts ([`orders`], the largest complete block, [`search`]) by the adjustment's
-/// final cost. Errors other than an unreachable part or a numerical failure (too large,
-/// degenerate) are returned as they are.
+/// it, the other starts ([`orders`], the largest complete block, [`search`]) and the best of
+/// those re-seated ([`reseated`]) by the adjustment's final cost. Errors other than an
+/// unreachable part or a numerical failure (too large, degenerate) are returned as they are.
 pub(super) fn best_fit(
     used: &Observations,
     options: &Options,
@@ -58,6 +60,8 @@ pub(super) fn best_fit(
         fits.push((f.clone(), "the first".to_string()));
     }
     fits.extend(finished);
+    let floor = rounding(used);
+    fits.extend(reseated(used, options, numbers, &fits, floor));
     let least = fits
         .iter()
         .map(|f| cost(&f.0))
@@ -67,7 +71,6 @@ pub(super) fn best_fit(
     }
     // the earliest fit at the least cost (the first before the others): the same optimum
     // reached again by another start does not replace the first fit
-    let floor = rounding(used);
     let at_least_cost = |c: f64| c <= least * (1.0 + AGREE) + floor;
     let Some(best) = fits.iter().position(|f| at_least_cost(cost(&f.0))) else {
         return first;
@@ -164,11 +167,7 @@ fn screen_starts(
     options: &Options,
     numbers: &[usize],
 ) -> (Vec<(Fitted, String)>, usize) {
-    let screen = BundleOptions {
-        max_iterations: SCREEN_ITERATIONS.min(options.max_iterations),
-        standard_errors: false,
-        ..BundleOptions::with(options)
-    };
+    let screen = screening(options);
     // the chain's orders matter where variable projection starts (most entries missing)
     let cells = used.frames.len() * used.names.len();
     let chains = if 2 * used.count() < cells {
@@ -194,6 +193,42 @@ fn screen_starts(
     // a stable sort: the earlier start first on a tie
     screened.sort_by(|a, b| cost(&a.0).total_cmp(&cost(&b.0)));
     (screened, tried)
+}
+
+/// The short adjustment each start is screened by.
+fn screening(options: &Options) -> BundleOptions {
+    BundleOptions {
+        max_iterations: SCREEN_ITERATIONS.min(options.max_iterations),
+        standard_errors: false,
+        ..BundleOptions::with(options)
+    }
+}
+
+/// The fit of least cost of `fits` with its uneven frames re-seated ([`reseat`]), named
+/// after it, where that lowers its cost.
+fn reseated(
+    used: &Observations,
+    options: &Options,
+    numbers: &[usize],
+    fits: &[(Fitted, String)],
+    floor: f64,
+) -> Option<(Fitted, String)> {
+    let (best, name) = fits
+        .iter()
+        .min_by(|a, b| cost(&a.0).total_cmp(&cost(&b.0)))?;
+    let reseat = reseat::Reseat {
+        used,
+        numbers,
+        seed: options.seed,
+        screen: &screening(options),
+        full: &BundleOptions::with(options),
+        floor,
+    };
+    let (fit, frames) = reseat.run(best)?;
+    Some((
+        fit,
+        format!("{name}, then frames {frames} re-seated (started again, the other frames kept)"),
+    ))
 }
 
 /// The global search of [`rotations`]: a group of at most [`ROTATION_FRAMES`] frames from

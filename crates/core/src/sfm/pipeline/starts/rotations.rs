@@ -97,7 +97,12 @@ pub(super) fn windowed(
 
 /// The best random start of the frames `frames` and the points they see at least twice (at
 /// most [`WINDOW_POINTS`]: those seen in the most of its frames, the earlier on a tie).
-fn window(used: &Observations, frames: &[usize], seed: u64, bo: &BundleOptions) -> Option<Fitted> {
+pub(super) fn window(
+    used: &Observations,
+    frames: &[usize],
+    seed: u64,
+    bo: &BundleOptions,
+) -> Option<Fitted> {
     let views = |j: usize| {
         frames
             .iter()
@@ -119,52 +124,68 @@ fn window(used: &Observations, frames: &[usize], seed: u64, bo: &BundleOptions) 
         .min_by(|a, b| cost(a).total_cmp(&cost(b)))
 }
 
-/// `window` (the fit of `frames`) turned into the rotations already `known`: Rₖ = R_w Q with
-/// Qᵀ the rotation nearest the mean of Rₖᵀ R_w over the frames both have, for the window or
-/// its mirror twin, whichever leaves the smaller misfit; the frames not yet known take it.
-/// False when frames are known and the window shares none of them (a window before it
-/// failed): nothing then relates its frame of reference to theirs.
+/// `window` (the fit of `frames`) turned into the rotations already `known` ([`turn`]), the
+/// window or its mirror twin, whichever leaves the smaller misfit; the frames not yet known
+/// take it. False when frames are known and the window shares none of them (a window before
+/// it failed): nothing then relates its frame of reference to theirs.
 fn chain(known: &mut [Option<Matrix3<f64>>], frames: &[usize], window: &Reconstruction) -> bool {
     let linked = frames.iter().any(|&f| known[f].is_some());
     if !linked && known.iter().any(Option::is_some) {
         return false;
     }
-    let twins = [window.clone(), window.mirror()];
-    let mut best: Option<(f64, Matrix3<f64>, &Reconstruction)> = None;
-    for twin in &twins {
-        let shared: Vec<(Matrix3<f64>, Matrix3<f64>)> = frames
-            .iter()
-            .zip(&twin.frames)
-            .filter_map(|(&f, w)| known[f].map(|r| (r, w.rotation)))
-            .collect();
-        let qt = match shared.is_empty() {
-            true => Matrix3::identity(),
-            false => nearest_rotation(&shared.iter().map(|(r, w)| r.transpose() * w).sum()),
-        };
-        let misfit: f64 = shared
-            .iter()
-            .map(|(r, w)| (r * qt - w).norm_squared())
-            .sum();
-        if best.is_none_or(|b| misfit < b.0) {
-            best = Some((misfit, qt, twin));
-        }
-    }
-    let Some((_, qt, twin)) = best else {
-        return false;
+    let mirror = window.mirror();
+    let (plain, twin) = (turn(known, frames, window), turn(known, frames, &mirror));
+    let (qt, chosen) = match twin.0 < plain.0 {
+        true => (twin.1, &mirror),
+        false => (plain.1, window),
     };
-    for (&f, w) in frames.iter().zip(&twin.frames) {
+    take(known, frames, chosen, &qt);
+    true
+}
+
+/// The turn Qᵀ that brings `window` (the fit of `frames`) onto the rotations already `known`,
+/// Rₖ = R_w Q: the rotation nearest the sum of Rₖᵀ R_w over the frames both have (the
+/// identity where they share none), with its misfit Σ ‖Rₖ Qᵀ − R_w‖².
+pub(super) fn turn(
+    known: &[Option<Matrix3<f64>>],
+    frames: &[usize],
+    window: &Reconstruction,
+) -> (f64, Matrix3<f64>) {
+    let shared: Vec<(Matrix3<f64>, Matrix3<f64>)> = frames
+        .iter()
+        .zip(&window.frames)
+        .filter_map(|(&f, w)| known[f].map(|r| (r, w.rotation)))
+        .collect();
+    let qt = match shared.is_empty() {
+        true => Matrix3::identity(),
+        false => nearest_rotation(&shared.iter().map(|(r, w)| r.transpose() * w).sum()),
+    };
+    let misfit = shared
+        .iter()
+        .map(|(r, w)| (r * qt - w).norm_squared())
+        .sum();
+    (misfit, qt)
+}
+
+/// The frames of `frames` not yet `known` take `window`'s rotations, turned by `qt` ([`turn`]).
+pub(super) fn take(
+    known: &mut [Option<Matrix3<f64>>],
+    frames: &[usize],
+    window: &Reconstruction,
+    qt: &Matrix3<f64>,
+) {
+    for (&f, w) in frames.iter().zip(&window.frames) {
         if known[f].is_none() {
             known[f] = Some(w.rotation * qt.transpose());
         }
     }
-    true
 }
 
 /// Points and translations for fixed rotations, by alternating least squares: each frame's
 /// translation first its images' centroid; then, three times, the points intersected and
 /// each translation the mean of its images' residuals; the points intersected once more.
 /// Centred, frame 1 turned to the identity. `None` when a point's views do not fix it.
-fn place(used: &Observations, rotations: &[Matrix3<f64>]) -> Option<Reconstruction> {
+pub(super) fn place(used: &Observations, rotations: &[Matrix3<f64>]) -> Option<Reconstruction> {
     let mut frames: Vec<Frame> = rotations
         .iter()
         .zip(&used.frames)
