@@ -94,7 +94,8 @@ pub(super) fn best_fit(
 /// reached it, of `finished`): one fit alone reached it, or only random starts of a whole
 /// group, since many draws of one kind of start can all fall into the same wrong basin
 /// (measured on uniform windows of three frames, docs/limits.md). The chained windows count
-/// as a start of their own.
+/// as a start of their own; a re-seated fit counts among the `finished`, its own starts not
+/// among the `tried` (a re-seated fit alone at the least cost is warned of like any other).
 fn unconfirmed(reached: &[&str], finished: usize, least: f64, tried: usize) -> Option<String> {
     let random = |name: &&str| name.starts_with(RANDOM_NAME);
     let least = sig(least);
@@ -227,7 +228,9 @@ fn reseated(
     let (fit, frames) = reseat.run(best)?;
     Some((
         fit,
-        format!("{name}, then frames {frames} re-seated (started again, the other frames kept)"),
+        format!(
+            "{name}, then frames {frames} re-seated (started again, the other frames' rotations kept)"
+        ),
     ))
 }
 

@@ -408,7 +408,8 @@ fn a_larger_group_reaches_the_optimum_from_chained_windows() {
 
 /// 60 points in 20 frames, each in 3: the best of the whole group's starts fits frames 17–19
 /// far worse than the rest, 87.5 times the truth-started cost (measured without
-/// re-seating); those frames started again with the other frames kept reach the optimum.
+/// re-seating); those frames started again with the other frames' rotations kept reach the
+/// optimum.
 #[test]
 fn frames_left_uneven_are_re_seated_to_the_optimum() {
     let (got, best, method, _) = short_tracks(20, 60, 19);
