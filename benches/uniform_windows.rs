@@ -9,7 +9,7 @@
 //! or lower).
 
 use orthocheck::sfm::turntable::Turntable;
-use orthocheck::sfm::{bundle_adjust, reconstruct, BundleOptions, Frame, Options, Reconstruction};
+use orthocheck::sfm::{bundle_adjust, reconstruct, BundleOptions, Options, Reconstruction};
 
 fn main() {
     let args: Vec<u64> = std::env::args()
@@ -44,21 +44,7 @@ fn main() {
                     println!("{label}: no adjustment");
                     continue;
                 };
-                let truth = Reconstruction {
-                    names: scene.body.names.clone(),
-                    points: scene.body.points.clone(),
-                    frames: scene
-                        .motions
-                        .iter()
-                        .map(|m| Frame {
-                            rotation: *m.rotation.matrix(),
-                            translation: m.translation,
-                        })
-                        .collect(),
-                    method: Vec::new(),
-                    conditioning: None,
-                    warnings: Vec::new(),
-                };
+                let truth = Reconstruction::of_scene(&scene);
                 let best = bundle_adjust(&obs, &truth, &BundleOptions::default())
                     .ok()
                     .and_then(|a| a.report.costs.last().copied());

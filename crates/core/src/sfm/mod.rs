@@ -137,6 +137,26 @@ pub struct Reconstruction {
 }
 
 impl Reconstruction {
+    /// A scene's true body and motions as a reconstruction: the start of an adjustment from
+    /// the truth, the reference a fit's cost is judged against.
+    pub fn of_scene(scene: &crate::model::Scene) -> Reconstruction {
+        Reconstruction {
+            names: scene.body.names.clone(),
+            points: scene.body.points.clone(),
+            frames: scene
+                .motions
+                .iter()
+                .map(|m| Frame {
+                    rotation: *m.rotation.matrix(),
+                    translation: m.translation,
+                })
+                .collect(),
+            method: Vec::new(),
+            conditioning: None,
+            warnings: Vec::new(),
+        }
+    }
+
     /// The mirror (Necker) solution: the structure reflected in frame 1's image plane,
     /// X ↦ DX, and every rotation R ↦ DRD with D = diag(1, 1, −1). Both give the same images:
     /// the first two rows of DRD·DX are those of R·X.

@@ -304,21 +304,7 @@ fn a_warned_first_start_is_replaced_by_the_best_of_the_others() {
 /// The final cost of the adjustment of `obs` started from the scene's true body and motions:
 /// the optimum a pipeline is judged against.
 fn truth_started_cost(scene: &Scene, obs: &Observations) -> f64 {
-    let truth = Reconstruction {
-        names: scene.body.names.clone(),
-        points: scene.body.points.clone(),
-        frames: scene
-            .motions
-            .iter()
-            .map(|m| Frame {
-                rotation: *m.rotation.matrix(),
-                translation: m.translation,
-            })
-            .collect(),
-        method: Vec::new(),
-        conditioning: None,
-        warnings: Vec::new(),
-    };
+    let truth = Reconstruction::of_scene(scene);
     let best = bundle_adjust(obs, &truth, &BundleOptions::default()).unwrap();
     *best.report.costs.last().unwrap()
 }
