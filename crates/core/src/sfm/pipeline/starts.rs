@@ -55,9 +55,9 @@ pub(super) fn best_fit(
     }
     let (screened, tried) = screen_starts(used, options, numbers);
     let finished = finish(used, options, numbers, screened);
-    let mut fits: Vec<(Fitted, String)> = Vec::new();
+    let mut fits: Vec<(Fitted, Start)> = Vec::new();
     if let Ok(f) = &first {
-        fits.push((f.clone(), "the first".to_string()));
+        fits.push((f.clone(), Start::named("the first")));
     }
     fits.extend(finished);
     let floor = rounding(used);
@@ -75,35 +75,35 @@ pub(super) fn best_fit(
     let Some(best) = fits.iter().position(|f| at_least_cost(cost(&f.0))) else {
         return first;
     };
-    let reached: Vec<&str> = fits
+    let reached: Vec<&Start> = fits
         .iter()
         .filter(|f| at_least_cost(cost(&f.0)))
-        .map(|f| f.1.as_str())
+        .map(|f| &f.1)
         .collect();
     let unconfirmed = unconfirmed(&reached, fits.len(), least, tried);
-    let ((mut rec, b), name) = fits.swap_remove(best);
+    let ((mut rec, b), start) = fits.swap_remove(best);
     rec.method.push(format!(
-        "tracks with gaps: of {tried} starts, the one of least final cost ({}) kept: {name}",
-        sig(least)
+        "tracks with gaps: of {tried} starts, the one of least final cost ({}) kept: {}",
+        sig(least),
+        start.name
     ));
     rec.warnings.extend(unconfirmed);
     Ok((rec, b))
 }
 
-/// The warning when the least cost is not confirmed (`reached`: the names of the fits that
+/// The warning when the least cost is not confirmed (`reached`: the starts of the fits that
 /// reached it, of `finished`): one fit alone reached it, or only random starts of a whole
 /// group, since many draws of one kind of start can all fall into the same wrong basin
 /// (measured on uniform windows of three frames, docs/limits.md). The chained windows count
 /// as a start of their own; a re-seated fit counts among the `finished`, its own starts not
 /// among the `tried` (a re-seated fit alone at the least cost is warned of like any other).
-fn unconfirmed(reached: &[&str], finished: usize, least: f64, tried: usize) -> Option<String> {
-    let random = |name: &&str| name.starts_with(RANDOM_NAME);
+fn unconfirmed(reached: &[&Start], finished: usize, least: f64, tried: usize) -> Option<String> {
     let least = sig(least);
     if reached.len() < 2 {
         Some(format!(
             "of the {finished} fits finished from {tried} starts only one reached the least cost ({least}): a lower optimum may exist"
         ))
-    } else if reached.iter().all(random) {
+    } else if reached.iter().all(|s| s.random) {
         Some(format!(
             "of the {finished} fits finished from {tried} starts only those from random rotations reached the least cost ({least}): a lower optimum may exist"
         ))
@@ -112,8 +112,24 @@ fn unconfirmed(reached: &[&str], finished: usize, least: f64, tried: usize) -> O
     }
 }
 
-/// The name of the starts from random rotations, each followed by its number.
-const RANDOM_NAME: &str = "random rotations";
+/// Where a fit started, as its method line names it, and whether from random rotations of
+/// every frame (which do not confirm each other's optimum, [`unconfirmed`]; a re-seated fit
+/// is its base's kind).
+#[derive(Clone, Debug)]
+struct Start {
+    name: String,
+    random: bool,
+}
+
+impl Start {
+    /// A start that is not random.
+    fn named(name: impl Into<String>) -> Start {
+        Start {
+            name: name.into(),
+            random: false,
+        }
+    }
+}
 
 /// Fits finished in full from the other starts, the best by their screening's cost.
 pub const FINISHED: usize = 2;
@@ -124,17 +140,17 @@ fn finish(
     used: &Observations,
     options: &Options,
     numbers: &[usize],
-    screened: Vec<(Fitted, String)>,
-) -> Vec<(Fitted, String)> {
+    screened: Vec<(Fitted, Start)>,
+) -> Vec<(Fitted, Start)> {
     let full = BundleOptions::with(options);
     let mut out = Vec::new();
     let mut rest = screened.into_iter();
     while out.len() < FINISHED {
-        let batch: Vec<(Fitted, String)> = rest.by_ref().take(FINISHED - out.len()).collect();
+        let batch: Vec<(Fitted, Start)> = rest.by_ref().take(FINISHED - out.len()).collect();
         if batch.is_empty() {
             break;
         }
-        let done: Vec<(Fitted, String)> = batch
+        let done: Vec<(Fitted, Start)> = batch
             .into_par_iter()
             .filter_map(|((rec, _), name)| adjusted(used, numbers, rec, &full).map(|f| (f, name)))
             .filter(|(f, _)| cost(f).is_finite())
@@ -167,7 +183,7 @@ fn screen_starts(
     used: &Observations,
     options: &Options,
     numbers: &[usize],
-) -> (Vec<(Fitted, String)>, usize) {
+) -> (Vec<(Fitted, Start)>, usize) {
     let screen = screening(options);
     // the chain's orders matter where variable projection starts (most entries missing)
     let cells = used.frames.len() * used.names.len();
@@ -181,11 +197,11 @@ fn screen_starts(
         .map(|(name, order)| (name, Some(order)))
         .collect();
     starts.push(("the largest complete block".to_string(), None));
-    let mut screened: Vec<(Fitted, String)> = starts
+    let mut screened: Vec<(Fitted, Start)> = starts
         .par_iter()
         .filter_map(|(name, order)| match order {
             Some(order) => from_order(used, options, numbers, (name, order), &screen),
-            None => from_block(used, numbers, &screen).map(|f| (f, name.clone())),
+            None => from_block(used, numbers, &screen).map(|f| (f, Start::named(name))),
         })
         .collect();
     let (global, searched) = search(used, options.seed, &screen);
@@ -211,10 +227,10 @@ fn reseated(
     used: &Observations,
     options: &Options,
     numbers: &[usize],
-    fits: &[(Fitted, String)],
+    fits: &[(Fitted, Start)],
     floor: f64,
-) -> Option<(Fitted, String)> {
-    let (best, name) = fits
+) -> Option<(Fitted, Start)> {
+    let (best, start) = fits
         .iter()
         .min_by(|a, b| cost(&a.0).total_cmp(&cost(&b.0)))?;
     let reseat = reseat::Reseat {
@@ -226,29 +242,43 @@ fn reseated(
         floor,
     };
     let (fit, frames) = reseat.run(best)?;
+    let name = format!(
+        "{}, then frames {frames} re-seated (started again, the other frames' rotations kept)",
+        start.name
+    );
     Some((
         fit,
-        format!(
-            "{name}, then frames {frames} re-seated (started again, the other frames' rotations kept)"
-        ),
+        Start {
+            name,
+            ..start.clone()
+        },
     ))
 }
 
 /// The global search of [`rotations`]: a group of at most [`ROTATION_FRAMES`] frames from
 /// [`ROTATION_STARTS`] random rotations, each named by its seed's place; a larger one from
 /// windows of [`WINDOW_FRAMES`] chained. With the number of starts it counts.
-fn search(used: &Observations, seed: u64, bo: &BundleOptions) -> (Vec<(Fitted, String)>, usize) {
+fn search(used: &Observations, seed: u64, bo: &BundleOptions) -> (Vec<(Fitted, Start)>, usize) {
     if used.frames.len() <= ROTATION_FRAMES {
         let fits = rotations::random_fits(used, seed, bo);
         let named = fits
             .into_iter()
-            .map(|(i, f)| (f, format!("{RANDOM_NAME} {} of {ROTATION_STARTS}", i + 1)))
+            .map(|(i, f)| {
+                let name = format!("random rotations {} of {ROTATION_STARTS}", i + 1);
+                (f, Start { name, random: true })
+            })
             .collect();
         return (named, ROTATION_STARTS);
     }
     let chained = rotations::windowed(used, seed, bo).and_then(|rec| screened(used, rec, bo));
     let name = format!("windows of {WINDOW_FRAMES} frames from random rotations, chained");
-    (chained.map(|f| (f, name)).into_iter().collect(), 1)
+    (
+        chained
+            .map(|f| (f, Start::named(name)))
+            .into_iter()
+            .collect(),
+        1,
+    )
 }
 
 /// The adjustment's final cost (½ Σ ‖r‖²); infinite without one.
@@ -301,7 +331,7 @@ fn from_order(
     numbers: &[usize],
     (name, order): (&str, &[usize]),
     bo: &BundleOptions,
-) -> Option<(Fitted, String)> {
+) -> Option<(Fitted, Start)> {
     let permuted = used.select_frames(order);
     let renumbered: Vec<usize> = order.iter().map(|&f| numbers[f]).collect();
     let mut rec = with_gaps(&permuted, options, &renumbered).ok()?;
@@ -324,7 +354,7 @@ fn from_order(
     rec.frames = frames;
     rec.align_to_first();
     rec.centre();
-    screened(used, rec, bo).map(|f| (f, name))
+    screened(used, rec, bo).map(|f| (f, Start::named(name)))
 }
 
 /// The fit from the largest complete block, grown.
