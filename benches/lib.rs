@@ -1,4 +1,4 @@
-//! What the benchmarks share: where the paper's cases are.
+//! What the benchmarks share: where the paper's cases are, the examples' command lines.
 
 use std::fmt::Write as _;
 use std::path::PathBuf;
@@ -8,6 +8,14 @@ use orthocheck::sfm::{Observations, Reconstruction, Units};
 /// The folder of the paper's cases, `paper_cases/` of the repository.
 pub fn paper_cases() -> PathBuf {
     PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/../paper_cases"))
+}
+
+/// The command line's arguments that parse as numbers, in order (the others left out).
+pub fn numbers<T: std::str::FromStr>() -> Vec<T> {
+    std::env::args()
+        .skip(1)
+        .filter_map(|a| a.parse().ok())
+        .collect()
 }
 
 /// The command line of a calibration run: `[SCENES] [SEED] [absolute]`.
@@ -24,10 +32,7 @@ pub struct Calibration {
 impl Calibration {
     /// The arguments, `scenes` scenes by default.
     pub fn from_args(scenes: u64) -> Calibration {
-        let numbers: Vec<u64> = std::env::args()
-            .skip(1)
-            .filter_map(|a| a.parse().ok())
-            .collect();
+        let numbers: Vec<u64> = numbers();
         Calibration {
             scenes: numbers.first().copied().unwrap_or(scenes),
             seed: numbers.get(1).copied().unwrap_or(1),

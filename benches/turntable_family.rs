@@ -107,10 +107,7 @@ fn scene(seed: u64) -> Made {
 }
 
 fn main() {
-    let args: Vec<u64> = std::env::args()
-        .skip(1)
-        .filter_map(|a| a.parse().ok())
-        .collect();
+    let args: Vec<u64> = orthocheck_benches::numbers();
     let (scenes, seed) = (
         args.first().copied().unwrap_or(400),
         args.get(1).copied().unwrap_or(1),

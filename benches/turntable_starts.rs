@@ -12,10 +12,7 @@ use orthocheck::sfm::turntable::Turntable;
 use orthocheck::sfm::{judge, missing, Units};
 
 fn main() {
-    let args: Vec<usize> = std::env::args()
-        .skip(1)
-        .filter_map(|a| a.parse().ok())
-        .collect();
+    let args: Vec<usize> = orthocheck_benches::numbers();
     let (points, window, starts) = (
         args.first().copied().unwrap_or(117),
         args.get(1).copied().unwrap_or(4),

@@ -12,10 +12,7 @@ use orthocheck::sfm::turntable::Turntable;
 use orthocheck::sfm::{bundle_adjust, reconstruct, BundleOptions, Options, Reconstruction};
 
 fn main() {
-    let args: Vec<u64> = std::env::args()
-        .skip(1)
-        .filter_map(|a| a.parse().ok())
-        .collect();
+    let args: Vec<u64> = orthocheck_benches::numbers();
     let (seeds, window) = (
         args.first().copied().unwrap_or(25),
         args.get(1).copied().unwrap_or(3) as usize,

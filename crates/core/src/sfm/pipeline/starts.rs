@@ -71,7 +71,7 @@ pub(super) fn best_fit(
     }
     // the earliest fit at the least cost (the first before the others): the same optimum
     // reached again by another start does not replace the first fit
-    let at_least_cost = |c: f64| c <= least * (1.0 + AGREE) + floor;
+    let at_least_cost = |c: f64| same_optimum(c, least, floor);
     let Some(best) = fits.iter().position(|f| at_least_cost(cost(&f.0))) else {
         return first;
     };
@@ -165,6 +165,12 @@ fn finish(
 /// the cost), which a slow final descent can leave far above; distinct optima on the
 /// turntable family differ by factors, far beyond it.
 const AGREE: f64 = 1e-6;
+
+/// Whether a fit of cost `c` is at the optimum of cost `least` (the lower): within [`AGREE`]
+/// of it, relative, or within the rounding `floor` ([`rounding`]).
+fn same_optimum(c: f64, least: f64, floor: f64) -> bool {
+    c <= least * (1.0 + AGREE) + floor
+}
 
 /// The cost's rounding floor at an exact fit: each residual y − (C x + t) is computed to
 /// within a few ε of the coordinates' magnitude, at most s (the largest; an upper bound,

@@ -18,7 +18,7 @@ use nalgebra::{Matrix3, Rotation3, UnitQuaternion};
 use rayon::prelude::*;
 
 use super::rotations::{place, take, turn, window};
-use super::{adjusted, cost, screened, Fitted, AGREE};
+use super::{adjusted, cost, same_optimum, screened, Fitted};
 use crate::sfm::bundle::BundleOptions;
 use crate::sfm::groups::LINK;
 use crate::sfm::pipeline::{ranges, uneven_frames};
@@ -68,7 +68,7 @@ struct Stretch {
 
 impl Reseat<'_> {
     /// `fit` with runs of its uneven frames re-seated, one at a time, each where it lowers
-    /// the cost beyond the fits' agreement ([`AGREE`] and the floor), the uneven frames found
+    /// the cost to another optimum ([`same_optimum`]), the uneven frames found
     /// again after each; with the frames whose rotations were started again (as the input
     /// numbers them), or `None` when none was.
     pub(super) fn run(&self, fit: &Fitted) -> Option<(Fitted, String)> {
@@ -82,7 +82,8 @@ impl Reseat<'_> {
                 .collect();
             let better = runs(&bad, &links).into_iter().find_map(|run| {
                 let (fit, frames) = self.reseat(&current.0, &run, &links)?;
-                (cost(&fit) * (1.0 + AGREE) + self.floor < cost(&current)).then_some((fit, frames))
+                let lower = !same_optimum(cost(&current), cost(&fit), self.floor);
+                lower.then_some((fit, frames))
             });
             let Some((fit, frames)) = better else {
                 break;
