@@ -368,6 +368,17 @@ fn reconstruct_prints_json_without_nan_and_refuses_bad_input() {
     assert!(
         v["mirror"]["points"]["P"].is_array() && v["rms"].is_number() && v["method"].is_string()
     );
+    // standard errors of every point and frame; frame 1 fixes the frame of reference
+    assert_eq!(v["points_std"].as_object().unwrap().len(), 6);
+    assert_eq!(v["depth_barely_determined"], serde_json::json!([]));
+    let fsd = v["frames_std"].as_array().unwrap();
+    assert_eq!(fsd.len(), 4);
+    assert_eq!(fsd[0]["rotation_deg"], serde_json::json!([0.0, 0.0, 0.0]));
+    assert!(fsd[1..].iter().all(|f| {
+        let r = f["rotation_deg"].as_array().unwrap();
+        let t = f["translation"].as_array().unwrap();
+        r.iter().chain(t).all(|x| x.as_f64().unwrap() > 0.0)
+    }));
     let robust = orthocheck(&[
         "reconstruct",
         "--input",
@@ -401,6 +412,66 @@ fn reconstruct_prints_json_without_nan_and_refuses_bad_input() {
     let out = orthocheck(&["reconstruct", "--input", planar.to_str().unwrap()]);
     assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).contains("planar"));
+}
+
+#[test]
+fn reconstruct_names_the_points_whose_depth_is_barely_determined() {
+    // frames turned by 1°–2° from the first, and noise: the images fix the points' depth
+    // barely (a depth's standard error ≈ the noise over the angle turned)
+    let clean = scene_of(
+        Scene::random(12, 1, 3).body.points,
+        &[
+            Rotation3::from_euler_angles(0.02, 0.01, 0.3),
+            Rotation3::from_euler_angles(-0.01, 0.03, 0.7),
+            Rotation3::from_euler_angles(0.03, -0.02, 1.2),
+        ],
+    );
+    let noisy = NoiseModel::RelativeCoordinate { eps: 0.003 }.perturb_tracks(&clean, &mut rng(8));
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("t.yaml");
+    std::fs::write(&file, tracks_yaml(&noisy.frames)).unwrap();
+    let f = file.to_str().unwrap();
+    let out = orthocheck(&["reconstruct", "--input", f, "--json"]);
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let poor: Vec<&str> = v["depth_barely_determined"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|n| n.as_str().unwrap())
+        .collect();
+    // exactly the points whose depth's standard error exceeds a tenth of the body's size
+    let points = v["points"].as_object().unwrap();
+    let size = (points
+        .values()
+        .map(|x| {
+            x.as_array()
+                .unwrap()
+                .iter()
+                .map(|c| c.as_f64().unwrap().powi(2))
+                .sum::<f64>()
+        })
+        .sum::<f64>()
+        / points.len() as f64)
+        .sqrt();
+    let expected: Vec<&str> = v["points_std"]
+        .as_object()
+        .unwrap()
+        .iter()
+        .filter(|(_, e)| e[2].as_f64().unwrap() > 0.1 * size)
+        .map(|(n, _)| n.as_str())
+        .collect();
+    assert!(!poor.is_empty());
+    assert_eq!(
+        poor.iter().copied().collect::<BTreeSet<_>>(),
+        expected.into_iter().collect::<BTreeSet<_>>()
+    );
+    let text = orthocheck(&["reconstruct", "--input", f]);
+    let text = String::from_utf8(text.stdout).unwrap();
+    let line = text
+        .lines()
+        .find(|l| l.starts_with("depth barely determined"))
+        .unwrap();
+    assert!(poor.iter().all(|n| line.contains(n)), "{line}");
 }
 
 #[test]

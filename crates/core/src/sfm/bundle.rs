@@ -26,6 +26,7 @@ use nalgebra::{
     DMatrix, DVector, Matrix2x3, Matrix3, Rotation3, SMatrix, SVector, Vector2, Vector3,
 };
 
+pub use super::covariance::FrameStd;
 use super::{Error, Observations, Reconstruction, Units};
 use crate::algebra::cholesky::{cholesky_lower, cholesky_solve};
 use crate::algebra::damping::Damping;
@@ -123,6 +124,11 @@ pub struct BundleReport {
     /// (`sfm::covariance`); `None` when they are singular or no residual degree of freedom
     /// is left.
     pub points_std: Option<Vec<Vector3<f64>>>,
+    /// The standard errors of each frame's rotation (radians, relative to frame 1's) and
+    /// translation (input units, the points centred), with the points'; `None` with them.
+    pub frames_std: Option<Vec<FrameStd>>,
+    /// Why there are no standard errors, when they were asked for and could not be given.
+    pub no_standard_errors: Option<&'static str>,
 }
 
 /// A refined reconstruction and its report.
@@ -270,7 +276,11 @@ pub(super) struct Normal {
 
 /// The camera Jacobian of one residual: [−C [X]× | I₂], zero rotation columns for frame 1
 /// (its rotation is the gauge).
-fn camera_jacobian(c: &Matrix2x3<f64>, x: &Vector3<f64>, fixed: bool) -> SMatrix<f64, 2, 5> {
+pub(super) fn camera_jacobian(
+    c: &Matrix2x3<f64>,
+    x: &Vector3<f64>,
+    fixed: bool,
+) -> SMatrix<f64, 2, 5> {
     let mut j = SMatrix::<f64, 2, 5>::zeros();
     if !fixed {
         let rot = -(c * x.cross_matrix());
@@ -473,21 +483,36 @@ fn predicted(n: &Normal, st: &Step, lambda: f64, scaled: bool) -> f64 {
     (c + p) / 2.0
 }
 
-/// Each point's standard errors at the optimum `state` (`sfm::covariance`), in input units.
+/// Each point's and frame's standard errors at the optimum `state` (`sfm::covariance`), in
+/// input units, into `report`; or why there are none.
 fn standard_errors(
     by_point: &ByPoint,
     state: &State,
     huber: Option<f64>,
     scale: f64,
-) -> Option<Vec<Vector3<f64>>> {
+    report: &mut BundleReport,
+) {
     let frames_of: Vec<Vec<usize>> = by_point
         .iter()
         .map(|l| l.iter().map(|(f, _)| *f).collect())
         .collect();
     let at_optimum = normal(by_point, state, huber);
     let squares = cost(by_point, state, None);
-    super::covariance::points_std(&at_optimum, &frames_of, state, squares)
-        .map(|v| v.into_iter().map(|x| x * scale).collect())
+    match super::covariance::standard_errors(&at_optimum, &frames_of, state, squares) {
+        Ok(e) => {
+            report.points_std = Some(e.points.into_iter().map(|x| x * scale).collect());
+            report.frames_std = Some(
+                e.frames
+                    .into_iter()
+                    .map(|f| FrameStd {
+                        translation: f.translation * scale,
+                        ..f
+                    })
+                    .collect(),
+            );
+        }
+        Err(why) => report.no_standard_errors = Some(why),
+    }
 }
 
 /// Refine `start` (a reconstruction of `obs`' points and frames, in its units) by
@@ -530,7 +555,7 @@ pub fn bundle_adjust(
     }
     let (state, mut report) = levenberg_marquardt(&by_point, state, options, huber)?;
     if options.standard_errors {
-        report.points_std = standard_errors(&by_point, &state, huber, units.scale);
+        standard_errors(&by_point, &state, huber, units.scale, &mut report);
     }
     let s2 = units.scale * units.scale;
     report.costs.iter_mut().for_each(|c| *c *= s2);
@@ -651,6 +676,8 @@ fn levenberg_marquardt(
         converged: false,
         scaled_after: None,
         points_std: None,
+        frames_std: None,
+        no_standard_errors: None,
     };
     let plain = max_iterations.min(options.plain_iterations);
     let mut rule = Rule {

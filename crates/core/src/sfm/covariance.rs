@@ -1,5 +1,6 @@
-//! The uncertainty of every point after bundle adjustment: standard errors from the normal
-//! equations at the optimum, up to the gauge, as Ceres' covariance estimation gives them.
+//! The uncertainty of every point and frame after bundle adjustment: standard errors from
+//! the normal equations at the optimum, up to the gauge, as Ceres' covariance estimation
+//! gives them.
 //!
 //! The gauge (a common rotation, a common 3-D shift) is fixed by holding frame 1's rotation
 //! and point 1 (its three coordinates), which leaves JᵀJ regular; the points are then
@@ -8,10 +9,15 @@
 //! complement S (frame 1's two translations and the other frames' five parameters) and a
 //! point's block V_j, B_j = W_j V_j⁻¹:
 //!
-//! - Cov(x_i, x_j) = δ_ij V_j⁻¹ + B_iᵀ S⁻¹ B_j;
+//! - Cov(x_i, x_j) = δ_ij V_j⁻¹ + B_iᵀ S⁻¹ B_j, Cov(c, x_j) = −S⁻¹ B_j;
 //! - the centred point x_j − m, m the mean of all points (point 1 held constant), has
 //!   Cov(x_j) − Cov(x_j, m) − Cov(m, x_j) + Cov(m), where Cov(x_j, m) = (V_j⁻¹ + B_jᵀ S⁻¹ B̄)/p
 //!   and Cov(m) = (Σ V_i⁻¹ + B̄ᵀ S⁻¹ B̄)/p², B̄ = Σ B_i;
+//! - a frame's rotation, relative to frame 1's (which the gauge holds), is its three
+//!   parameters' block of S⁻¹; its translation, once the points are centred, is the image of
+//!   the centroid y = C m + t (C the rotation's first two rows), gauge-free like the centred
+//!   points, with Cov(y) = L S⁻¹ Lᵀ + L Cov(c, m) Cᵀ + C Cov(m, c) Lᵀ + C Cov(m) Cᵀ, L = ∂y/∂c
+//!   (a residual's camera Jacobian at m);
 //! - all times σ² = 2·cost / (2·observations − parameters), the residual variance.
 //!
 //! S⁻¹ is formed once ((5k)³ multiply-adds, the cost of one step); each point's terms cost
@@ -20,10 +26,33 @@
 
 use std::ops::AddAssign as _;
 
-use nalgebra::{DMatrix, Matrix3, Vector3};
+use nalgebra::{DMatrix, Matrix2, Matrix2x3, Matrix3, Vector2, Vector3};
 
 // chunks of points, and when one matrix product pays: as the adjustment's own Schur complement
-use super::bundle::{Normal, State, CHUNK, DENSE_GAIN};
+use super::bundle::{camera_jacobian, Normal, State, CHUNK, DENSE_GAIN};
+
+/// The standard errors of one frame (the state's units).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct FrameStd {
+    /// Of its rotation relative to frame 1's, about frame 1's camera axes x, y, z (radians,
+    /// the update R·exp([δ]×)); zero for frame 1, which fixes the frame of reference.
+    pub rotation: Vector3<f64>,
+    /// Of its image translation with the points centred (the centroid's image).
+    pub translation: Vector2<f64>,
+}
+
+/// The standard errors of every point and frame.
+pub(super) struct Errors {
+    pub(super) points: Vec<Vector3<f64>>,
+    pub(super) frames: Vec<FrameStd>,
+}
+
+/// Why no standard errors could be given.
+pub(super) const NO_FREEDOM: &str =
+    "the data leave no residual degree of freedom to estimate the noise from";
+/// Why no standard errors could be given.
+pub(super) const SINGULAR: &str =
+    "the normal equations are singular at the optimum: some point or frame is not fixed by the data";
 
 /// The rows of camera `f`'s parameters that are free: frame 1 (`f` = 0) keeps only its two
 /// translations (its rotation is the gauge).
@@ -52,24 +81,29 @@ fn camera_index(k: usize) -> (Vec<[Option<usize>; 5]>, usize) {
     (index, next)
 }
 
-/// The standard error of every centred point (in the state's units): `None` when the
-/// normal equations are singular (a point or frame the data do not fix) or the data leave
-/// no residual degree of freedom.
-pub(super) fn points_std(
+/// The standard error of every centred point and every frame (in the state's units), or
+/// why there are none: the normal equations are singular (a point or frame the data do not
+/// fix), or the data leave no residual degree of freedom.
+pub(super) fn standard_errors(
     n: &Normal,
     frames_of: &[Vec<usize>],
     state: &State,
     cost: f64,
-) -> Option<Vec<Vector3<f64>>> {
+) -> Result<Errors, &'static str> {
     let (p, k) = (state.pts.len(), state.rot.len());
     let observations: usize = frames_of.iter().map(Vec::len).sum();
     let (index, size) = camera_index(k);
     let parameters = size + 3 * p.saturating_sub(1);
     let dof = (2 * observations)
         .checked_sub(parameters)
-        .filter(|d| *d > 0)?;
+        .filter(|d| *d > 0)
+        .ok_or(NO_FREEDOM)?;
     let sigma2 = 2.0 * cost / dof as f64;
-    let vinv: Vec<Matrix3<f64>> = n.v.iter().map(|v| v.try_inverse()).collect::<Option<_>>()?;
+    let vinv: Vec<Matrix3<f64>> =
+        n.v.iter()
+            .map(|v| v.try_inverse())
+            .collect::<Option<_>>()
+            .ok_or(SINGULAR)?;
     let mut s = DMatrix::<f64>::zeros(size, size);
     for (f, u) in n.u.iter().enumerate() {
         for (a, ia) in index[f].iter().enumerate() {
@@ -98,13 +132,22 @@ pub(super) fn points_std(
             b_bar.row_mut(rx).add_assign(&b.m.row(x));
         }
     }
-    let sinv = crate::algebra::cholesky::cholesky_inverse(s)?;
+    let sinv = crate::algebra::cholesky::cholesky_inverse(s).ok_or(SINGULAR)?;
     let sb_bar = &sinv * &b_bar;
     let pf = p as f64;
     let v_sum: Matrix3<f64> = vinv.iter().skip(1).sum();
     let cov_m = (v_sum + to3(&(b_bar.transpose() * &sb_bar))) / (pf * pf);
     let forms = quadratic_forms(&sinv, &blocks);
-    let out = blocks
+    let centroid = Centroid {
+        sb_bar: &sb_bar,
+        cov: &cov_m,
+        at: state.pts.iter().sum::<Vector3<f64>>() / pf,
+        p: pf,
+    };
+    let frames = (0..k)
+        .map(|f| frame_std(&sinv, &index[f], &centroid, state, f, sigma2))
+        .collect();
+    let points = blocks
         .iter()
         .enumerate()
         .map(|(j, b)| {
@@ -119,7 +162,53 @@ pub(super) fn points_std(
             Vector3::from_fn(|i, _| (c[(i, i)].max(0.0) * sigma2).sqrt())
         })
         .collect();
-    Some(out)
+    Ok(Errors { points, frames })
+}
+
+/// What a frame's translation needs of the centroid m: S⁻¹ B̄ (so Cov(c, m) = −S⁻¹ B̄ / p),
+/// Cov(m), m itself and the number of points p.
+struct Centroid<'a> {
+    sb_bar: &'a DMatrix<f64>,
+    cov: &'a Matrix3<f64>,
+    at: Vector3<f64>,
+    p: f64,
+}
+
+/// Frame `f`'s standard errors (the module's formulas), its parameters at `index` in S⁻¹.
+fn frame_std(
+    sinv: &DMatrix<f64>,
+    index: &[Option<usize>; 5],
+    m: &Centroid,
+    state: &State,
+    f: usize,
+    sigma2: f64,
+) -> FrameStd {
+    let free: Vec<(usize, usize)> = index
+        .iter()
+        .enumerate()
+        .filter_map(|(r, i)| i.map(|i| (r, i)))
+        .collect();
+    let rotation = Vector3::from_fn(|a, _| {
+        free.iter()
+            .find(|(r, _)| *r == a)
+            .map_or(0.0, |(_, i)| (sinv[(*i, *i)].max(0.0) * sigma2).sqrt())
+    });
+    let c: Matrix2x3<f64> = state.rot[f].fixed_rows::<2>(0).into_owned();
+    let l = camera_jacobian(&c, &m.at, f == 0);
+    let mut cov = c * m.cov * c.transpose();
+    for &(r, i) in &free {
+        // L Cov(c, m) Cᵀ and its transpose, with Cov(c, m)'s row i = −(S⁻¹ B̄)ᵢ / p
+        let g = Vector3::from_fn(|x, _| -m.sb_bar[(i, x)] / m.p);
+        let cross: Matrix2<f64> = l.column(r) * (c * g).transpose();
+        cov += cross + cross.transpose();
+        for &(s, j) in &free {
+            cov += l.column(r) * l.column(s).transpose() * sinv[(i, j)];
+        }
+    }
+    FrameStd {
+        rotation,
+        translation: Vector2::from_fn(|a, _| (cov[(a, a)].max(0.0) * sigma2).sqrt()),
+    }
 }
 
 /// The union of a chunk's rows, and each point's rows' positions in it.

@@ -29,7 +29,7 @@ pub mod turntable;
 use nalgebra::{Matrix2x3, Matrix3, Vector2, Vector3};
 
 pub use crate::derivations::solver::Degenerate;
-pub use bundle::{bundle_adjust, Adjusted, BundleOptions, BundleReport};
+pub use bundle::{bundle_adjust, Adjusted, BundleOptions, BundleReport, FrameStd};
 pub use observations::Observations;
 pub(crate) use pipeline::fit;
 pub use pipeline::{reconstruct, Component, Options, Outcome};

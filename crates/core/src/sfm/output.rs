@@ -7,7 +7,11 @@
 //! `floor`, `observations`, `freedom` (σ's residual degrees of freedom, null for a RANSAC
 //! sample's and for a fit without residual freedom), `multiple` (the threshold in σ), and `relative` and `unit` (the mix of noise
 //! scales residuals were weighed by, λ and u²)) and `dropped` (`point`, `frame` counted from 1, `residual`);
-//! after a bundle adjustment `points_std` (each point's standard errors by name).
+//! after a bundle adjustment `points_std` (each point's standard errors by name),
+//! `depth_barely_determined` (the names of the points whose depth's standard error exceeds
+//! a tenth of the body's size) and `frames_std` (each frame's `frame`, `rotation_deg`: the
+//! standard errors of its rotation relative to frame 1's about frame 1's camera axes, in
+//! degrees, and `translation`), or `no_standard_errors` (why there are none).
 //! The document: with one group of frames, its reconstruction's fields; with several,
 //! `components`, one reconstruction each (its own frame of reference); and always
 //! `warnings` (strings), `dropped_points` (`name`, `why`) and `dropped_frames` (`frame`,
@@ -23,7 +27,7 @@ use super::judge::MIN_IMAGES;
 use super::pipeline::{group_label, Component};
 use super::robust::{Dropped, RobustReport};
 use super::threshold::{Mix, Source, Threshold, RAYLEIGH_MEDIAN};
-use super::{Frame, Outcome, Reconstruction};
+use super::{Frame, FrameStd, Outcome, Reconstruction};
 use crate::numfmt::sig;
 
 /// Dropped observations, points and frames the text lists by name (the JSON lists every
@@ -165,8 +169,43 @@ fn component_fields<M: SerializeMap>(m: &mut M, c: &Component) -> Result<(), M::
     }
     if let Some(sd) = points_std(c) {
         m.serialize_entry("points_std", &Named(&r.names, sd))?;
+        m.serialize_entry("depth_barely_determined", &poor_depths(c))?;
+    }
+    if let Some(sd) = frames_std(c) {
+        let numbered: Vec<FrameStdJson<'_>> = c
+            .frames
+            .iter()
+            .zip(sd)
+            .map(|(&n, e)| FrameStdJson(n, e))
+            .collect();
+        m.serialize_entry("frames_std", &numbered)?;
+    }
+    if let Some(why) = c.bundle.as_ref().and_then(|b| b.no_standard_errors) {
+        m.serialize_entry("no_standard_errors", why)?;
     }
     Ok(())
+}
+
+/// One frame's standard errors: its number in the input, `rotation_deg` (about frame 1's
+/// camera axes, relative to frame 1) and `translation` (the points centred).
+struct FrameStdJson<'a>(usize, &'a FrameStd);
+
+impl Serialize for FrameStdJson<'_> {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        let (r, t) = (self.1.rotation.map(f64::to_degrees), self.1.translation);
+        let mut st = s.serialize_struct("FrameStd", 3)?;
+        st.serialize_field("frame", &self.0)?;
+        st.serialize_field("rotation_deg", &[r.x, r.y, r.z])?;
+        st.serialize_field("translation", &[t.x, t.y])?;
+        st.end()
+    }
+}
+
+/// The frames' standard errors from the bundle adjustment, when it gave them for these
+/// frames.
+fn frames_std(c: &Component) -> Option<&[FrameStd]> {
+    let sd = c.bundle.as_ref()?.frames_std.as_deref()?;
+    (sd.len() == c.reconstruction.frames.len()).then_some(sd)
 }
 
 /// Each point's standard errors, by name in the tracks' order.
@@ -378,22 +417,49 @@ fn component_text(s: &mut String, c: &Component) {
             poor.join(", ")
         );
     }
-    let _ = writeln!(s, "frames (rotation rows; translation):");
-    for (number, fr) in c.frames.iter().zip(&r.frames) {
-        let rows: Vec<String> = (0..3)
-            .map(|i| triple((0..3).map(|j| fr.rotation[(i, j)])))
-            .collect();
-        let _ = writeln!(
-            s,
-            "  {number:>3}  {}  {}",
-            rows.join(" "),
-            triple([fr.translation.x, fr.translation.y])
-        );
-    }
+    frames_text(s, c);
     let _ = writeln!(
         s,
         "mirror (Necker) solution: every point's z and every rotation R ↦ DRD, D = diag(1, 1, −1), give the same images"
     );
+}
+
+/// The frames of one component's text: rotation rows, translation and their standard errors
+/// (or why there are none).
+fn frames_text(s: &mut String, c: &Component) {
+    let r = &c.reconstruction;
+    if let Some(why) = c.bundle.as_ref().and_then(|b| b.no_standard_errors) {
+        let _ = writeln!(s, "no standard errors: {why}");
+    }
+    let fsd = frames_std(c);
+    let _ = writeln!(
+        s,
+        "frames (rotation rows; translation{}):",
+        if fsd.is_some() {
+            "; ± standard errors of the rotation relative to frame 1's, degrees about its axes, and of the translation"
+        } else {
+            ""
+        }
+    );
+    for (i, (number, fr)) in c.frames.iter().zip(&r.frames).enumerate() {
+        let rows: Vec<String> = (0..3)
+            .map(|i| triple((0..3).map(|j| fr.rotation[(i, j)])))
+            .collect();
+        let err = fsd.map_or(String::new(), |e| {
+            let d = e[i].rotation.map(f64::to_degrees);
+            format!(
+                "  ± {}°  ± {}",
+                triple([d.x, d.y, d.z]),
+                triple([e[i].translation.x, e[i].translation.y])
+            )
+        });
+        let _ = writeln!(
+            s,
+            "  {number:>3}  {}  {}{err}",
+            rows.join(" "),
+            triple([fr.translation.x, fr.translation.y])
+        );
+    }
 }
 
 /// The plain-text table of an outcome: a `warning:` line each, the dropped points and

@@ -1,16 +1,29 @@
-//! The standard errors the bundle adjustment reports for every point match the spread of
-//! the estimates over seeded noise replicates of one scene: complete tracks (the camera
-//! system's point terms summed chunk by chunk in one product) and short tracks in many
-//! frames (summed point by point).
+//! The standard errors the bundle adjustment reports for every point and frame match the
+//! spread of the estimates over seeded noise replicates of one scene: complete tracks (the
+//! camera system's point terms summed chunk by chunk in one product) and short tracks in
+//! many frames (summed point by point).
 
-use nalgebra::Vector3;
+use nalgebra::{Matrix3, Rotation3, Vector3};
 use orthocheck_core::model::{rng, Scene, Tracks};
 use orthocheck_core::sfm::{bundle_adjust, reconstruct, BundleOptions, Observations, Options};
 use rand::Rng;
 
+/// One replicate's estimates as rows of numbers, each with the standard error reported for
+/// it: every point's three coordinates, then every frame's rotation (the angles about frame
+/// 1's axes that take the first replicate's rotation to this one's, R₀·exp([δ]×)) and its
+/// two translations.
+struct Replicate {
+    values: Vec<f64>,
+    reported: Vec<f64>,
+}
+
+/// The first replicate's points and rotations, which the others are compared with.
+type Pose = (Vec<Vector3<f64>>, Vec<Matrix3<f64>>);
+
 /// The largest ratio (or inverse ratio) of the estimates' spread to the mean reported
-/// standard error over every point and coordinate, from `replicates` noisy copies of
-/// `clean` (uniform noise in ±`a`) seen where `seen` says: (ratio, point, coordinate). The
+/// standard error over every point's coordinates and every frame's parameters, from
+/// `replicates` noisy copies of `clean` (uniform noise in ±`a`) seen where `seen` says:
+/// (ratio, which: a point's coordinate, or a frame's parameter after all of them). The
 /// first copy is reconstructed by the pipeline; every copy is adjusted from that fit, so the
 /// estimates are the adjustment's optimum of each, in one basin, whatever the starts.
 fn worst_ratio(
@@ -18,10 +31,10 @@ fn worst_ratio(
     seen: &dyn Fn(usize, usize) -> bool,
     a: f64,
     replicates: u64,
-) -> (f64, usize, usize) {
-    let mut estimates: Vec<Vec<Vector3<f64>>> = Vec::new();
-    let mut reported: Vec<Vec<Vector3<f64>>> = Vec::new();
+) -> (f64, String) {
+    let mut all: Vec<Replicate> = Vec::new();
     let mut start = None;
+    let mut first: Option<Pose> = None;
     for r in 0..replicates {
         let mut g = rng(1000 + r);
         let mut t = clean.clone();
@@ -38,46 +51,76 @@ fn worst_ratio(
                 .reconstruction
         });
         let o = bundle_adjust(&obs, from, &BundleOptions::default()).unwrap();
-        let mut e = o.reconstruction.points.clone();
+        let mut pts = o.reconstruction.points.clone();
+        let mut rots: Vec<Matrix3<f64>> =
+            o.reconstruction.frames.iter().map(|f| f.rotation).collect();
+        let (p0, r0) = first.get_or_insert_with(|| (pts.clone(), rots.clone()));
         // the mirror (Necker) twin gives the same images: take the one nearer the first
-        if let Some(first) = estimates.first() {
-            let mirrored: Vec<Vector3<f64>> =
-                e.iter().map(|x| Vector3::new(x.x, x.y, -x.z)).collect();
-            let dist = |v: &[Vector3<f64>]| -> f64 {
-                v.iter()
-                    .zip(first)
-                    .map(|(x, y)| (x - y).norm_squared())
-                    .sum()
-            };
-            if dist(&mirrored) < dist(&e) {
-                e = mirrored;
-            }
+        let d = Matrix3::from_diagonal(&Vector3::new(1.0, 1.0, -1.0));
+        let mirrored: Vec<Vector3<f64>> = pts.iter().map(|x| d * x).collect();
+        let dist = |v: &[Vector3<f64>]| -> f64 {
+            v.iter()
+                .zip(&*p0)
+                .map(|(x, y)| (x - y).norm_squared())
+                .sum()
+        };
+        if dist(&mirrored) < dist(&pts) {
+            pts = mirrored;
+            rots.iter_mut().for_each(|r| *r = d * *r * d);
         }
-        estimates.push(e);
-        reported.push(o.report.points_std.expect("standard errors"));
+        let sd_p = o.report.points_std.expect("standard errors of the points");
+        let sd_f = o.report.frames_std.expect("standard errors of the frames");
+        let mut values: Vec<f64> = pts.iter().flat_map(|x| [x.x, x.y, x.z]).collect();
+        let mut reported: Vec<f64> = sd_p.iter().flat_map(|e| [e.x, e.y, e.z]).collect();
+        for ((rot, fr), (e, r0)) in rots
+            .iter()
+            .zip(&o.reconstruction.frames)
+            .zip(sd_f.iter().zip(&*r0))
+        {
+            let delta = Rotation3::from_matrix_unchecked(r0.transpose() * rot).scaled_axis();
+            values.extend([
+                delta.x,
+                delta.y,
+                delta.z,
+                fr.translation.x,
+                fr.translation.y,
+            ]);
+            reported.extend([e.rotation.x, e.rotation.y, e.rotation.z]);
+            reported.extend([e.translation.x, e.translation.y]);
+        }
+        all.push(Replicate { values, reported });
     }
     let n = replicates as f64;
-    let mut worst: (f64, usize, usize) = (1.0, 0, 0);
-    for j in 0..clean.names.len() {
-        for c in 0..3 {
-            let xs: Vec<f64> = estimates.iter().map(|e| e[j][c]).collect();
-            let mean = xs.iter().sum::<f64>() / n;
-            let spread = (xs.iter().map(|x| (x - mean).powi(2)).sum::<f64>() / (n - 1.0)).sqrt();
-            let said = reported.iter().map(|e| e[j][c]).sum::<f64>() / n;
-            let ratio = spread / said;
-            if (ratio.ln()).abs() > worst.0.ln().abs() {
-                worst = (ratio, j, c);
-            }
+    let points = 3 * clean.names.len();
+    let mut worst = (1.0_f64, String::new());
+    for i in 0..all[0].values.len() {
+        let xs: Vec<f64> = all.iter().map(|r| r.values[i]).collect();
+        let mean = xs.iter().sum::<f64>() / n;
+        let spread = (xs.iter().map(|x| (x - mean).powi(2)).sum::<f64>() / (n - 1.0)).sqrt();
+        let said = all.iter().map(|r| r.reported[i]).sum::<f64>() / n;
+        // frame 1's rotation is the frame of reference: no spread, no error reported
+        if said == 0.0 && spread == 0.0 {
+            continue;
+        }
+        let ratio = spread / said;
+        // a ratio that is not a number is the worst of all
+        if ratio.is_nan() || ratio.ln().abs() > worst.0.ln().abs() {
+            let which = if i < points {
+                format!("point {} coordinate {}", i / 3, i % 3)
+            } else {
+                format!("frame {} parameter {}", (i - points) / 5, (i - points) % 5)
+            };
+            worst = (ratio, which);
         }
     }
     worst
 }
 
 /// The worst ratio of [`worst_ratio`] is within a factor of 1.5 either way.
-fn within_a_factor_of_one_and_a_half((ratio, point, coordinate): (f64, usize, usize)) {
+fn within_a_factor_of_one_and_a_half((ratio, which): (f64, String)) {
     assert!(
         (1.0 / 1.5..=1.5).contains(&ratio),
-        "point {point} coordinate {coordinate}: spread / reported = {ratio}"
+        "{which}: spread / reported = {ratio}"
     );
 }
 
@@ -101,4 +144,20 @@ fn standard_errors_of_short_tracks_match_the_spread_too() {
     let seen = move |f: usize, j: usize| (f + k - first[j]) % k < 4;
     let worst = worst_ratio(&clean, &seen, 0.003, 150);
     within_a_factor_of_one_and_a_half(worst);
+}
+
+#[test]
+fn no_standard_errors_where_a_point_is_not_fixed() {
+    // the last point seen in one frame only: its depth is free, the normal equations singular
+    let clean = Scene::random(8, 4, 5).tracks();
+    let obs = Observations::seen_where(&clean, |f, j| j < 7 || f == 0);
+    let start = reconstruct(&Observations::from_tracks(&clean), &Options::default())
+        .unwrap()
+        .into_single()
+        .unwrap()
+        .reconstruction;
+    let o = bundle_adjust(&obs, &start, &BundleOptions::default()).unwrap();
+    assert!(o.report.points_std.is_none() && o.report.frames_std.is_none());
+    let why = o.report.no_standard_errors.expect("a reason");
+    assert!(why.contains("singular"), "{why}");
 }
