@@ -13,6 +13,8 @@
 //! - `turntable_500x36w5`: `synth --turntable --points 500 --frames 36 --window 5 --noise
 //!   0.001 --seed 1` (30° elevation), from the pipeline's start for tracks with gaps
 //!   (variable projection from the chained pairs);
+//! - `family_largest`: the scene of the turntable family (`turntable_family`, seed 1, its 400
+//!   scenes) with the most observations, from the pipeline's start;
 //! - every `--csv NAME PATH`: a tracks file (gaps allowed) read as `reconstruct` reads it,
 //!   from the pipeline's start;
 //!
@@ -50,7 +52,7 @@ use orthocheck::sfm::turntable::Turntable;
 use orthocheck::sfm::{
     bundle_adjust, reconstruct, tomasi_kanade, BundleOptions, Observations, Options, Reconstruction,
 };
-use orthocheck_benches::problem_text;
+use orthocheck_benches::{family_scene, family_seed, problem_text};
 
 /// The adjustment alone: Ceres computes no standard errors.
 fn loop_only() -> BundleOptions {
@@ -79,6 +81,40 @@ fn timed<T>(runs: usize, mut f: impl FnMut() -> T) -> (f64, T) {
     }
     secs.sort_by(f64::total_cmp);
     (secs[secs.len() / 2], last.expect("one run at least"))
+}
+
+/// The turntable family's largest problem: of seed 1's 400 scenes, by observations, the
+/// first whose points seen twice or more the pipeline takes whole (one group, nothing
+/// dropped); its number and those observations.
+fn family_largest() -> (u64, Observations) {
+    let mut scenes: Vec<(u64, Observations)> = (0..400)
+        .map(|s| {
+            let obs = family_scene(family_seed(1, s)).obs;
+            let twice: Vec<usize> = obs
+                .by_point()
+                .iter()
+                .enumerate()
+                .filter(|(_, seen)| seen.len() >= 2)
+                .map(|(j, _)| j)
+                .collect();
+            (s, obs.select_points(&twice))
+        })
+        .collect();
+    scenes.sort_by_key(|(s, obs)| (std::cmp::Reverse(obs.count()), *s));
+    let options = Options {
+        bundle: false,
+        ..Options::default()
+    };
+    scenes
+        .into_iter()
+        .find(|(_, obs)| {
+            reconstruct(obs, &options).is_ok_and(|o| {
+                o.dropped_points.is_empty()
+                    && o.dropped_frames.is_empty()
+                    && o.components.len() == 1
+            })
+        })
+        .expect("a scene taken whole")
 }
 
 /// The start `reconstruct` makes before its bundle adjustment (the frames here form one
@@ -265,6 +301,17 @@ fn main() {
             longer,
             &reach,
         );
+    }
+    if wanted("family_largest") {
+        let (s, obs) = family_largest();
+        eprintln!(
+            "family_largest: scene {s} of seed 1, {} points in {} frames, {} observations",
+            obs.names.len(),
+            obs.frames.len(),
+            obs.count()
+        );
+        let start = pipeline_start(&obs);
+        export(&dir, "family_largest", &obs, &start, repeat, longer, &reach);
     }
     let mut i = 0;
     while i < args.len() {

@@ -20,89 +20,17 @@
 //! (T) or neither (?), within 1°; `CUTS=1` with it tries reflecting the fit after each frame
 //! (docs/limits.md).
 
-use nalgebra::{Rotation3, Vector2, Vector3};
-use orthocheck::model::{rng, Body, Motion, NoiseModel, Scene};
+use nalgebra::Vector3;
 use orthocheck::sfm::{
-    bundle_adjust, reconstruct, BundleOptions, Component, Frame, Observations, Options,
-    Reconstruction,
+    bundle_adjust, reconstruct, BundleOptions, Component, Observations, Options, Reconstruction,
 };
-use rand::Rng;
+use orthocheck_benches::{family_scene, family_seed, FamilyScene};
 
 /// The adjustment alone: the peers compute no standard errors.
 fn loop_only() -> BundleOptions {
     BundleOptions {
         standard_errors: false,
         ..BundleOptions::default()
-    }
-}
-
-struct Made {
-    obs: Observations,
-    truth: Reconstruction,
-    elevation: f64,
-    longest: usize,
-}
-
-fn scene(seed: u64) -> Made {
-    let mut g = rng(seed);
-    let p = g.random_range(50..=500usize);
-    let longest = g.random_range(2..=8usize);
-    let missing = g.random_range(0.80..0.92);
-    let k = (((longest + 1) as f64 / (2.0 * (1.0 - missing))).round() as usize).clamp(20, 100);
-    let elevation: f64 = g.random_range(10.0f64..70.0);
-    let eps = g.random_range(0.001..0.01);
-    let points: Vec<Vector3<f64>> = (0..p)
-        .map(|_| Vector3::from_fn(|_, _| g.random_range(-1.0..1.0)))
-        .collect();
-    let tilt = Rotation3::from_axis_angle(&Vector3::x_axis(), elevation.to_radians());
-    let motions: Vec<Motion> = (0..k)
-        .map(|f| {
-            let spin = Rotation3::from_axis_angle(
-                &Vector3::y_axis(),
-                std::f64::consts::TAU * f as f64 / k as f64,
-            );
-            Motion {
-                rotation: tilt * spin * tilt.inverse(),
-                translation: Vector2::zeros(),
-            }
-        })
-        .collect();
-    let names: Vec<String> = (1..=p).map(|j| format!("P{j}")).collect();
-    let s = Scene {
-        body: Body {
-            names,
-            points: points.clone(),
-        },
-        motions: motions.clone(),
-    };
-    let tracks = NoiseModel::RelativeCoordinate { eps }.perturb_tracks(&s.tracks(), &mut g);
-    let spans: Vec<(usize, usize)> = (0..p)
-        .map(|_| (g.random_range(0..k), g.random_range(1..=longest)))
-        .collect();
-    let obs = Observations::seen_where(&tracks, |f, j| (f + k - spans[j].0) % k < spans[j].1);
-    let c = points.iter().sum::<Vector3<f64>>() / p as f64;
-    let truth = Reconstruction {
-        names: s.body.names.clone(),
-        points: points.iter().map(|x| x - c).collect(),
-        frames: motions
-            .iter()
-            .map(|m| {
-                let r = *m.rotation.matrix();
-                Frame {
-                    rotation: r,
-                    translation: (r * c).xy(),
-                }
-            })
-            .collect(),
-        method: Vec::new(),
-        conditioning: None,
-        warnings: Vec::new(),
-    };
-    Made {
-        obs,
-        truth,
-        elevation,
-        longest,
     }
 }
 
@@ -126,7 +54,7 @@ fn main() {
         if only.as_ref().is_some_and(|o| !o.contains(&s)) {
             continue;
         }
-        let m = scene(seed.wrapping_mul(7_919).wrapping_add(s));
+        let m = family_scene(family_seed(seed, s));
         let band = ((m.elevation - 10.0) / 20.0).floor().clamp(0.0, 2.0) as usize;
         let cell = &mut table[band][m.longest - 2];
         cell.0 += 1;
@@ -193,7 +121,7 @@ fn main() {
 /// (`orthocheck_benches::problem_text`): `DIR/family_S_G_truth.txt` from the truth, with the
 /// truth-started adjustment as orthocheck's result, and `DIR/family_S_G_pipeline.txt` from
 /// the pipeline's fit (S the scene, G the group).
-fn costs(m: &Made, c: &Component, (s, g): (u64, usize)) -> (Option<f64>, Option<f64>) {
+fn costs(m: &FamilyScene, c: &Component, (s, g): (u64, usize)) -> (Option<f64>, Option<f64>) {
     let index: std::collections::HashMap<&str, usize> = m
         .obs
         .names

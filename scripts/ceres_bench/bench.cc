@@ -35,7 +35,7 @@
 // parameters: function_tolerance = parameter_tolerance = 4ε (orthocheck stops when a step
 // lowers the cost by at most 4ε·cost or is shorter than 4ε·‖x‖), gradient_tolerance = 0
 // (orthocheck has no gradient test); "default" is Ceres' defaults (1e-6, 1e-8, 1e-10).
-// max_num_iterations = 200 in both (orthocheck: 100 accepted steps at most).
+// max_num_iterations = 200 in both (orthocheck: 200 accepted steps at most, `sfm::bundle::MAX_ITERATIONS`).
 
 #include <algorithm>
 #include <array>

@@ -1,18 +1,20 @@
 #!/bin/sh
-# orthocheck's bundle adjustment beside Ceres on the same problems (docs/limits.md, "Bundle
-# adjustment's cost"): builds the C++ benchmark, writes the problems, times orthocheck's
+# orthocheck's bundle adjustment beside Ceres on the same problems (docs/architecture.md,
+# "Bundle adjustment beside Ceres"): builds the C++ benchmark, writes the problems, times orthocheck's
 # adjustment and every Ceres configuration, REPEAT (default 5) runs each, medians.
 #
 #   scripts/ceres_bench/run.sh [OUTDIR]        (default /tmp/ceres_bench)
 #
 # Problems: dense_250x200 (250 points in 200 frames, 1 % noise, the Tomasi–Kanade start),
 # turntable_500x36w5 (synth --turntable --points 500 --frames 36 --window 5 --noise 0.001
-# --seed 1) and tt100k (scripts/cli_limits.py's turntable of 100,000 points each in 2 of 100
-# frames, 0.2 % noise: the largest turntable the project runs, at BUNDLE_OBSERVATIONS), the
-# turntables from the pipeline's own start (variable projection from the chained pairs).
+# --seed 1), family_largest (the turntable family's scene with the most observations, seed 1,
+# benches/turntable_family.rs) and tt100k (scripts/cli_limits.py's turntable of 100,000
+# points each in 2 of 100 frames, 0.2 % noise: the largest turntable the project runs, at
+# BUNDLE_OBSERVATIONS), the turntables from the pipeline's own start (variable projection
+# from the chained pairs).
 # PROBLEMS="…" picks some; REACH_TT100K="C1,C2" also times how long orthocheck takes to
 # bring tt100k's cost down to each Cᵢ (e.g. Ceres' final costs, which it reaches only after
-# far more than the pipeline's 100 iterations); SKIP_CERES=1 times orthocheck only.
+# far more than the pipeline's 200 iterations); SKIP_CERES=1 times orthocheck only.
 #
 # Configurations of Ceres (bench.cc): SPARSE_SCHUR and DENSE_SCHUR, 1 and 2 threads, the
 # rotation a quaternion (QuaternionManifold) or orthocheck's R·exp([δ]×), tolerances at
@@ -24,7 +26,7 @@ here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../.." && pwd)
 out=${1:-/tmp/ceres_bench}
 repeat=${REPEAT:-5}
-problems=${PROBLEMS:-dense_250x200 turntable_500x36w5 tt100k}
+problems=${PROBLEMS:-dense_250x200 turntable_500x36w5 family_largest tt100k}
 mkdir -p "$out/problems"
 
 "$here/build.sh"
