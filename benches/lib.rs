@@ -65,6 +65,10 @@ pub struct Tally {
     pub far: usize,
     /// Of them, those found.
     pub found: usize,
+    /// Scenes with a bad item beyond 10 σ.
+    pub far_scenes: usize,
+    /// Of them, those where every such item was found.
+    pub found_scenes: usize,
     /// Scenes refused.
     pub refused: usize,
 }
@@ -81,10 +85,23 @@ pub fn band(n: usize) -> usize {
     }
 }
 
-/// The bands and their sum as a Markdown table under `header` (its five column names).
+impl Tally {
+    /// One scene's bad items beyond 10 σ: `far` of them, `found` of those found.
+    pub fn far_in_scene(&mut self, far: usize, found: usize) {
+        self.far += far;
+        self.found += found;
+        if far > 0 {
+            self.far_scenes += 1;
+            self.found_scenes += usize::from(found == far);
+        }
+    }
+}
+
+/// The bands and their sum as a Markdown table under `header` (its five column names; a
+/// sixth is added: the scenes with a bad item beyond 10 σ where every such item was found).
 pub fn print_bands(header: &str, bands: &[Tally; 3]) {
-    println!("{header}");
-    println!("|---|---:|---:|---:|---:|");
+    println!("{header} scenes with one beyond 10 σ: every one found |");
+    println!("|---|---:|---:|---:|---:|---:|");
     let mut all = Tally::default();
     for (name, b) in BANDS.iter().zip(bands) {
         print_row(name, b);
@@ -93,6 +110,8 @@ pub fn print_bands(header: &str, bands: &[Tally; 3]) {
         all.lost += b.lost;
         all.far += b.far;
         all.found += b.found;
+        all.far_scenes += b.far_scenes;
+        all.found_scenes += b.found_scenes;
         all.refused += b.refused;
     }
     print_row("all", &all);
@@ -101,7 +120,7 @@ pub fn print_bands(header: &str, bands: &[Tally; 3]) {
 fn print_row(name: &str, b: &Tally) {
     let pct = |a: usize, n: usize| 100.0 * a as f64 / n.max(1) as f64;
     println!(
-        "| {name} | {} | {} of {} ({:.2} %) | {} of {} ({:.2} %) | {} |",
+        "| {name} | {} | {} of {} ({:.2} %) | {} of {} ({:.2} %) | {} | {} of {} ({:.2} %) |",
         b.scenes,
         b.lost,
         b.good,
@@ -109,7 +128,10 @@ fn print_row(name: &str, b: &Tally) {
         b.found,
         b.far,
         pct(b.found, b.far),
-        b.refused
+        b.refused,
+        b.found_scenes,
+        b.far_scenes,
+        pct(b.found_scenes, b.far_scenes)
     );
 }
 

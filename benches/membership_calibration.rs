@@ -103,12 +103,9 @@ fn tally(s: u64, clean: &[[Vector2<f64>; 2]], pts: &[[Vector2<f64>; 2]], band: &
     band.scenes += 1;
     band.good += m;
     band.lost += judged[..m].iter().filter(|j| !j.member).count();
-    for j in m..pts.len() {
-        if d[j] > 10.0 * sigma {
-            band.far += 1;
-            band.found += usize::from(!judged[j].member);
-        }
-    }
+    let far: Vec<usize> = (m..pts.len()).filter(|&j| d[j] > 10.0 * sigma).collect();
+    let found = far.iter().filter(|&&j| !judged[j].member).count();
+    band.far_in_scene(far.len(), found);
     let refused = identity::members_rigid(&f1, &f2, &inside, tolerance.largest(&judged)).is_some();
     if refused && std::env::var_os("SHOW_REFUSED").is_some() {
         eprintln!(

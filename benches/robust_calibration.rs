@@ -131,12 +131,9 @@ fn main() {
             tally.lost += 1;
             row[usize::from(!beside(&bad, p))] += 1;
         }
-        for p in &bad {
-            if err(p) > 10.0 * sigma {
-                tally.far += 1;
-                tally.found += usize::from(dropped.contains(p));
-            }
-        }
+        let far: Vec<&(usize, usize)> = bad.iter().filter(|p| err(p) > 10.0 * sigma).collect();
+        let found = far.iter().filter(|p| dropped.contains(p)).count();
+        tally.far_in_scene(far.len(), found);
     }
     print_bands(
         "| points | scenes | good observations dropped | bad > 10 σ dropped | refused |",
