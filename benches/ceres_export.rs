@@ -49,10 +49,11 @@ use std::time::Instant;
 
 use orthocheck::model::{rng, NoiseModel, Scene};
 use orthocheck::sfm::turntable::Turntable;
+use orthocheck::sfm::turntable::{family_scene, family_seed};
 use orthocheck::sfm::{
     bundle_adjust, reconstruct, tomasi_kanade, BundleOptions, Observations, Options, Reconstruction,
 };
-use orthocheck_benches::{family_scene, family_seed, problem_text};
+use orthocheck_benches::problem_text;
 
 /// The adjustment alone: Ceres computes no standard errors.
 fn loop_only() -> BundleOptions {

@@ -21,10 +21,10 @@
 //! (docs/limits.md).
 
 use nalgebra::Vector3;
+use orthocheck::sfm::turntable::{family_scene, family_seed, FamilyScene};
 use orthocheck::sfm::{
     bundle_adjust, reconstruct, BundleOptions, Component, Observations, Options, Reconstruction,
 };
-use orthocheck_benches::{family_scene, family_seed, FamilyScene};
 
 /// The adjustment alone: the peers compute no standard errors.
 fn loop_only() -> BundleOptions {
