@@ -35,7 +35,7 @@ use super::bundle::{camera_jacobian, Normal, State, CHUNK, DENSE_GAIN};
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct FrameStd {
     /// Of its rotation relative to frame 1's, about frame 1's camera axes x, y, z (radians,
-    /// the update R·exp([δ]×)); zero for frame 1, which fixes the frame of reference.
+    /// the update R·exp(\[δ\]×)); zero for frame 1, which fixes the frame of reference.
     pub rotation: Vector3<f64>,
     /// Of its image translation with the points centred (the centroid's image).
     pub translation: Vector2<f64>,
