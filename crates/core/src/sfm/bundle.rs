@@ -72,8 +72,9 @@ pub struct BundleOptions {
     /// minimised by iteratively reweighted least squares: weight 1 within the corner, k/‖r‖
     /// beyond it; `None`: least squares.
     pub huber: Option<f64>,
-    /// Whether to compute each point's standard errors at the optimum
-    /// ([`BundleReport::points_std`]); they cost about as much as the adjustment itself.
+    /// Whether to compute each point's and frame's standard errors at the optimum
+    /// ([`BundleReport::points_std`], [`BundleReport::frames_std`]); they cost about as much
+    /// as the adjustment itself.
     pub standard_errors: bool,
     /// Iterations damped by λI before the damping is scaled by diag(JᵀJ)
     /// ([`PLAIN_ITERATIONS`]); `max_iterations` or more: λI throughout, 0: scaled throughout.
@@ -124,8 +125,8 @@ pub struct BundleReport {
     /// (`sfm::covariance`); `None` when they are singular or no residual degree of freedom
     /// is left.
     pub points_std: Option<Vec<Vector3<f64>>>,
-    /// The standard errors of each frame's rotation (radians, relative to frame 1's) and
-    /// translation (input units, the points centred), with the points'; `None` with them.
+    /// The standard errors of each frame's rotation (radians, relative to the first frame's)
+    /// and translation (input units, the points centred), with the points'; `None` with them.
     pub frames_std: Option<Vec<FrameStd>>,
     /// Why there are no standard errors, when they were asked for and could not be given.
     pub no_standard_errors: Option<&'static str>,

@@ -30,12 +30,15 @@ use nalgebra::{DMatrix, Matrix2, Matrix2x3, Matrix3, Vector2, Vector3};
 
 // chunks of points, and when one matrix product pays: as the adjustment's own Schur complement
 use super::bundle::{camera_jacobian, Normal, State, CHUNK, DENSE_GAIN};
+use crate::algebra::psd3_nonsingular;
 
 /// The standard errors of one frame (the state's units).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct FrameStd {
-    /// Of its rotation relative to frame 1's, about frame 1's camera axes x, y, z (radians,
-    /// the update R·exp(\[δ\]×)); zero for frame 1, which fixes the frame of reference.
+    /// Of its rotation relative to the first frame's, about the axes the points are given in
+    /// (the first frame's camera axes when its rotation is the identity, as the pipeline
+    /// makes it) x, y, z (radians, the update R·exp(\[δ\]×)); zero for the first frame,
+    /// which fixes the frame of reference.
     pub rotation: Vector3<f64>,
     /// Of its image translation with the points centred (the centroid's image).
     pub translation: Vector2<f64>,
@@ -99,9 +102,11 @@ pub(super) fn standard_errors(
         .filter(|d| *d > 0)
         .ok_or(NO_FREEDOM)?;
     let sigma2 = 2.0 * cost / dof as f64;
+    // a point its views do not fix has a V_j singular up to rounding, not exactly: the same
+    // test as the adjustment's re-solve (V sums 2 × 3 products of unit rows)
     let vinv: Vec<Matrix3<f64>> =
         n.v.iter()
-            .map(|v| v.try_inverse())
+            .map(|v| psd3_nonsingular(v, 3.0).then(|| v.try_inverse()).flatten())
             .collect::<Option<_>>()
             .ok_or(SINGULAR)?;
     let mut s = DMatrix::<f64>::zeros(size, size);

@@ -7,11 +7,12 @@
 //! `floor`, `observations`, `freedom` (σ's residual degrees of freedom, null for a RANSAC
 //! sample's and for a fit without residual freedom), `multiple` (the threshold in σ), and `relative` and `unit` (the mix of noise
 //! scales residuals were weighed by, λ and u²)) and `dropped` (`point`, `frame` counted from 1, `residual`);
-//! after a bundle adjustment `points_std` (each point's standard errors by name),
-//! `depth_barely_determined` (the names of the points whose depth's standard error exceeds
-//! a tenth of the body's size) and `frames_std` (each frame's `frame`, `rotation_deg`: the
-//! standard errors of its rotation relative to frame 1's about frame 1's camera axes, in
-//! degrees, and `translation`), or `no_standard_errors` (why there are none).
+//! after a bundle adjustment `iterations`, `points_std` (each point's standard errors by
+//! name), `depth_barely_determined` (the names of the points whose depth's standard error
+//! exceeds a tenth of the body's size) and `frames_std` (each frame's `frame`,
+//! `rotation_deg`: the standard errors of its rotation relative to the group's first
+//! frame's, about that frame's camera axes, in degrees, and `translation`), or
+//! `no_standard_errors` (why there are none).
 //! The document: with one group of frames, its reconstruction's fields; with several,
 //! `components`, one reconstruction each (its own frame of reference); and always
 //! `warnings` (strings), `dropped_points` (`name`, `why`) and `dropped_frames` (`frame`,
@@ -186,8 +187,9 @@ fn component_fields<M: SerializeMap>(m: &mut M, c: &Component) -> Result<(), M::
     Ok(())
 }
 
-/// One frame's standard errors: its number in the input, `rotation_deg` (about frame 1's
-/// camera axes, relative to frame 1) and `translation` (the points centred).
+/// One frame's standard errors: its number in the input, `rotation_deg` (about the group's
+/// first frame's camera axes, relative to that frame) and `translation` (the points
+/// centred).
 struct FrameStdJson<'a>(usize, &'a FrameStd);
 
 impl Serialize for FrameStdJson<'_> {
@@ -388,6 +390,9 @@ fn component_text(s: &mut String, c: &Component) {
     if let Some(r) = &c.robust {
         robust_lines(s, r);
     }
+    if let Some(why) = c.bundle.as_ref().and_then(|b| b.no_standard_errors) {
+        let _ = writeln!(s, "no standard errors: {why}");
+    }
     let sd = points_std(c);
     let _ = writeln!(
         s,
@@ -428,17 +433,17 @@ fn component_text(s: &mut String, c: &Component) {
 /// (or why there are none).
 fn frames_text(s: &mut String, c: &Component) {
     let r = &c.reconstruction;
-    if let Some(why) = c.bundle.as_ref().and_then(|b| b.no_standard_errors) {
-        let _ = writeln!(s, "no standard errors: {why}");
-    }
     let fsd = frames_std(c);
     let _ = writeln!(
         s,
         "frames (rotation rows; translation{}):",
         if fsd.is_some() {
-            "; ± standard errors of the rotation relative to frame 1's, degrees about its axes, and of the translation"
+            format!(
+                "; ± standard errors of the rotation relative to frame {first}'s, degrees about frame {first}'s camera axes, and of the translation",
+                first = c.frames[0]
+            )
         } else {
-            ""
+            String::new()
         }
     );
     for (i, (number, fr)) in c.frames.iter().zip(&r.frames).enumerate() {
