@@ -433,12 +433,7 @@ fn reconstruct_names_the_points_whose_depth_is_barely_determined() {
     let f = file.to_str().unwrap();
     let out = orthocheck(&["reconstruct", "--input", f, "--json"]);
     let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
-    let poor: Vec<&str> = v["depth_barely_determined"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .map(|n| n.as_str().unwrap())
-        .collect();
+    let poor = strings(&v["depth_barely_determined"]);
     // exactly the points whose depth's standard error exceeds a tenth of the body's size
     let points = v["points"].as_object().unwrap();
     let size = (points
@@ -491,6 +486,15 @@ fn reconstruct_snapshot_of_a_small_input() {
             String::from_utf8_lossy(&out.stdout)
         )
     });
+}
+
+/// A JSON array of strings (a test failure if it is anything else).
+fn strings(v: &serde_json::Value) -> Vec<&str> {
+    v.as_array()
+        .unwrap()
+        .iter()
+        .map(|n| n.as_str().unwrap())
+        .collect()
 }
 
 /// The most of `n` items a rule that sets each apart with probability `level` may set
@@ -638,12 +642,7 @@ fn robust_mode_takes_its_threshold_from_the_data_and_drops_single_observations()
     assert_eq!(v["rejected"], serde_json::json!(["P40"]));
     // complete tracks: the first judgement is a sample's
     assert_eq!(v["robust_start"], "sample");
-    let kept: Vec<&str> = v["inliers"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .map(|n| n.as_str().unwrap())
-        .collect();
+    let kept = strings(&v["inliers"]);
     assert_eq!(kept, names[..39]);
     assert_eq!(v["points"].as_object().unwrap().len(), 39);
     // each kept point's inlier frames: its 8 frames less the dropped

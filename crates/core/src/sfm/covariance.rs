@@ -51,10 +51,9 @@ pub(super) struct Errors {
 }
 
 /// Why no standard errors could be given.
-pub(super) const NO_FREEDOM: &str =
-    "the data leave no residual degree of freedom to estimate the noise from";
+const NO_FREEDOM: &str = "the data leave no residual degree of freedom to estimate the noise from";
 /// Why no standard errors could be given.
-pub(super) const SINGULAR: &str =
+const SINGULAR: &str =
     "the normal equations are singular at the optimum: some point or frame is not fixed by the data";
 
 /// The rows of camera `f`'s parameters that are free: frame 1 (`f` = 0) keeps only its two
@@ -193,11 +192,9 @@ fn frame_std(
         .enumerate()
         .filter_map(|(r, i)| i.map(|i| (r, i)))
         .collect();
-    let rotation = Vector3::from_fn(|a, _| {
-        free.iter()
-            .find(|(r, _)| *r == a)
-            .map_or(0.0, |(_, i)| (sinv[(*i, *i)].max(0.0) * sigma2).sqrt())
-    });
+    // the first three parameters are the rotation's (none free for frame 1: the gauge)
+    let rotation =
+        Vector3::from_fn(|a, _| index[a].map_or(0.0, |i| (sinv[(i, i)].max(0.0) * sigma2).sqrt()));
     let c: Matrix2x3<f64> = state.rot[f].fixed_rows::<2>(0).into_owned();
     let l = camera_jacobian(&c, &m.at, f == 0);
     let mut cov = c * m.cov * c.transpose();
